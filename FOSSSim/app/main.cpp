@@ -1,0 +1,51 @@
+// FOSSSim command line: loads a scene, then runs it headless, grades a trajectory against it,
+// checks its derivatives, or opens the window. Only this file chooses exit statuses.
+
+#include <iostream>
+
+#include "app/commands.h"
+#include "app/exit_codes.h"
+#include "app/interrupt.h"
+#include "app/options.h"
+#include "io/scene_loader.h"
+
+int main(int argc, char** argv) {
+  using namespace fosssim;
+  Options options;
+  CLI::App app{"FOSSSim", "FOSSSim"};
+  add_options(app, options);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return kExitOk;
+  } catch (const CLI::CallForVersion&) {
+    std::cout << app.version() << "\n";
+    return kExitOk;
+  } catch (const CLI::ParseError& error) {
+    std::cerr << "FOSSSim: error: " << error.what() << "\nRun FOSSSim --help for the options.\n";
+    return kExitBadInput;
+  }
+
+  auto loaded = load_scene_file(options.scene);
+  if (!loaded) {
+    std::cerr << loaded.error().what() << "\n";
+    return kExitBadInput;
+  }
+  Scene& scene = *loaded;
+  for (const std::string& warning : scene.warnings) std::cerr << warning << "\n";
+  if (auto problem = apply_overrides(options, scene)) {
+    std::cerr << "FOSSSim: error: " << *problem << "\n";
+    return kExitBadInput;
+  }
+  if (!scene.description.empty() && !options.quiet) std::cout << scene.description << std::endl;
+
+  if (options.check_derivatives) return run_derivative_check(scene, options);
+  if (options.display == 1) {
+    std::cerr << "FOSSSim: error: this build has no interactive window; run with -d 0\n";
+    return kExitBadInput;
+  }
+  install_interrupt_handler();
+  if (!options.input.empty()) return run_grading(scene, options);
+  return run_headless(scene, options);
+}

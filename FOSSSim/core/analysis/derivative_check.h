@@ -1,0 +1,59 @@
+#pragma once
+// Finite-difference checks of a force's gradient and Hessians, usable on any scene.
+
+#include <string>
+#include <vector>
+
+#include "core/force.h"
+#include "core/scene_model.h"
+#include "core/types.h"
+
+namespace fosssim {
+
+enum class Derivative {
+  kGradient,  ///< gradE·u against the central difference of U along u (at v = 0)
+  kHessianX,  ///< hessX·u against the central difference of gradE along u in q
+  kHessianV,  ///< hessV·u against the central difference of gradE along u in v
+};
+
+const char* derivative_name(Derivative which);
+
+struct DerivativeCheckOptions {
+  double step = 1e-6;       ///< finite-difference step ε, in the units of q (or v)
+  int random_directions = 8;  ///< random unit directions u checked
+  int all_directions_up_to = 60;  ///< also check every unit vector e_k when #DOFs ≤ this
+  unsigned seed = 1;
+  double relative_tolerance = 1e-6;  ///< pass when error ≤ rtol·scale + the round-off floor
+};
+
+/// The worst direction found for one derivative of one force.
+struct DerivativeCheck {
+  std::string force;
+  Derivative which = Derivative::kGradient;
+  double absolute_error = 0.0;  ///< ‖analytic·u - finite difference‖
+  double scale = 0.0;           ///< max(‖analytic·u‖, ‖finite difference‖) in that direction
+  double noise_floor = 0.0;     ///< round-off level of the finite difference
+  /// error / (rtol·scale + noise_floor) in the worst direction; the check passes when ≤ 1.
+  double allowance_used = 0.0;
+  bool passed() const { return allowance_used <= 1.0; }
+  /// Error relative to the scale, 0 when both sides vanish.
+  double relative_error() const { return scale > 0.0 ? absolute_error / scale : 0.0; }
+};
+
+/// Checks gradient, hessX and hessV of one force at (q, v) by Richardson-extrapolated central
+/// differences (error O(ε⁴)) along random and unit directions. The gradient is checked against
+/// the energy at v = 0, and only for forces with a potential (Force::has_potential).
+std::vector<DerivativeCheck> check_force_derivatives(const Force& force, const Vector& q,
+                                                     const Vector& v, const Vector& mass,
+                                                     const DerivativeCheckOptions& options);
+
+/// Runs check_force_derivatives for every force of the model.
+std::vector<DerivativeCheck> check_model_derivatives(const SceneModel& model, const Vector& q,
+                                                     const Vector& v,
+                                                     const DerivativeCheckOptions& options);
+
+/// A finite-difference step suited to the configuration: 1e-4 times the shortest nonzero
+/// distance between two particles (sampled when there are many), at most 1e-4.
+double suggest_finite_difference_step(const Vector& q, int dim);
+
+}  // namespace fosssim

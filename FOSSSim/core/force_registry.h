@@ -1,0 +1,23 @@
+#pragma once
+// Maps each force's scene-file tag to its factory, in the compat summation order.
+
+#include <span>
+#include <string_view>
+
+#include "core/force_parameters.h"
+
+namespace fosssim {
+
+struct ForceKind {
+  std::string_view tag;  ///< element name in scene files
+  ForceFactory create;
+};
+
+/// All force kinds. Forces are summed grouped by kind in this order, each group in document
+/// order (SPEC section 1, compat): adding a force is one line here.
+std::span<const ForceKind> force_kinds();
+
+/// The kind with this tag, or nullptr.
+const ForceKind* find_force_kind(std::string_view tag);
+
+}  // namespace fosssim

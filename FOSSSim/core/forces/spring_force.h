@@ -1,0 +1,40 @@
+#pragma once
+
+#include <memory>
+
+#include "core/force.h"
+#include "core/force_parameters.h"
+
+namespace fosssim {
+
+/// A Hookean spring with internal damping between particles i and j (SPEC 3.2).
+///
+/// With d = x_j - x_i, l = |d|, n = d/l, P = n nᵀ and dv = v_j - v_i:
+///   U = ½ k (l - l0)²,  F_i = k (l - l0) n + b (n·dv) n,  F_j = -F_i.
+///   hessX = k [P + ((l - l0)/l)(I - P)] + (b/l)[n dvᵀ + (n·dv) I](I - P)   (pair pattern)
+///   hessV = b P                                                           (pair pattern)
+/// The damping term's position Jacobian is not symmetric. A zero-rest-length spring
+/// (l0 = 0, b = 0) stays defined at l = 0, where F_i = k d and hessX = k I.
+template <int D>
+class SpringForce final : public Force {
+ public:
+  /// i, j: particle indices; k: stiffness (N/m); l0: rest length (m); b: damping (N·s/m).
+  SpringForce(int i, int j, double k, double l0, double b) : i_(i), j_(j), k_(k), l0_(l0), b_(b) {}
+
+  void add_energy(const ForceInput& in, double& energy) const override;
+  void add_gradient(const ForceInput& in, Vector& gradient) const override;
+  void add_hessian_x(const ForceInput& in, HessianBuilder& hessian) const override;
+  void add_hessian_v(const ForceInput& in, HessianBuilder& hessian) const override;
+  bool is_conservative() const override { return b_ == 0.0; }
+  bool has_symmetric_jacobians() const override { return b_ == 0.0; }
+  std::string label() const override;
+
+ private:
+  int i_, j_;
+  double k_, l0_, b_;
+};
+
+/// Reads `springforce edge k l0 [b]`; rejects a spring whose edge has coincident ends.
+std::unique_ptr<Force> make_spring_force(ForceParameters& params, const ForceContext& context);
+
+}  // namespace fosssim

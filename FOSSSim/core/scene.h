@@ -1,0 +1,60 @@
+#pragma once
+// A loaded scene: its model, its initial state and how it looks.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/scene_model.h"
+#include "core/state.h"
+
+namespace fosssim {
+
+/// An RGB colour with components in [0, 1].
+struct Color {
+  double r = 0.0, g = 0.0, b = 0.0;
+  bool operator==(const Color&) const = default;
+};
+
+/// A trail behind particle `particle` of its last ceil(duration/dt) positions.
+struct ParticlePath {
+  int particle = 0;
+  double duration = 0.0;
+  Color color;
+};
+
+/// A fixed camera: centre and the size of the visible square (world units).
+struct Viewport {
+  double cx = 0.0, cy = 0.0, size = 1.0;
+};
+
+/// How a scene is drawn; no physics depends on it.
+struct Appearance {
+  static constexpr Color kDefaultParticleColor{0.651, 0.294, 0.0};
+  static constexpr Color kDefaultEdgeColor{0.0, 0.388, 0.388};
+  static constexpr double kDefaultParticleRadius = 0.1;
+  static constexpr double kDefaultEdgeRadius = 0.015;
+
+  std::vector<double> particle_radius;
+  std::vector<Color> particle_color;
+  std::vector<double> edge_radius;
+  std::vector<Color> edge_color;
+  Color background{1.0, 1.0, 1.0};
+  std::vector<ParticlePath> paths;
+  std::optional<Viewport> viewport;
+};
+
+/// Everything a scene file declares.
+struct Scene {
+  std::string source;  ///< the file it was read from, for messages
+  SceneModel model;
+  State initial;
+  Appearance appearance;
+  std::string description;
+  std::string tag;                          ///< scenetag, selects scripted behaviour
+  std::vector<std::string> particle_tags;   ///< per particle, empty when untagged
+  double max_sim_frequency = 100.0;         ///< window throttle, steps per wall second
+  std::vector<std::string> warnings;        ///< things that were accepted but look wrong
+};
+
+}  // namespace fosssim

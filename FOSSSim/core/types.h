@@ -1,0 +1,27 @@
+#pragma once
+// Numeric types shared by the whole simulator.
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace fosssim {
+
+/// A state-sized vector: coordinates interleaved per particle, [x0, y0, (z0,) x1, y1, ...].
+using Vector = Eigen::VectorXd;
+/// Column-major sparse matrix over degrees of freedom.
+using SparseMatrix = Eigen::SparseMatrix<double>;
+using Triplet = Eigen::Triplet<double>;
+
+/// Fixed-size per-particle vector and matrix in D = 2 or 3 dimensions.
+template <int D>
+using Vec = Eigen::Matrix<double, D, 1>;
+template <int D>
+using Mat = Eigen::Matrix<double, D, D>;
+
+/// Reads particle p's D coordinates out of a state-sized vector.
+template <int D, typename Derived>
+Vec<D> particle_vec(const Eigen::MatrixBase<Derived>& x, int p) {
+  return x.template segment<D>(D * p);
+}
+
+}  // namespace fosssim

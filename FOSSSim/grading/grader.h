@@ -1,0 +1,88 @@
+#pragma once
+// Grading by output comparison (SPEC section 5, compat): replays a trajectory file step by step
+// against the scene's own integrator.
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "core/expected.h"
+#include "core/scene.h"
+#include "io/trajectory_file.h"
+
+namespace fosssim {
+
+/// The course's pass criteria: every sum of residuals below `accumulated_limit` and every single
+/// residual below `maximum_limit`, strictly.
+struct GradingCriteria {
+  double accumulated_limit = 1e-6;
+  double maximum_limit = 1e-10;
+};
+
+/// Residuals of one step k: the reference step from the file's frame k-1 against its frame k.
+struct StepResidual {
+  std::int64_t step = 0;
+  double sum_position = 0.0;  ///< Σ_p ‖x_ref - x_file‖
+  double sum_velocity = 0.0;
+  double max_position = 0.0;  ///< max_p ‖x_ref - x_file‖
+  double max_velocity = 0.0;
+  int max_position_particle = -1;
+  int max_velocity_particle = -1;
+};
+
+/// Where the file first disagrees with the reference by more than the maximum limit.
+struct FirstDivergence {
+  std::int64_t step = 0;
+  int particle = 0;
+  double position_residual = 0.0;
+  double velocity_residual = 0.0;
+  Vector reference_position, reference_velocity;  ///< the reference step's result (dim values)
+  Vector file_position, file_velocity;            ///< the file's frame `step`
+  Vector previous_position, previous_velocity;    ///< the file's frame `step - 1`, the start
+};
+
+struct GradeReport {
+  GradingCriteria criteria;
+  std::int64_t steps = 0;
+  double accumulated_position = 0.0;
+  double accumulated_velocity = 0.0;
+  double max_position = 0.0;
+  double max_velocity = 0.0;
+  std::vector<StepResidual> per_step;           ///< one entry per step, in order
+  std::optional<FirstDivergence> first_divergence;
+  /// Set when the reference integrator could not take a step from the file's state; the
+  /// comparison stops there and the grade is a failure.
+  std::optional<std::string> reference_failure;
+
+  bool accumulated_position_passed() const;
+  bool accumulated_velocity_passed() const;
+  bool max_position_passed() const;
+  bool max_velocity_passed() const;
+  bool passed() const;
+};
+
+/// Called after each graded step with (step, total steps).
+using GradingProgress = std::function<void(std::int64_t, std::int64_t)>;
+
+/// Grades `file` against `scene`: for every step k overwrites the state with frame k-1, takes one
+/// reference step and compares with frame k, for every particle (fixed ones included). Fails
+/// (returns the message) when the file does not hold exactly num_steps() + 1 frames.
+Expected<GradeReport, std::string> grade_trajectory(const Scene& scene, TrajectoryReader& file,
+                                                    const GradingCriteria& criteria = {},
+                                                    const GradingProgress& progress = {});
+
+/// Prints the course's report lines: four "<criterion>: <value>   Passed." lines, then
+/// "Overall success: Passed." or "Failed.".
+void print_grade_report(std::ostream& out, const GradeReport& report);
+
+/// Writes residual.txt: one "<1|0>   <value>" line per criterion, in the report's order. The file
+/// is written under a temporary name and renamed, so it is never left half written.
+void write_residual_file(const std::string& path, const GradeReport& report);
+
+/// A human explanation of where and why grading failed, for the terminal; empty when passed.
+std::string describe_failure(const GradeReport& report, int dim);
+
+}  // namespace fosssim

@@ -1,0 +1,171 @@
+#include "io/element_reader.h"
+
+#include <tinyxml2.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "core/text.h"
+#include "io/scene_error.h"
+
+namespace fosssim {
+
+namespace {
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+/// The text without surrounding whitespace and without one leading '+'.
+std::string_view trimmed(const char* text) {
+  std::string_view s(text);
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
+  if (s.size() > 1 && s.front() == '+' && s[1] != '-') s.remove_prefix(1);
+  return s;
+}
+
+std::string quoted(const char* text) { return std::string("\"") + text + "\""; }
+
+}  // namespace
+
+bool parse_number(const char* text, double& value) {
+  const std::string_view s = trimmed(text);
+  if (s.empty()) return false;
+  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
+  return error == std::errc() && end == s.data() + s.size() && std::isfinite(value);
+}
+
+bool parse_integer(const char* text, long long& value) {
+  const std::string_view s = trimmed(text);
+  if (s.empty()) return false;
+  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
+  return error == std::errc() && end == s.data() + s.size();
+}
+
+ElementReader::ElementReader(const tinyxml2::XMLElement& element, const std::string& file,
+                             int index, int num_particles, int num_edges)
+    : element_(element),
+      file_(file),
+      index_(index),
+      num_particles_(num_particles),
+      num_edges_(num_edges) {}
+
+int ElementReader::line() const { return element_.GetLineNum(); }
+
+std::string ElementReader::location() const {
+  std::string where = std::string("<") + element_.Name() + ">";
+  if (index_ >= 0) where += " " + std::to_string(index_);
+  return where;
+}
+
+void ElementReader::fail(const std::string& problem) {
+  throw SceneError(file_, line(), location(), problem);
+}
+
+void ElementReader::fail(const char* name, const std::string& problem) {
+  fail(std::string("attribute \"") + name + "\" " + problem);
+}
+
+bool ElementReader::has(const char* name) const { return element_.Attribute(name) != nullptr; }
+
+const char* ElementReader::raw(const char* name) {
+  asked_.insert(name);
+  const char* value = element_.Attribute(name);
+  if (value == nullptr) fail(name, "is missing");
+  return value;
+}
+
+double ElementReader::number(const char* name) {
+  const char* text = raw(name);
+  double value = 0.0;
+  if (!parse_number(text, value)) fail(name, "must be a finite number, found " + quoted(text));
+  return value;
+}
+
+double ElementReader::number_or(const char* name, double fallback) {
+  asked_.insert(name);
+  return has(name) ? number(name) : fallback;
+}
+
+double ElementReader::positive(const char* name) {
+  const double value = number(name);
+  if (value <= 0.0) fail(name, "must be positive, found " + quoted(element_.Attribute(name)));
+  return value;
+}
+
+int ElementReader::integer(const char* name) {
+  const char* text = raw(name);
+  long long value = 0;
+  if (!parse_integer(text, value) || value < std::numeric_limits<int>::min() ||
+      value > std::numeric_limits<int>::max()) {
+    fail(name, "must be an integer, found " + quoted(text));
+  }
+  return static_cast<int>(value);
+}
+
+bool ElementReader::flag(const char* name) {
+  const char* text = raw(name);
+  long long value = -1;
+  if (!parse_integer(text, value) || (value != 0 && value != 1)) {
+    fail(name, "must be 0 or 1, found " + quoted(text));
+  }
+  return value == 1;
+}
+
+int ElementReader::particle_index(const char* name) {
+  const int value = integer(name);
+  if (value < 0 || value >= num_particles_) {
+    fail(name, "refers to particle " + std::to_string(value) + ", but the scene has " +
+                   std::to_string(num_particles_) + " particle" +
+                   (num_particles_ == 1 ? "" : "s") + " (valid indices are 0 to " +
+                   std::to_string(num_particles_ - 1) + ")");
+  }
+  return value;
+}
+
+int ElementReader::edge_index(const char* name) {
+  const int value = integer(name);
+  if (value < 0 || value >= num_edges_) {
+    fail(name, "refers to edge " + std::to_string(value) + ", but the scene has " +
+                   std::to_string(num_edges_) + " edge" + (num_edges_ == 1 ? "" : "s") +
+                   (num_edges_ > 0 ? " (valid indices are 0 to " +
+                                         std::to_string(num_edges_ - 1) + ")"
+                                   : ""));
+  }
+  return value;
+}
+
+std::string ElementReader::text(const char* name) { return raw(name); }
+
+std::string ElementReader::text_or_empty(const char* name) {
+  asked_.insert(name);
+  const char* value = element_.Attribute(name);
+  return value ? value : "";
+}
+
+Color ElementReader::color() {
+  Color c;
+  double* parts[] = {&c.r, &c.g, &c.b};
+  const char* names[] = {"r", "g", "b"};
+  for (int k = 0; k < 3; ++k) {
+    *parts[k] = number(names[k]);
+    if (*parts[k] < 0.0 || *parts[k] > 1.0) {
+      fail(names[k], "must be between 0 and 1, found " + quoted(element_.Attribute(names[k])));
+    }
+  }
+  return c;
+}
+
+std::vector<std::string> ElementReader::unknown_attribute_warnings() const {
+  std::vector<std::string> warnings;
+  for (const auto* a = element_.FirstAttribute(); a != nullptr; a = a->Next()) {
+    if (asked_.count(a->Name()) == 0) {
+      warnings.push_back(file_ + ":" + std::to_string(line()) + ": warning: " + location() +
+                         ": unknown attribute \"" + a->Name() + "\" ignored");
+    }
+  }
+  return warnings;
+}
+
+}  // namespace fosssim

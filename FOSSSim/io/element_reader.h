@@ -1,0 +1,70 @@
+#pragma once
+// Typed, validated access to the attributes of one XML element.
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/force_parameters.h"
+#include "core/scene.h"
+
+namespace tinyxml2 {
+class XMLElement;
+}
+
+namespace fosssim {
+
+/// Reads attributes of one element and throws SceneError naming the file, line, element and
+/// attribute on any problem. It remembers which attributes were asked for, so that the rest can
+/// be reported as unknown. It is also the ForceParameters a force factory reads from.
+class ElementReader final : public ForceParameters {
+ public:
+  /// index: the element's 0-based position among elements of its kind, or -1 for singletons.
+  ElementReader(const tinyxml2::XMLElement& element, const std::string& file, int index,
+                int num_particles, int num_edges);
+
+  double number(const char* name) override;
+  double number_or(const char* name, double fallback) override;
+  int particle_index(const char* name) override;
+  int edge_index(const char* name) override;
+  [[noreturn]] void fail(const std::string& problem) override;
+  [[noreturn]] void fail(const char* name, const std::string& problem) override;
+
+  /// A required number > 0.
+  double positive(const char* name);
+  /// A required integer.
+  int integer(const char* name);
+  /// A required 0 or 1.
+  bool flag(const char* name);
+  /// A required string.
+  std::string text(const char* name);
+  /// An optional string, empty when absent.
+  std::string text_or_empty(const char* name);
+  /// Required "r", "g", "b" components in [0, 1].
+  Color color();
+  /// True when the element has this attribute.
+  bool has(const char* name) const;
+
+  /// Warnings for attributes that no accessor asked for.
+  std::vector<std::string> unknown_attribute_warnings() const;
+  int line() const;
+
+ private:
+  const char* raw(const char* name);  // required, records the name
+  std::string location() const;
+
+  const tinyxml2::XMLElement& element_;
+  const std::string& file_;
+  int index_;
+  int num_particles_;
+  int num_edges_;
+  std::set<std::string> asked_;
+};
+
+/// Parses a decimal number with optional surrounding whitespace; false unless the whole text is
+/// one finite number. Locale-independent.
+bool parse_number(const char* text, double& value);
+/// Parses a whole decimal integer with optional surrounding whitespace.
+bool parse_integer(const char* text, long long& value);
+
+}  // namespace fosssim

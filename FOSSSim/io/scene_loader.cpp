@@ -1,0 +1,304 @@
+#include "io/scene_loader.h"
+
+#include <tinyxml2.h>
+
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "core/force_registry.h"
+#include "io/element_reader.h"
+
+namespace fosssim {
+
+namespace {
+
+using tinyxml2::XMLElement;
+
+constexpr std::array<const char*, 3> kPositionNames = {"px", "py", "pz"};
+constexpr std::array<const char*, 3> kVelocityNames = {"vx", "vy", "vz"};
+
+/// Elements that are not forces, in the order they are read.
+constexpr std::array<const char*, 12> kOtherElements = {
+    "duration",  "integrator", "maxsimfreq",  "description",   "scenetag",     "particle",
+    "edge",      "particlecolor", "edgecolor", "backgroundcolor", "particlepath", "viewport"};
+
+bool is_known_element(std::string_view name) {
+  for (const char* known : kOtherElements) {
+    if (name == known) return true;
+  }
+  return find_force_kind(name) != nullptr;
+}
+
+std::string describe_xml_error(const tinyxml2::XMLDocument& doc) {
+  switch (doc.ErrorID()) {
+    case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT:
+      return "not well-formed XML: an element is closed with the wrong name";
+    case tinyxml2::XML_ERROR_PARSING_ELEMENT:
+      return "not well-formed XML: an element is not closed or is malformed";
+    case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE:
+      return "not well-formed XML: a malformed attribute (values need quotes)";
+    case tinyxml2::XML_ERROR_EMPTY_DOCUMENT:
+      return "the file holds no XML element";
+    default:
+      return std::string("not well-formed XML (") + doc.ErrorName() + ")";
+  }
+}
+
+/// Turns a parsed document into a Scene, throwing SceneError on the first problem.
+class SceneParser {
+ public:
+  explicit SceneParser(const std::string& file) : file_(file) {}
+
+  Scene parse(const XMLElement& root) {
+    scene_.source = file_;
+    read_root(root);
+    group_children(root);
+    read_settings(root);
+    read_particles();
+    read_edges();
+    read_forces();
+    read_appearance();
+    return std::move(scene_);
+  }
+
+ private:
+  ElementReader reader(const XMLElement& element, int index) {
+    return ElementReader(element, file_, index, scene_.model.num_particles(),
+                         static_cast<int>(scene_.model.edges.size()));
+  }
+
+  void keep_warnings(const ElementReader& r) {
+    for (auto& warning : r.unknown_attribute_warnings()) scene_.warnings.push_back(warning);
+  }
+
+  void read_root(const XMLElement& root) {
+    if (std::string_view(root.Name()) != "scene") {
+      throw SceneError(file_, root.GetLineNum(), std::string("<") + root.Name() + ">",
+                       "the root element must be <scene>");
+    }
+    ElementReader r = reader(root, -1);
+    if (r.has("dim")) {
+      const int dim = r.integer("dim");
+      if (dim != 2 && dim != 3) r.fail("dim", "must be 2 or 3, found " + std::to_string(dim));
+      scene_.model.dim = dim;
+    }
+    keep_warnings(r);
+  }
+
+  void group_children(const XMLElement& root) {
+    for (const XMLElement* e = root.FirstChildElement(); e; e = e->NextSiblingElement()) {
+      if (!is_known_element(e->Name())) {
+        throw SceneError(file_, e->GetLineNum(), std::string("<") + e->Name() + ">",
+                         "unknown element");
+      }
+      elements_[e->Name()].push_back(e);
+    }
+  }
+
+  const std::vector<const XMLElement*>& all(const std::string& name) { return elements_[name]; }
+
+  /// The element that may appear at most once, or nullptr; required ones must appear.
+  const XMLElement* single(const XMLElement& root, const char* name, bool required) {
+    const auto& found = all(name);
+    if (found.empty()) {
+      if (!required) return nullptr;
+      throw SceneError(file_, root.GetLineNum(), "<scene>",
+                       std::string("the required element <") + name + "> is missing");
+    }
+    if (found.size() > 1) {
+      throw SceneError(file_, found[1]->GetLineNum(), std::string("<") + name + ">",
+                       "may appear only once (first at line " +
+                           std::to_string(found[0]->GetLineNum()) + ")");
+    }
+    return found[0];
+  }
+
+  void read_settings(const XMLElement& root) {
+    SceneModel& model = scene_.model;
+    {
+      ElementReader r = reader(*single(root, "integrator", true), -1);
+      const std::string type = r.text("type");
+      const auto kind = parse_integrator_name(type);
+      if (!kind) {
+        r.fail("type", "names an unknown integrator \"" + type +
+                           "\" (expected explicit-euler, symplectic-euler, "
+                           "linearized-implicit-euler or implicit-euler, or an alias)");
+      }
+      model.integrator.kind = *kind;
+      model.integrator.dt = r.positive("dt");
+      keep_warnings(r);
+    }
+    {
+      ElementReader r = reader(*single(root, "duration", true), -1);
+      model.duration = r.non_negative("time");
+      keep_warnings(r);
+    }
+    if (const XMLElement* e = single(root, "maxsimfreq", false)) {
+      ElementReader r = reader(*e, -1);
+      scene_.max_sim_frequency = r.positive("max");
+      keep_warnings(r);
+    }
+    if (const XMLElement* e = single(root, "description", false)) {
+      ElementReader r = reader(*e, -1);
+      scene_.description = r.text("text");
+      keep_warnings(r);
+    }
+    if (const XMLElement* e = single(root, "scenetag", false)) {
+      ElementReader r = reader(*e, -1);
+      scene_.tag = r.text("tag");
+      keep_warnings(r);
+    }
+    if (const XMLElement* e = single(root, "backgroundcolor", false)) {
+      ElementReader r = reader(*e, -1);
+      scene_.appearance.background = r.color();
+      keep_warnings(r);
+    }
+    if (const XMLElement* e = single(root, "viewport", false)) {
+      ElementReader r = reader(*e, -1);
+      scene_.appearance.viewport = Viewport{r.number("cx"), r.number("cy"), r.positive("size")};
+      keep_warnings(r);
+    }
+  }
+
+  void read_particles() {
+    SceneModel& model = scene_.model;
+    const auto& particles = all("particle");
+    const int n = static_cast<int>(particles.size());
+    const int dim = model.dim;
+    model.mass.resize(dim * n);
+    model.fixed.assign(n, false);
+    scene_.initial.q.resize(dim * n);
+    scene_.initial.v.resize(dim * n);
+    scene_.appearance.particle_radius.assign(n, Appearance::kDefaultParticleRadius);
+    scene_.appearance.particle_color.assign(n, Appearance::kDefaultParticleColor);
+    scene_.particle_tags.assign(n, "");
+    for (int p = 0; p < n; ++p) {
+      ElementReader r = reader(*particles[p], p);
+      model.mass.segment(dim * p, dim).setConstant(r.positive("m"));
+      for (int c = 0; c < dim; ++c) {
+        scene_.initial.q[dim * p + c] = r.number(kPositionNames[c]);
+        scene_.initial.v[dim * p + c] = r.number(kVelocityNames[c]);
+      }
+      model.fixed[p] = r.flag("fixed");
+      scene_.appearance.particle_radius[p] =
+          r.non_negative_or("radius", Appearance::kDefaultParticleRadius);
+      scene_.particle_tags[p] = r.text_or_empty("tag");
+      keep_warnings(r);
+    }
+  }
+
+  void read_edges() {
+    const auto& edges = all("edge");
+    for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
+      ElementReader r = reader(*edges[e], e);
+      const int i = r.particle_index("i");
+      const int j = r.particle_index("j");
+      if (i == j) r.fail("j", "must differ from i (both are " + std::to_string(i) + ")");
+      scene_.model.edges.push_back({i, j});
+      scene_.appearance.edge_radius.push_back(
+          r.non_negative_or("radius", Appearance::kDefaultEdgeRadius));
+      scene_.appearance.edge_color.push_back(Appearance::kDefaultEdgeColor);
+      keep_warnings(r);
+    }
+  }
+
+  void read_forces() {
+    const ForceContext context{scene_.model, scene_.initial.q};
+    for (const ForceKind& kind : force_kinds()) {
+      const auto& declarations = all(std::string(kind.tag));
+      for (int k = 0; k < static_cast<int>(declarations.size()); ++k) {
+        ElementReader r = reader(*declarations[k], k);
+        scene_.model.forces.push_back(kind.create(r, context));
+        keep_warnings(r);
+      }
+    }
+  }
+
+  void read_appearance() {
+    Appearance& look = scene_.appearance;
+    const auto& particle_colors = all("particlecolor");
+    for (int k = 0; k < static_cast<int>(particle_colors.size()); ++k) {
+      ElementReader r = reader(*particle_colors[k], k);
+      const int i = r.particle_index("i");
+      look.particle_color[i] = r.color();
+      keep_warnings(r);
+    }
+    const auto& edge_colors = all("edgecolor");
+    for (int k = 0; k < static_cast<int>(edge_colors.size()); ++k) {
+      ElementReader r = reader(*edge_colors[k], k);
+      const int i = r.edge_index("i");
+      look.edge_color[i] = r.color();
+      keep_warnings(r);
+    }
+    const auto& paths = all("particlepath");
+    for (int k = 0; k < static_cast<int>(paths.size()); ++k) {
+      ElementReader r = reader(*paths[k], k);
+      ParticlePath path;
+      path.particle = r.particle_index("i");
+      path.duration = r.non_negative("duration");
+      path.color = r.color();
+      look.paths.push_back(path);
+      keep_warnings(r);
+    }
+  }
+
+  const std::string& file_;
+  Scene scene_;
+  std::map<std::string, std::vector<const XMLElement*>> elements_;
+};
+
+}  // namespace
+
+std::optional<IntegratorKind> parse_integrator_name(std::string_view name) {
+  static const std::map<std::string_view, IntegratorKind> kNames = {
+      {"explicit-euler", IntegratorKind::kExplicitEuler},
+      {"symplectic-euler", IntegratorKind::kSymplecticEuler},
+      {"forward-backward-euler", IntegratorKind::kSymplecticEuler},
+      {"semi-implicit-euler", IntegratorKind::kSymplecticEuler},
+      {"linearized-implicit-euler", IntegratorKind::kLinearizedImplicitEuler},
+      {"linearized-implicit", IntegratorKind::kLinearizedImplicitEuler},
+      {"implicit-euler", IntegratorKind::kImplicitEuler},
+      {"implicit", IntegratorKind::kImplicitEuler},
+  };
+  const auto found = kNames.find(name);
+  if (found == kNames.end()) return std::nullopt;
+  return found->second;
+}
+
+Expected<Scene, SceneError> load_scene_text(std::string_view text, const std::string& name) {
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+    return SceneError(name, 0, "", "the file is empty (expected a <scene> element)");
+  }
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
+    return SceneError(name, doc.ErrorLineNum(), "", describe_xml_error(doc));
+  }
+  const XMLElement* root = doc.RootElement();
+  if (root == nullptr) return SceneError(name, 0, "", "the file holds no XML element");
+  try {
+    return SceneParser(name).parse(*root);
+  } catch (const SceneError& error) {
+    return error;
+  }
+}
+
+Expected<Scene, SceneError> load_scene_file(const std::string& path) {
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    return SceneError(path, 0, "", "is a directory, not a scene file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return SceneError(path, 0, "", std::string("cannot open the file: ") + std::strerror(errno));
+  std::ostringstream content;
+  content << in.rdbuf();
+  if (in.bad()) return SceneError(path, 0, "", "cannot read the file");
+  return load_scene_text(content.str(), path);
+}
+
+}  // namespace fosssim

@@ -1,0 +1,26 @@
+#pragma once
+// Reads scenes in the course's XML format (SPEC section 1).
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "core/expected.h"
+#include "core/scene.h"
+#include "io/scene_error.h"
+
+namespace fosssim {
+
+/// Loads a scene file. Every malformed input (missing file, empty file, not XML, unknown
+/// element, missing or non-numeric attribute, index out of range, non-positive mass, ...) is
+/// returned as a SceneError naming file, line, element and problem; nothing is defaulted
+/// silently. Attributes nobody reads become warnings in Scene::warnings.
+Expected<Scene, SceneError> load_scene_file(const std::string& path);
+
+/// Loads a scene from XML text; `name` stands for the file in messages.
+Expected<Scene, SceneError> load_scene_text(std::string_view text, const std::string& name);
+
+/// The integrator for a type string, accepting every alias of SPEC section 1.
+std::optional<IntegratorKind> parse_integrator_name(std::string_view name);
+
+}  // namespace fosssim

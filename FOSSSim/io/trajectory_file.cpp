@@ -1,0 +1,158 @@
+#include "io/trajectory_file.h"
+
+#include <unistd.h>
+
+#include <bit>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+namespace fosssim {
+
+namespace {
+
+static_assert(std::endian::native == std::endian::little || std::endian::native == std::endian::big,
+              "mixed-endian machines are not supported");
+
+/// Reverses the bytes of each double when the machine is big-endian (the file is little-endian).
+void to_little_endian(double* data, std::size_t count) {
+  if constexpr (std::endian::native == std::endian::big) {
+    for (std::size_t k = 0; k < count; ++k) {
+      auto* bytes = reinterpret_cast<unsigned char*>(data + k);
+      for (int b = 0; b < 4; ++b) std::swap(bytes[b], bytes[7 - b]);
+    }
+  } else {
+    (void)data;
+    (void)count;
+  }
+}
+
+std::string system_reason() { return std::strerror(errno); }
+
+}  // namespace
+
+// ---- TrajectoryWriter -------------------------------------------------------------------------
+
+TrajectoryWriter::TrajectoryWriter(std::string path, std::FILE* file)
+    : path_(std::move(path)), file_(file) {}
+
+TrajectoryWriter::TrajectoryWriter(TrajectoryWriter&& other) noexcept
+    : path_(std::move(other.path_)), file_(other.file_), finished_(other.finished_) {
+  other.file_ = nullptr;
+  other.finished_ = true;
+}
+
+TrajectoryWriter& TrajectoryWriter::operator=(TrajectoryWriter&& other) noexcept {
+  if (this != &other) {
+    if (!finished_) abandon();
+    path_ = std::move(other.path_);
+    file_ = other.file_;
+    finished_ = other.finished_;
+    other.file_ = nullptr;
+    other.finished_ = true;
+  }
+  return *this;
+}
+
+TrajectoryWriter::~TrajectoryWriter() {
+  if (!finished_) abandon();
+}
+
+Expected<TrajectoryWriter, std::string> TrajectoryWriter::open(const std::string& path) {
+  const std::string partial = path + ".partial";
+  std::FILE* file = std::fopen(partial.c_str(), "wb");
+  if (file == nullptr) return "cannot create " + partial + ": " + system_reason();
+  std::setvbuf(file, nullptr, _IOFBF, 1 << 20);
+  return TrajectoryWriter(path, file);
+}
+
+void TrajectoryWriter::write_doubles(const double* data, std::size_t count) {
+  std::vector<double> swapped;
+  if constexpr (std::endian::native == std::endian::big) {
+    swapped.assign(data, data + count);
+    to_little_endian(swapped.data(), count);
+    data = swapped.data();
+  }
+  if (std::fwrite(data, sizeof(double), count, file_) != count) {
+    throw std::runtime_error("cannot write " + path_ + ".partial: " + system_reason());
+  }
+}
+
+void TrajectoryWriter::write_frame(const State& state) {
+  write_doubles(state.q.data(), static_cast<std::size_t>(state.q.size()));
+  write_doubles(state.v.data(), static_cast<std::size_t>(state.v.size()));
+}
+
+void TrajectoryWriter::close_file() {
+  if (file_ != nullptr) {
+    std::fclose(file_);
+    file_ = nullptr;
+  }
+}
+
+void TrajectoryWriter::commit() {
+  const std::string partial = path_ + ".partial";
+  if (std::fflush(file_) != 0 || ::fsync(fileno(file_)) != 0) {
+    throw std::runtime_error("cannot write " + partial + ": " + system_reason());
+  }
+  if (std::fclose(file_) != 0) {
+    file_ = nullptr;
+    throw std::runtime_error("cannot write " + partial + ": " + system_reason());
+  }
+  file_ = nullptr;
+  std::error_code error;
+  std::filesystem::rename(partial, path_, error);
+  if (error) throw std::runtime_error("cannot rename " + partial + " to " + path_ + ": " + error.message());
+  finished_ = true;
+}
+
+std::string TrajectoryWriter::abandon() {
+  close_file();
+  finished_ = true;
+  const std::string incomplete = path_ + ".incomplete";
+  std::error_code error;
+  std::filesystem::rename(path_ + ".partial", incomplete, error);
+  return incomplete;
+}
+
+// ---- TrajectoryReader -------------------------------------------------------------------------
+
+TrajectoryReader::TrajectoryReader(std::string path, std::FILE* file, int dofs,
+                                   std::int64_t frames)
+    : path_(std::move(path)), file_(file), dofs_(dofs), num_frames_(frames) {}
+
+Expected<TrajectoryReader, std::string> TrajectoryReader::open(const std::string& path, int dofs) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) return path + " is a directory, not a trajectory";
+  const auto size = std::filesystem::file_size(path, error);
+  if (error) return "cannot read " + path + ": " + error.message();
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (file == nullptr) return "cannot open " + path + ": " + system_reason();
+  const std::int64_t frame_bytes = trajectory_frame_bytes(dofs);
+  const auto bytes = static_cast<std::int64_t>(size);
+  if (frame_bytes == 0 || bytes % frame_bytes != 0) {
+    std::fclose(file);
+    return path + " has " + std::to_string(bytes) + " bytes, not a whole number of frames of " +
+           std::to_string(frame_bytes) + " bytes (" + std::to_string(dofs) +
+           " positions and velocities); it was cut short or is for another scene";
+  }
+  return TrajectoryReader(path, file, dofs, bytes / frame_bytes);
+}
+
+void TrajectoryReader::read_frame(std::int64_t k, Vector& q, Vector& v) {
+  q.resize(dofs_);
+  v.resize(dofs_);
+  const std::int64_t offset = k * trajectory_frame_bytes(dofs_);
+  const auto count = static_cast<std::size_t>(dofs_);
+  if (std::fseek(file_.get(), static_cast<long>(offset), SEEK_SET) != 0 ||
+      std::fread(q.data(), sizeof(double), count, file_.get()) != count ||
+      std::fread(v.data(), sizeof(double), count, file_.get()) != count) {
+    throw std::runtime_error("cannot read frame " + std::to_string(k) + " of " + path_);
+  }
+  to_little_endian(q.data(), count);
+  to_little_endian(v.data(), count);
+}
+
+}  // namespace fosssim

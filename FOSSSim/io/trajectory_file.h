@@ -1,0 +1,76 @@
+#pragma once
+// The classic trajectory file of SPEC section 5: frames of positions then velocities, as
+// little-endian IEEE doubles, no header. Frame 0 is the initial state.
+
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "core/expected.h"
+#include "core/state.h"
+
+namespace fosssim {
+
+/// Writes a trajectory so that an interrupted or failed run never leaves a file that looks
+/// complete: frames go to "<path>.partial", which becomes <path> only on commit(). A writer
+/// destroyed without commit() keeps its frames as "<path>.incomplete" and leaves any earlier
+/// file at <path> untouched.
+class TrajectoryWriter {
+ public:
+  /// Creates "<path>.partial"; the error names the path and the system's reason.
+  static Expected<TrajectoryWriter, std::string> open(const std::string& path);
+
+  TrajectoryWriter(TrajectoryWriter&&) noexcept;
+  TrajectoryWriter& operator=(TrajectoryWriter&&) noexcept;
+  ~TrajectoryWriter();
+
+  /// Appends state.q then state.v. Throws std::runtime_error on an I/O error (disk full).
+  void write_frame(const State& state);
+  /// Flushes to disk and renames the file to its final name. Throws on an I/O error.
+  void commit();
+  /// Closes the file and renames it to "<path>.incomplete"; returns that name.
+  std::string abandon();
+
+  const std::string& path() const { return path_; }
+
+ private:
+  TrajectoryWriter(std::string path, std::FILE* file);
+  void write_doubles(const double* data, std::size_t count);
+  void close_file();
+
+  std::string path_;
+  std::FILE* file_ = nullptr;
+  bool finished_ = false;
+};
+
+/// Reads frames of a trajectory file with random access.
+class TrajectoryReader {
+ public:
+  /// Opens a trajectory whose frames hold `dofs` positions and `dofs` velocities. Fails with a
+  /// message when the file is missing or its size is not a whole number of frames.
+  static Expected<TrajectoryReader, std::string> open(const std::string& path, int dofs);
+
+  std::int64_t num_frames() const { return num_frames_; }
+  int dofs() const { return dofs_; }
+  /// Reads frame k (0-based) into q and v (resized to dofs). Throws on an I/O error.
+  void read_frame(std::int64_t k, Vector& q, Vector& v);
+
+ private:
+  TrajectoryReader(std::string path, std::FILE* file, int dofs, std::int64_t frames);
+
+  struct FileCloser {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+  std::string path_;
+  std::unique_ptr<std::FILE, FileCloser> file_;
+  int dofs_ = 0;
+  std::int64_t num_frames_ = 0;
+};
+
+/// Bytes in one frame of `dofs` positions and velocities.
+inline std::int64_t trajectory_frame_bytes(int dofs) {
+  return 2 * static_cast<std::int64_t>(dofs) * 8;
+}
+
+}  // namespace fosssim

@@ -1,0 +1,28 @@
+#!/bin/sh
+# Installs the Debian packages FOSSSim needs to build, test, render and benchmark.
+# Idempotent: installs only what is missing, and touches the network only then.
+set -eu
+
+PACKAGES="cmake ninja-build g++ pkg-config
+  libeigen3-dev libtinyxml2-dev libcli11-dev nlohmann-json3-dev libsuitesparse-dev
+  libgtest-dev libbenchmark-dev
+  libcairo2-dev freeglut3-dev ffmpeg xvfb xauth"
+
+missing=""
+for package in $PACKAGES; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    missing="$missing $package"
+  fi
+done
+
+if [ -z "$missing" ]; then
+  echo "install-deps: all packages are installed"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing$missing"
+$SUDO apt-get update -q
+# shellcheck disable=SC2086
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends $missing
