@@ -90,7 +90,7 @@ double ElementReader::number_or(const char* name, double fallback) {
 
 double ElementReader::positive(const char* name) {
   const double value = number(name);
-  if (value <= 0.0) fail(name, "must be positive, found " + quoted(element_.Attribute(name)));
+  if (value <= 0.0) fail(name, "must be positive, found " + to_text(value));
   return value;
 }
 
@@ -151,7 +151,7 @@ Color ElementReader::color() {
   for (int k = 0; k < 3; ++k) {
     *parts[k] = number(names[k]);
     if (*parts[k] < 0.0 || *parts[k] > 1.0) {
-      fail(names[k], "must be between 0 and 1, found " + quoted(element_.Attribute(names[k])));
+      fail(names[k], "must be between 0 and 1, found " + to_text(*parts[k]));
     }
   }
   return c;

@@ -35,19 +35,40 @@ bool is_known_element(std::string_view name) {
   return find_force_kind(name) != nullptr;
 }
 
-std::string describe_xml_error(const tinyxml2::XMLDocument& doc) {
+/// The element tinyxml2 names in its error text ("... XMLElement name=particle"), as "<particle>".
+std::string element_in_xml_error(const tinyxml2::XMLDocument& doc) {
+  const std::string text = doc.ErrorStr() ? doc.ErrorStr() : "";
+  const auto at = text.find("name=");
+  if (at == std::string::npos) return "";
+  return "<" + text.substr(at + 5) + ">";
+}
+
+SceneError xml_syntax_error(const std::string& file, const tinyxml2::XMLDocument& doc) {
+  std::string problem;
   switch (doc.ErrorID()) {
     case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT:
-      return "not well-formed XML: an element is closed with the wrong name";
-    case tinyxml2::XML_ERROR_PARSING_ELEMENT:
-      return "not well-formed XML: an element is not closed or is malformed";
+      problem = "this element is not closed, or is closed with a different name";
+      break;
     case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE:
-      return "not well-formed XML: a malformed attribute (values need quotes)";
-    case tinyxml2::XML_ERROR_EMPTY_DOCUMENT:
-      return "the file holds no XML element";
+      problem = "a malformed or repeated attribute (values need quotes: name=\"value\")";
+      break;
+    case tinyxml2::XML_ERROR_PARSING_ELEMENT:
+      problem = "a malformed element";
+      break;
+    case tinyxml2::XML_ERROR_PARSING_TEXT:
+      problem = "text outside of any element (is this an XML scene file?)";
+      break;
+    case tinyxml2::XML_ERROR_PARSING:
+      problem = "an element opened on this line is never closed (the file ends inside it)";
+      break;
+    case tinyxml2::XML_ERROR_PARSING_COMMENT:
+      problem = "a comment is not closed (missing -->)";
+      break;
     default:
-      return std::string("not well-formed XML (") + doc.ErrorName() + ")";
+      problem = std::string("unreadable (") + doc.ErrorName() + ")";
   }
+  return SceneError(file, doc.ErrorLineNum(), element_in_xml_error(doc),
+                    "not well-formed XML: " + problem);
 }
 
 /// Turns a parsed document into a Scene, throwing SceneError on the first problem.
@@ -277,10 +298,14 @@ Expected<Scene, SceneError> load_scene_text(std::string_view text, const std::st
   }
   tinyxml2::XMLDocument doc;
   if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
-    return SceneError(name, doc.ErrorLineNum(), "", describe_xml_error(doc));
+    return xml_syntax_error(name, doc);
   }
   const XMLElement* root = doc.RootElement();
   if (root == nullptr) return SceneError(name, 0, "", "the file holds no XML element");
+  if (const XMLElement* second = root->NextSiblingElement()) {
+    return SceneError(name, second->GetLineNum(), std::string("<") + second->Name() + ">",
+                      "a second top-level element; a scene file holds one <scene>");
+  }
   try {
     return SceneParser(name).parse(*root);
   } catch (const SceneError& error) {

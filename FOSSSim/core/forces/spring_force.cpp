@@ -78,7 +78,7 @@ std::unique_ptr<Force> make_spring_force(ForceParameters& params, const ForceCon
   const auto xi = context.positions.segment(dim * edge.i, dim);
   const auto xj = context.positions.segment(dim * edge.j, dim);
   if (xi == xj && (l0 != 0.0 || b != 0.0)) {
-    params.fail("edge", "edge " + std::to_string(e) + " has zero length (particles " +
+    params.fail("edge " + std::to_string(e) + " has zero length (particles " +
                             std::to_string(edge.i) + " and " + std::to_string(edge.j) +
                             " coincide), so the spring's direction is undefined");
   }

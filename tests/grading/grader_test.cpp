@@ -1,0 +1,233 @@
+// Grading by output comparison (SPEC section 5): a run passes its own grading, a perturbation
+// of one double at one step fails at exactly that step and particle, and the report's lines and
+// residual file match the course's format.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "core/simulation.h"
+#include "grading/grader.h"
+#include "io/scene_loader.h"
+
+namespace fosssim {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Three particles, one fixed, damped springs, gravity and drag, stepped by implicit Euler: every
+// kind of term the reference integrator has to reproduce.
+constexpr const char* kScene = R"(<scene>
+  <duration time="0.5"/>
+  <integrator type="implicit-euler" dt="0.01"/>
+  <particle m="1" px="0" py="0" vx="0" vy="0" fixed="1"/>
+  <particle m="2" px="1" py="0.2" vx="0" vy="1" fixed="0"/>
+  <particle m="0.5" px="1.5" py="-0.5" vx="-1" vy="0" fixed="0"/>
+  <edge i="0" j="1"/>
+  <edge i="1" j="2"/>
+  <springforce edge="0" k="50" l0="0.9" b="0.5"/>
+  <springforce edge="1" k="20" l0="0.7"/>
+  <simplegravity fx="0" fy="-9.81"/>
+  <dragdamping b="0.05"/>
+</scene>)";
+
+class Grader : public testing::Test {
+ protected:
+  void SetUp() override {
+    auto loaded = load_scene_text(kScene, "grader.xml");
+    ASSERT_TRUE(loaded) << loaded.error().what();
+    scene_ = std::make_unique<Scene>(std::move(loaded).value());
+    dir_ = fs::temp_directory_path() /
+           ("fosssim_grader_" +
+            std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    file_ = (dir_ / "run.bin").string();
+    write_trajectory(*scene_, file_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  static void write_trajectory(const Scene& scene, const std::string& path) {
+    auto writer = TrajectoryWriter::open(path);
+    ASSERT_TRUE(writer);
+    Simulation simulation(scene.model, scene.initial);
+    writer->write_frame(simulation.state());
+    while (!simulation.finished()) {
+      simulation.step();
+      writer->write_frame(simulation.state());
+    }
+    writer->commit();
+  }
+
+  /// Adds delta to one double of the file: frame k, particle p, coordinate c, of q or v.
+  void perturb(std::int64_t frame, int particle, int coordinate, bool velocity, double delta) {
+    const int dofs = scene_->model.num_dofs();
+    const std::int64_t index = frame * 2 * dofs + (velocity ? dofs : 0) + 2 * particle + coordinate;
+    std::fstream io(file_, std::ios::in | std::ios::out | std::ios::binary);
+    double value = 0.0;
+    io.seekg(index * 8);
+    io.read(reinterpret_cast<char*>(&value), 8);
+    value += delta;
+    io.seekp(index * 8);
+    io.write(reinterpret_cast<const char*>(&value), 8);
+  }
+
+  Expected<GradeReport, std::string> grade() {
+    auto reader = TrajectoryReader::open(file_, scene_->model.num_dofs());
+    if (!reader) return reader.error();
+    return grade_trajectory(*scene_, *reader);
+  }
+
+  std::unique_ptr<Scene> scene_;
+  fs::path dir_;
+  std::string file_;
+};
+
+TEST_F(Grader, PassesItsOwnTrajectoryWithZeroResidual) {
+  auto report = grade();
+  ASSERT_TRUE(report) << report.error();
+  EXPECT_TRUE(report->passed());
+  EXPECT_EQ(report->steps, 50);
+  EXPECT_EQ(report->per_step.size(), 50u);
+  EXPECT_EQ(report->accumulated_position, 0.0);
+  EXPECT_EQ(report->accumulated_velocity, 0.0);
+  EXPECT_EQ(report->max_position, 0.0);
+  EXPECT_EQ(report->max_velocity, 0.0);
+  EXPECT_FALSE(report->first_divergence.has_value());
+}
+
+TEST_F(Grader, FailsAPositionPerturbedBy1e9AtExactlyThatStepAndParticle) {
+  perturb(/*frame=*/17, /*particle=*/2, /*coordinate=*/1, /*velocity=*/false, 1e-9);
+  auto report = grade();
+  ASSERT_TRUE(report) << report.error();
+  EXPECT_FALSE(report->passed());
+  EXPECT_FALSE(report->max_position_passed());
+  ASSERT_TRUE(report->first_divergence.has_value());
+  EXPECT_EQ(report->first_divergence->step, 17);
+  EXPECT_EQ(report->first_divergence->particle, 2);
+  EXPECT_NEAR(report->first_divergence->position_residual, 1e-9, 1e-15);
+  for (std::int64_t k = 1; k < 17; ++k) EXPECT_EQ(report->per_step[k - 1].max_position, 0.0) << k;
+  EXPECT_EQ(report->per_step[16].max_position_particle, 2);
+}
+
+TEST_F(Grader, FailsAVelocityPerturbationOnTheVelocityCriterion) {
+  perturb(/*frame=*/3, /*particle=*/1, /*coordinate=*/0, /*velocity=*/true, -1e-9);
+  auto report = grade();
+  ASSERT_TRUE(report) << report.error();
+  EXPECT_FALSE(report->passed());
+  EXPECT_FALSE(report->max_velocity_passed());
+  ASSERT_TRUE(report->first_divergence.has_value());
+  EXPECT_EQ(report->first_divergence->step, 3);
+  EXPECT_EQ(report->first_divergence->particle, 1);
+  EXPECT_NEAR(report->first_divergence->velocity_residual, 1e-9, 1e-15);
+}
+
+TEST_F(Grader, PerturbingTheFixedParticleIsCaughtToo) {
+  perturb(/*frame=*/40, /*particle=*/0, /*coordinate=*/0, /*velocity=*/false, 1e-9);
+  auto report = grade();
+  ASSERT_TRUE(report) << report.error();
+  EXPECT_FALSE(report->passed());
+  EXPECT_EQ(report->first_divergence->step, 40);
+  EXPECT_EQ(report->first_divergence->particle, 0);
+}
+
+// Grading measures each step's local error: a perturbation below the maximum limit passes.
+TEST_F(Grader, ToleratesAPerturbationBelowTheLimit) {
+  perturb(/*frame=*/10, /*particle=*/1, /*coordinate=*/0, /*velocity=*/false, 3e-11);
+  auto report = grade();
+  ASSERT_TRUE(report) << report.error();
+  EXPECT_TRUE(report->passed());
+  EXPECT_GT(report->max_position, 1e-11);
+  EXPECT_LT(report->max_position, 1e-10);
+}
+
+TEST_F(Grader, NotANumberInTheFileFails) {
+  perturb(/*frame=*/5, /*particle=*/1, /*coordinate=*/0, /*velocity=*/false,
+          std::numeric_limits<double>::quiet_NaN());
+  auto report = grade();
+  ASSERT_TRUE(report) << report.error();
+  EXPECT_FALSE(report->passed());
+  EXPECT_TRUE(std::isnan(report->max_position));
+  EXPECT_EQ(report->first_divergence->step, 5);
+}
+
+TEST_F(Grader, RejectsAFileWithTooFewFrames) {
+  fs::resize_file(file_, 50 * 2 * 6 * 8);  // 50 frames instead of 51
+  auto report = grade();
+  ASSERT_FALSE(report);
+  EXPECT_EQ(report.error(),
+            "the trajectory has 50 frames, but the scene takes 50 steps and so needs 51 (the "
+            "initial state and one frame per step); the file was cut short");
+}
+
+TEST_F(Grader, RejectsAFileWithTooManyFrames) {
+  fs::resize_file(file_, 52 * 2 * 6 * 8);
+  auto report = grade();
+  ASSERT_FALSE(report);
+  EXPECT_EQ(report.error(),
+            "the trajectory has 52 frames, but the scene takes 50 steps and so needs 51 (the "
+            "initial state and one frame per step)");
+}
+
+TEST_F(Grader, ReportsAReferenceStepThatCannotBeTaken) {
+  scene_->model.integrator.newton.max_iterations = 1;
+  scene_->model.integrator.newton.tolerance = 1e-300;
+  auto report = grade();
+  ASSERT_TRUE(report) << report.error();
+  EXPECT_FALSE(report->passed());
+  ASSERT_TRUE(report->reference_failure.has_value());
+  EXPECT_NE(report->reference_failure->find("step 1: implicit Euler: Newton's method did not converge"),
+            std::string::npos)
+      << *report->reference_failure;
+}
+
+TEST(GradeReport, CriteriaAreStrict) {
+  GradeReport report;
+  EXPECT_TRUE(report.passed());
+  report.accumulated_position = 1e-6;
+  EXPECT_FALSE(report.accumulated_position_passed());
+  report.accumulated_position = std::nextafter(1e-6, 0.0);
+  EXPECT_TRUE(report.accumulated_position_passed());
+  report.max_velocity = 1e-10;
+  EXPECT_FALSE(report.max_velocity_passed());
+  EXPECT_FALSE(report.passed());
+  report.max_velocity = std::nextafter(1e-10, 0.0);
+  EXPECT_TRUE(report.passed());
+}
+
+TEST(GradeReport, PrintsTheCourseLines) {
+  GradeReport report;
+  report.accumulated_position = 2.5e-7;
+  report.accumulated_velocity = 3e-6;
+  report.max_position = 1e-11;
+  report.max_velocity = 0.0;
+  std::ostringstream out;
+  print_grade_report(out, report);
+  EXPECT_EQ(out.str(),
+            "Accumulated Position Residual: 2.5e-07   Passed.\n"
+            "Accumulated Velocity Residual: 3e-06   Failed.\n"
+            "Maximum Position Residual: 1e-11   Passed.\n"
+            "Maximum Velocity Residual: 0   Passed.\n"
+            "Overall success: Failed.\n");
+}
+
+TEST(GradeReport, WritesTheResidualFile) {
+  GradeReport report;
+  report.accumulated_position = 2.5e-7;
+  report.max_position = 0.5;
+  const auto path = fs::temp_directory_path() / "fosssim_residual_test.txt";
+  write_residual_file(path.string(), report);
+  std::ifstream in(path);
+  const std::string content{std::istreambuf_iterator<char>(in), {}};
+  fs::remove(path);
+  EXPECT_EQ(content, "1   2.5e-07\n1   0\n0   0.5\n1   0\n");
+  EXPECT_FALSE(fs::exists(path.string() + ".partial"));
+}
+
+}  // namespace
+}  // namespace fosssim

@@ -1,0 +1,208 @@
+// Every malformed input of issue 2 gives one message naming file, line, element and problem.
+// The messages are asserted in full: they are the user interface.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "io/scene_loader.h"
+
+namespace fosssim {
+namespace {
+
+/// A valid header (line 1-2) so that the line of the element under test is predictable.
+constexpr const char* kHeader =
+    "<scene>\n"
+    "<duration time=\"1\"/><integrator type=\"explicit-euler\" dt=\"0.1\"/>\n";
+constexpr const char* kTwoParticles =
+    "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
+    "<particle m=\"1\" px=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
+    "<edge i=\"0\" j=\"1\"/>\n";
+
+std::string error_of(const std::string& xml) {
+  auto scene = load_scene_text(xml, "bad.xml");
+  if (scene) return "(loaded without error)";
+  return scene.error().what();
+}
+
+struct Case {
+  const char* name;
+  std::string body;  // after the header; its first line is line 3
+  const char* message;
+};
+
+class MalformedScene : public testing::TestWithParam<Case> {};
+
+TEST_P(MalformedScene, NamesFileLineElementAndProblem) {
+  const Case& c = GetParam();
+  EXPECT_EQ(error_of(kHeader + c.body + "</scene>\n"), c.message);
+}
+
+const Case kCases[] = {
+    {"MissingAttribute", "<particle m=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n",
+     "bad.xml:3: error: <particle> 0: attribute \"px\" is missing"},
+    {"NonNumericAttribute", "<particle m=\"heavy\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n",
+     "bad.xml:3: error: <particle> 0: attribute \"m\" must be a finite number, found \"heavy\""},
+    {"TrailingGarbage", "<particle m=\"1.5kg\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n",
+     "bad.xml:3: error: <particle> 0: attribute \"m\" must be a finite number, found \"1.5kg\""},
+    {"EmptyNumber", "<particle m=\"\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n",
+     "bad.xml:3: error: <particle> 0: attribute \"m\" must be a finite number, found \"\""},
+    {"NotFinite", "<particle m=\"1\" px=\"inf\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n",
+     "bad.xml:3: error: <particle> 0: attribute \"px\" must be a finite number, found \"inf\""},
+    {"NaN", "<particle m=\"1\" px=\"0\" py=\"nan\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n",
+     "bad.xml:3: error: <particle> 0: attribute \"py\" must be a finite number, found \"nan\""},
+    {"ZeroMass", "<particle m=\"0\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n",
+     "bad.xml:3: error: <particle> 0: attribute \"m\" must be positive, found 0"},
+    {"NegativeMass", "<particle m=\"-2\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"1\"/>\n",
+     "bad.xml:3: error: <particle> 0: attribute \"m\" must be positive, found -2"},
+    {"FixedTwo", "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"2\"/>\n",
+     "bad.xml:3: error: <particle> 0: attribute \"fixed\" must be 0 or 1, found \"2\""},
+    {"FixedWord", "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"true\"/>\n",
+     "bad.xml:3: error: <particle> 0: attribute \"fixed\" must be 0 or 1, found \"true\""},
+    {"EdgeIndexOutOfRange", std::string(kTwoParticles) + "<edge i=\"0\" j=\"2\"/>\n",
+     "bad.xml:6: error: <edge> 1: attribute \"j\" refers to particle 2, but the scene has 2 "
+     "particles (valid indices are 0 to 1)"},
+    {"NegativeIndex", std::string(kTwoParticles) + "<edge i=\"-1\" j=\"0\"/>\n",
+     "bad.xml:6: error: <edge> 1: attribute \"i\" refers to particle -1, but the scene has 2 "
+     "particles (valid indices are 0 to 1)"},
+    {"FractionalIndex", std::string(kTwoParticles) + "<edge i=\"0.5\" j=\"0\"/>\n",
+     "bad.xml:6: error: <edge> 1: attribute \"i\" must be an integer, found \"0.5\""},
+    {"EdgeToItself", std::string(kTwoParticles) + "<edge i=\"1\" j=\"1\"/>\n",
+     "bad.xml:6: error: <edge> 1: attribute \"j\" must differ from i (both are 1)"},
+    {"SpringOnMissingEdge", std::string(kTwoParticles) + "<springforce edge=\"1\" k=\"1\" l0=\"1\"/>\n",
+     "bad.xml:6: error: <springforce> 0: attribute \"edge\" refers to edge 1, but the scene has 1 "
+     "edge (valid indices are 0 to 0)"},
+    {"SpringWithoutEdges", "<springforce edge=\"0\" k=\"1\" l0=\"1\"/>\n",
+     "bad.xml:3: error: <springforce> 0: attribute \"edge\" refers to edge 0, but the scene has 0 "
+     "edges"},
+    {"ZeroLengthSpring",
+     "<particle m=\"1\" px=\"0.5\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
+     "<particle m=\"1\" px=\"0.5\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
+     "<edge i=\"0\" j=\"1\"/>\n<springforce edge=\"0\" k=\"1\" l0=\"1\"/>\n",
+     "bad.xml:6: error: <springforce> 0: edge 0 has zero length (particles 0 and 1 coincide), so "
+     "the spring's direction is undefined"},
+    {"NegativeStiffness", std::string(kTwoParticles) + "<springforce edge=\"0\" k=\"-1\" l0=\"1\"/>\n",
+     "bad.xml:6: error: <springforce> 0: attribute \"k\" must be non-negative, found -1"},
+    {"NegativeDamping",
+     std::string(kTwoParticles) + "<springforce edge=\"0\" k=\"1\" l0=\"1\" b=\"-0.5\"/>\n",
+     "bad.xml:6: error: <springforce> 0: attribute \"b\" must be non-negative, found -0.5"},
+    {"GravityOnItself", std::string(kTwoParticles) + "<gravitationalforce i=\"1\" j=\"1\" G=\"1\"/>\n",
+     "bad.xml:6: error: <gravitationalforce> 0: attribute \"j\" must differ from i (both are 1)"},
+    {"GravityIndexOutOfRange",
+     std::string(kTwoParticles) + "<gravitationalforce i=\"0\" j=\"7\" G=\"1\"/>\n",
+     "bad.xml:6: error: <gravitationalforce> 0: attribute \"j\" refers to particle 7, but the "
+     "scene has 2 particles (valid indices are 0 to 1)"},
+    {"VortexMissingParameter", std::string(kTwoParticles) + "<vortexforce i=\"0\" j=\"1\" kbs=\"1\"/>\n",
+     "bad.xml:6: error: <vortexforce> 0: attribute \"kvc\" is missing"},
+    {"GravityMissingComponent", "<simplegravity fx=\"0\"/>\n",
+     "bad.xml:3: error: <simplegravity> 0: attribute \"fy\" is missing"},
+    {"UnknownElement", "<particles m=\"1\"/>\n", "bad.xml:3: error: <particles>: unknown element"},
+    {"ColorOutOfRange",
+     std::string(kTwoParticles) + "<particlecolor i=\"0\" r=\"1.5\" g=\"0\" b=\"0\"/>\n",
+     "bad.xml:6: error: <particlecolor> 0: attribute \"r\" must be between 0 and 1, found 1.5"},
+    {"EdgeColorIndex", std::string(kTwoParticles) + "<edgecolor i=\"3\" r=\"1\" g=\"0\" b=\"0\"/>\n",
+     "bad.xml:6: error: <edgecolor> 0: attribute \"i\" refers to edge 3, but the scene has 1 edge "
+     "(valid indices are 0 to 0)"},
+    {"DuplicateDuration", "<duration time=\"2\"/>\n",
+     "bad.xml:3: error: <duration>: may appear only once (first at line 2)"},
+    {"NonPositiveViewport", "<viewport cx=\"0\" cy=\"0\" size=\"0\"/>\n",
+     "bad.xml:3: error: <viewport>: attribute \"size\" must be positive, found 0"},
+};
+
+INSTANTIATE_TEST_SUITE_P(SceneLoader, MalformedScene, testing::ValuesIn(kCases),
+                         [](const testing::TestParamInfo<Case>& info) { return info.param.name; });
+
+TEST(SceneLoaderErrors, UnknownIntegrator) {
+  EXPECT_EQ(error_of("<scene>\n<duration time=\"1\"/>\n<integrator type=\"rk4\" dt=\"0.1\"/>\n</scene>"),
+            "bad.xml:3: error: <integrator>: attribute \"type\" names an unknown integrator \"rk4\" "
+            "(expected explicit-euler, symplectic-euler, linearized-implicit-euler or "
+            "implicit-euler, or an alias)");
+}
+
+TEST(SceneLoaderErrors, NonPositiveTimeStep) {
+  EXPECT_EQ(error_of("<scene>\n<duration time=\"1\"/>\n<integrator type=\"implicit\" dt=\"0\"/>\n</scene>"),
+            "bad.xml:3: error: <integrator>: attribute \"dt\" must be positive, found 0");
+}
+
+TEST(SceneLoaderErrors, NegativeDuration) {
+  EXPECT_EQ(error_of("<scene>\n<duration time=\"-1\"/>\n<integrator type=\"implicit\" dt=\"1\"/>\n</scene>"),
+            "bad.xml:2: error: <duration>: attribute \"time\" must be non-negative, found -1");
+}
+
+TEST(SceneLoaderErrors, MissingRequiredElements) {
+  EXPECT_EQ(error_of("<scene>\n<integrator type=\"implicit\" dt=\"1\"/>\n</scene>"),
+            "bad.xml:1: error: <scene>: the required element <duration> is missing");
+  EXPECT_EQ(error_of("<scene>\n<duration time=\"1\"/>\n</scene>"),
+            "bad.xml:1: error: <scene>: the required element <integrator> is missing");
+}
+
+TEST(SceneLoaderErrors, WrongRootElement) {
+  EXPECT_EQ(error_of("<?xml version=\"1.0\"?>\n<world>\n</world>"),
+            "bad.xml:2: error: <world>: the root element must be <scene>");
+}
+
+TEST(SceneLoaderErrors, BadDimension) {
+  EXPECT_EQ(error_of("<scene dim=\"4\">\n</scene>"),
+            "bad.xml:1: error: <scene>: attribute \"dim\" must be 2 or 3, found 4");
+}
+
+TEST(SceneLoaderErrors, NotXml) {
+  EXPECT_EQ(error_of("<scene>\n<duration time=\"1\">\n</scene>"),
+            "bad.xml:2: error: <duration>: not well-formed XML: this element is not closed, or is "
+            "closed with a different name");
+  EXPECT_EQ(error_of("<scene>\n<particle m=1/>\n</scene>"),
+            "bad.xml:2: error: <particle>: not well-formed XML: a malformed or repeated attribute "
+            "(values need quotes: name=\"value\")");
+  EXPECT_EQ(error_of("<scene>\n<edge i=\"0\" i=\"1\"/>\n</scene>"),
+            "bad.xml:2: error: <edge>: not well-formed XML: a malformed or repeated attribute "
+            "(values need quotes: name=\"value\")");
+  EXPECT_EQ(error_of("this is not XML"),
+            "bad.xml:1: error: not well-formed XML: text outside of any element (is this an XML "
+            "scene file?)");
+  EXPECT_EQ(error_of("<scene>\n<particle/>\n"),
+            "bad.xml:1: error: not well-formed XML: an element opened on this line is never closed "
+            "(the file ends inside it)");
+  EXPECT_EQ(error_of("<scene>\n</scene>\n<scene>\n</scene>"),
+            "bad.xml:3: error: <scene>: a second top-level element; a scene file holds one <scene>");
+}
+
+TEST(SceneLoaderErrors, EmptyText) {
+  EXPECT_EQ(error_of(""), "bad.xml: error: the file is empty (expected a <scene> element)");
+  EXPECT_EQ(error_of(" \n\t\n"), "bad.xml: error: the file is empty (expected a <scene> element)");
+}
+
+TEST(SceneLoaderErrors, MissingFileAndDirectory) {
+  const auto missing = load_scene_file("/nonexistent/scene.xml");
+  ASSERT_FALSE(missing);
+  EXPECT_STREQ(missing.error().what(),
+               "/nonexistent/scene.xml: error: cannot open the file: No such file or directory");
+  const auto directory = load_scene_file(std::filesystem::temp_directory_path().string());
+  ASSERT_FALSE(directory);
+  EXPECT_EQ(directory.error().problem(), "is a directory, not a scene file");
+}
+
+TEST(SceneLoaderErrors, EmptyFileOnDisk) {
+  const auto path = std::filesystem::temp_directory_path() / "fosssim_empty_scene.xml";
+  std::ofstream(path).close();
+  const auto scene = load_scene_file(path.string());
+  std::filesystem::remove(path);
+  ASSERT_FALSE(scene);
+  EXPECT_EQ(scene.error().file(), path.string());
+  EXPECT_EQ(scene.error().line(), 0);
+  EXPECT_EQ(scene.error().problem(), "the file is empty (expected a <scene> element)");
+}
+
+TEST(SceneLoaderErrors, ErrorCarriesItsParts) {
+  const auto scene = load_scene_text(
+      std::string(kHeader) + "<particle m=\"x\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/></scene>",
+      "parts.xml");
+  ASSERT_FALSE(scene);
+  EXPECT_EQ(scene.error().file(), "parts.xml");
+  EXPECT_EQ(scene.error().line(), 3);
+  EXPECT_EQ(scene.error().element(), "<particle> 0");
+  EXPECT_EQ(scene.error().problem(), "attribute \"m\" must be a finite number, found \"x\"");
+}
+
+}  // namespace
+}  // namespace fosssim
