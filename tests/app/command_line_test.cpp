@@ -1,0 +1,234 @@
+// The FOSSSim executable as the course's grading script and students use it (SPEC section 2):
+// flags, messages, exit statuses and the files it leaves behind.
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "run_program.h"
+
+namespace fosssim {
+namespace {
+
+namespace fs = std::filesystem;
+using testing_support::ProgramResult;
+
+// One free particle on a damped spring to a fixed one, under gravity: 100 steps.
+constexpr const char* kSpringScene = R"(<scene>
+  <description text="A damped spring."/>
+  <duration time="1.0"/>
+  <integrator type="implicit-euler" dt="0.01"/>
+  <particle m="1" px="0" py="0" vx="0" vy="0" fixed="1"/>
+  <particle m="1" px="1.2" py="0.1" vx="0" vy="0" fixed="0"/>
+  <edge i="0" j="1"/>
+  <springforce edge="0" k="20" l0="1" b="0.3"/>
+  <simplegravity fx="0" fy="-9.81"/>
+</scene>)";
+
+// Explicit Euler on a very stiff spring with a large step: blows up within a few dozen steps.
+constexpr const char* kExplodingScene = R"(<scene>
+  <duration time="10.0"/>
+  <integrator type="explicit-euler" dt="0.1"/>
+  <particle m="1" px="0" py="0" vx="0" vy="0" fixed="1"/>
+  <particle m="1" px="1.5" py="0" vx="0" vy="0" fixed="0"/>
+  <edge i="0" j="1"/>
+  <springforce edge="0" k="1e6" l0="1"/>
+</scene>)";
+
+constexpr std::int64_t kSpringFrameBytes = 2 * 4 * 8;
+
+class CommandLine : public testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("fosssim_cli_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    write("spring.xml", kSpringScene);
+    write("explode.xml", kExplodingScene);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  void write(const std::string& name, const std::string& content) {
+    std::ofstream(dir_ / name, std::ios::binary) << content;
+  }
+  std::string read(const std::string& name) const {
+    std::ifstream in(dir_ / name, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+  }
+  bool exists(const std::string& name) const { return fs::exists(dir_ / name); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  ProgramResult fosssim(std::vector<std::string> args) {
+    args.insert(args.begin(), FOSSSIM_BINARY);
+    return testing_support::run_program(args, dir_.string());
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(CommandLine, HelpDocumentsEveryOptionAndExitStatus) {
+  const ProgramResult r = fosssim({"--help"});
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* text : {"-s,--scene", "-d,--display", "-p,--paused", "-o,--output", "-i,--input",
+                           "--duration", "--dt", "--newton-max-iterations", "--newton-tolerance",
+                           "--residual-file", "--check-derivatives", "Exit status"}) {
+    EXPECT_NE(r.out.find(text), std::string::npos) << text;
+  }
+}
+
+TEST_F(CommandLine, RunWritesTheTrajectoryAndSaysTheCompatMessage) {
+  const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "-o", "out.bin"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "A damped spring.\nSimulation complete at time 1. Exiting.\n");
+  EXPECT_EQ(r.err, "");  // no progress bar when standard error is not a terminal
+  EXPECT_EQ(static_cast<std::int64_t>(fs::file_size(path("out.bin"))), 101 * kSpringFrameBytes);
+  EXPECT_FALSE(exists("out.bin.partial"));
+}
+
+TEST_F(CommandLine, RunWithoutOutputFileStillCompletes) {
+  const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "-q"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "Simulation complete at time 1. Exiting.\n");
+}
+
+TEST_F(CommandLine, TwoRunsGiveIdenticalBytes) {
+  ASSERT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "-o", "a.bin"}).exit_code, 0);
+  ASSERT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "-o", "b.bin"}).exit_code, 0);
+  EXPECT_FALSE(read("a.bin").empty());
+  EXPECT_TRUE(read("a.bin") == read("b.bin"));
+}
+
+TEST_F(CommandLine, GradingPassesItsOwnRunAndWritesResiduals) {
+  ASSERT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "-o", "out.bin"}).exit_code, 0);
+  const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "-i", "out.bin"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out,
+            "A damped spring.\n"
+            "Accumulated Position Residual: 0   Passed.\n"
+            "Accumulated Velocity Residual: 0   Passed.\n"
+            "Maximum Position Residual: 0   Passed.\n"
+            "Maximum Velocity Residual: 0   Passed.\n"
+            "Overall success: Passed.\n");
+  EXPECT_EQ(read("residual.txt"), "1   0\n1   0\n1   0\n1   0\n");
+}
+
+TEST_F(CommandLine, GradingFailsAPerturbedStepAndSaysWhere) {
+  ASSERT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "-o", "out.bin"}).exit_code, 0);
+  std::string bytes = read("out.bin");
+  double x = 0.0;
+  const std::size_t offset = 42 * kSpringFrameBytes + 2 * 8;  // frame 42, particle 1, x
+  std::memcpy(&x, bytes.data() + offset, 8);
+  x += 1e-9;
+  std::memcpy(bytes.data() + offset, &x, 8);
+  write("out.bin", bytes);
+  const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "-i", "out.bin", "-q"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("Maximum Position Residual: 1e-09   Failed.\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Overall success: Failed.\n"), std::string::npos);
+  EXPECT_NE(r.err.find("First divergence at step 42, particle 1"), std::string::npos) << r.err;
+  EXPECT_EQ(read("residual.txt").substr(0, 4), "1   ");
+}
+
+TEST_F(CommandLine, GradingACutShortFileIsAnError) {
+  ASSERT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "-o", "out.bin"}).exit_code, 0);
+  fs::resize_file(path("out.bin"), 60 * kSpringFrameBytes);
+  const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "-i", "out.bin"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "FOSSSim: error: out.bin: the trajectory has 60 frames, but the scene takes 100 steps "
+            "and so needs 101 (the initial state and one frame per step); the file was cut short\n");
+  EXPECT_EQ(r.out.find("Overall success"), std::string::npos);
+}
+
+TEST_F(CommandLine, GradingAFileOfTheWrongSizeIsAnError) {
+  write("garbage.bin", "not a trajectory");
+  const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "-i", "garbage.bin"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("garbage.bin has 16 bytes, not a whole number of frames of 64 bytes"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST_F(CommandLine, BlowUpStopsAtTheStepAndKeepsOnlyAnIncompleteFile) {
+  write("out.bin", "earlier run");
+  const ProgramResult r = fosssim({"-s", "explode.xml", "-d", "0", "-o", "out.bin"});
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(r.err.find("FOSSSim: error: explode.xml: step "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(": particle 1 has a non-finite "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("frames computed so far are in out.bin.incomplete"), std::string::npos);
+  EXPECT_EQ(read("out.bin"), "earlier run");
+  ASSERT_TRUE(exists("out.bin.incomplete"));
+  EXPECT_EQ(fs::file_size(path("out.bin.incomplete")) % kSpringFrameBytes, 0u);
+  EXPECT_EQ(r.out.find("Simulation complete"), std::string::npos);
+}
+
+TEST_F(CommandLine, DurationAndTimeStepCanBeOverridden) {
+  const ProgramResult r =
+      fosssim({"-s", "spring.xml", "-d", "0", "--duration", "0.5", "--dt", "0.001", "-o", "o.bin"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(static_cast<std::int64_t>(fs::file_size(path("o.bin"))), 501 * kSpringFrameBytes);
+  const ProgramResult graded = fosssim(
+      {"-s", "spring.xml", "-d", "0", "--duration", "0.5", "--dt", "0.001", "-i", "o.bin"});
+  EXPECT_EQ(graded.exit_code, 0) << graded.err;
+}
+
+TEST_F(CommandLine, InvalidOverridesAreRejected) {
+  const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "--dt", "-1"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "FOSSSim: error: --dt must be a finite number > 0, found -1\n");
+}
+
+TEST_F(CommandLine, NewtonThatCannotConvergeNamesTheStep) {
+  const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "--newton-max-iterations", "2",
+                                   "--newton-tolerance", "1e-300", "-o", "out.bin"});
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(r.err.find("step 1: implicit Euler: Newton's method did not converge in 2 iterations"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(exists("out.bin"));
+}
+
+TEST_F(CommandLine, BadSceneGivesFileLineAndExitTwo) {
+  write("bad.xml", "<scene>\n<duration time=\"1\"/>\n<integrator type=\"explicit\" dt=\"0.1\"/>\n</scene>\n");
+  const ProgramResult r = fosssim({"-s", "bad.xml", "-d", "0"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.substr(0, r.err.find('\n')),
+            "bad.xml:3: error: <integrator>: attribute \"type\" names an unknown integrator "
+            "\"explicit\" (expected explicit-euler, symplectic-euler, linearized-implicit-euler or "
+            "implicit-euler, or an alias)");
+}
+
+TEST_F(CommandLine, MissingSceneFileIsExitTwo) {
+  const ProgramResult r = fosssim({"-s", "nowhere.xml", "-d", "0"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "nowhere.xml: error: cannot open the file: No such file or directory\n");
+}
+
+TEST_F(CommandLine, UsageErrorsAreExitTwo) {
+  EXPECT_EQ(fosssim({}).exit_code, 2);
+  EXPECT_EQ(fosssim({"-s", "spring.xml", "-d", "2"}).exit_code, 2);
+  const ProgramResult both = fosssim({"-s", "spring.xml", "-d", "0", "-o", "a.bin", "-i", "b.bin"});
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_NE(both.err.find("excludes"), std::string::npos) << both.err;
+  EXPECT_EQ(fosssim({"-s", "spring.xml", "--no-such-flag"}).exit_code, 2);
+}
+
+TEST_F(CommandLine, UnwritableOutputIsAnIoError) {
+  const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "-o", "missing/dir/out.bin"});
+  EXPECT_EQ(r.exit_code, 4);
+  EXPECT_NE(r.err.find("cannot create missing/dir/out.bin.partial"), std::string::npos) << r.err;
+}
+
+TEST_F(CommandLine, ChecksDerivativesOfAScene) {
+  const ProgramResult r = fosssim({"-s", "spring.xml", "--check-derivatives", "-q"});
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("springforce(0, 1)"), std::string::npos);
+  EXPECT_NE(r.out.find("all passed"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fosssim
