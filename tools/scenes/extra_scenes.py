@@ -324,10 +324,11 @@ NET_DT = {"symplectic": 0.001, "implicit": 0.01, "linearized": 0.01}
 
 
 def system_net(integ):
-    n, spacing, m, k, k_shear, b = 9, 0.25, 0.02, 800.0, 200.0, 0.5
+    n, spacing, m, k, k_shear, drag = 9, 0.25, 0.02, 800.0, 200.0, 0.01
     s = Scene(integ, dt=NET_DT[integ], duration=3.0, viewport=(1.0, -1.2, 1.8))
     s.what = "a 9 x 9 net of springs pinned at two corners, blown sideways"
     s.gravity.append((0.0, -GRAVITY))
+    s.drag.append(drag)
     node = {}
     for row in range(n):
         for col in range(n):
@@ -340,13 +341,13 @@ def system_net(integ):
     for row in range(n):
         for col in range(n):
             if col + 1 < n:
-                s.spring(node[row, col], node[row, col + 1], k, b=b, radius=0.01)
+                s.spring(node[row, col], node[row, col + 1], k, radius=0.01)
             if row + 1 < n:
-                s.spring(node[row, col], node[row + 1, col], k, b=b, radius=0.01)
+                s.spring(node[row, col], node[row + 1, col], k, radius=0.01)
             if row + 1 < n and col + 1 < n:
-                s.spring(node[row, col], node[row + 1, col + 1], k_shear, b=b, radius=0.006,
+                s.spring(node[row, col], node[row + 1, col + 1], k_shear, radius=0.006,
                          color=(0.6, 0.75, 0.75))
-                s.spring(node[row, col + 1], node[row + 1, col], k_shear, b=b, radius=0.006,
+                s.spring(node[row, col + 1], node[row + 1, col], k_shear, radius=0.006,
                          color=(0.6, 0.75, 0.75))
     look = {
         "symplectic": "Symplectic Euler needs a small step (0.001) for the net's fastest "
@@ -356,10 +357,10 @@ def system_net(integ):
         "linearized": "Linearized implicit Euler takes ten times larger steps (0.01).",
     }[integ]
     s.description = (f"A 2D net of {n * n} particles (mass {fmt(m)}) joined by structural springs "
-                     f"(k = {fmt(k)}) and diagonal shear springs (k = {fmt(k_shear)}), all with "
-                     f"damping b = {fmt(b)}, pinned at its two top corners. Under gravity it sags "
-                     "into a curtain while a sideways gust (initial velocity growing with depth) "
-                     "makes it swing. " + look)
+                     f"(k = {fmt(k)}) and diagonal shear springs (k = {fmt(k_shear)}), pinned at its "
+                     "two top corners, in air (linear drag b = "
+                     f"{fmt(drag)}). Under gravity it sags into a curtain while a sideways gust "
+                     "(initial velocity growing with depth) makes it swing. " + look)
     return s
 
 
