@@ -1,0 +1,185 @@
+#include "candidate_run.h"
+
+#include <cerrno>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
+#include "child_process.h"
+#include "core/text.h"
+#include "printable_text.h"
+
+namespace fosssim {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Bytes a run may write into one file or into its folder before it is stopped: twice the
+/// expected trajectory (a candidate may keep a temporary copy) and at least 64 MiB.
+std::int64_t write_limit(std::int64_t expected_bytes) {
+  return std::max<std::int64_t>(2 * expected_bytes, std::int64_t(64) << 20);
+}
+
+/// Total size of the regular files under `folder`.
+std::int64_t folder_bytes(const std::string& folder) {
+  std::int64_t total = 0;
+  std::error_code error;
+  for (fs::recursive_directory_iterator it(folder, error), end; !error && it != end;
+       it.increment(error)) {
+    std::error_code size_error;
+    if (it->is_regular_file(size_error)) {
+      const auto size = it->file_size(size_error);
+      if (!size_error) total += static_cast<std::int64_t>(size);
+    }
+  }
+  return total;
+}
+
+std::string cannot_start_reason(const ChildOutcome& outcome, const std::string& candidate) {
+  if (outcome.start_step == "exec") {
+    switch (outcome.start_error) {
+      case ENOENT:
+        return "the candidate " + candidate + " does not exist";
+      case EACCES:
+        return "the candidate " + candidate + " is not executable (permission denied)";
+      case ENOEXEC:
+        return "the candidate " + candidate +
+               " is not a program this system can run (a script needs a #! line)";
+      default:
+        break;
+    }
+  }
+  return "cannot start the candidate " + candidate + " (" + outcome.start_step +
+         " failed: " + std::strerror(outcome.start_error) + ")";
+}
+
+/// The verdict for a run that did not end with exit status 0, or nothing.
+std::optional<Verdict> classify_ending(const ChildOutcome& outcome, const CandidateRunOptions& options,
+                                       std::int64_t limit, std::string& reason) {
+  switch (outcome.ending) {
+    case ChildEnding::kCannotStart:
+      reason = cannot_start_reason(outcome, options.candidate);
+      return Verdict::kCannotRun;
+    case ChildEnding::kInterrupted:
+      reason = "the oracle was interrupted while the candidate ran";
+      return Verdict::kInterrupted;
+    case ChildEnding::kTimedOut:
+      reason = "the candidate did not finish within the timeout of " +
+               to_text(options.timeout_seconds) + " s and was killed";
+      return Verdict::kTimedOut;
+    case ChildEnding::kStoppedByWatch:
+      reason = outcome.watch_message;
+      return Verdict::kOversized;
+    case ChildEnding::kSignaled:
+      if (outcome.signal == SIGXFSZ) {
+        reason = "the candidate tried to write a file larger than " + std::to_string(limit) +
+                 " bytes and was stopped (SIGXFSZ)";
+        return Verdict::kOversized;
+      }
+      reason = "the candidate crashed: killed by " + describe_signal(outcome.signal);
+      return Verdict::kCrashed;
+    case ChildEnding::kExited:
+      if (outcome.exit_status != 0) {
+        reason = "the candidate exited with status " + std::to_string(outcome.exit_status);
+        return Verdict::kExitStatus;
+      }
+      return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+/// The verdict for a trajectory file of the wrong size, or nothing when it has the right size.
+std::optional<Verdict> classify_file(const std::string& path, std::int64_t expected_bytes,
+                                     std::string& reason) {
+  std::error_code error;
+  if (!fs::exists(path, error)) {
+    reason = "the candidate exited with status 0 but wrote no trajectory file";
+    if (fs::exists(path + ".incomplete", error) || fs::exists(path + ".partial", error)) {
+      reason += " (only an unfinished " + fs::path(path).filename().string() + ".incomplete or .partial)";
+    }
+    return Verdict::kNoOutput;
+  }
+  const auto bytes = static_cast<std::int64_t>(fs::file_size(path, error));
+  if (error) {
+    reason = "cannot read the trajectory file: " + error.message();
+    return Verdict::kNoOutput;
+  }
+  if (bytes == 0) {
+    reason = "the candidate wrote an empty trajectory file";
+    return Verdict::kNoOutput;
+  }
+  if (bytes < expected_bytes) {
+    reason = "short trajectory: " + std::to_string(bytes) + " bytes, but the scene needs " +
+             std::to_string(expected_bytes) + " (steps + 1 frames)";
+    return Verdict::kShort;
+  }
+  if (bytes > expected_bytes) {
+    reason = "oversized trajectory: " + std::to_string(bytes) + " bytes, but the scene needs " +
+             std::to_string(expected_bytes) + " (steps + 1 frames); not read";
+    return Verdict::kOversized;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+WorkFolder::WorkFolder(const std::string& parent) {
+  std::string base = parent;
+  if (base.empty()) {
+    std::error_code error;
+    base = fs::temp_directory_path(error).string();
+    if (error) base = "/tmp";
+  }
+  std::string pattern = base + "/fosssim-oracle-XXXXXX";
+  if (::mkdtemp(pattern.data()) == nullptr) {
+    throw std::runtime_error("cannot create a temporary folder in " + base + ": " +
+                             std::strerror(errno));
+  }
+  path_ = pattern;
+}
+
+WorkFolder::~WorkFolder() {
+  if (keep_) return;
+  std::error_code error;
+  fs::remove_all(path_, error);
+}
+
+CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_bytes,
+                           const CandidateRunOptions& options, const WorkFolder& work) {
+  CandidateRun run;
+  run.trajectory_path = work.path() + "/out.bin";
+  const std::int64_t limit = write_limit(expected_bytes);
+  ChildLimits limits;
+  limits.timeout_seconds = options.timeout_seconds;
+  limits.max_file_bytes = limit;
+  limits.watch = [&work, limit]() -> std::optional<std::string> {
+    const std::int64_t bytes = folder_bytes(work.path());
+    if (bytes <= limit) return std::nullopt;
+    return "the candidate wrote " + std::to_string(bytes) + " bytes into its folder, more than " +
+           "the limit of " + std::to_string(limit) + ", and was stopped";
+  };
+  const ChildOutcome outcome = run_child(
+      {options.candidate, "-s", scene_path, "-d", "0", "-o", run.trajectory_path}, work.path(),
+      limits);
+  run.seconds = outcome.seconds;
+  run.exit_status = outcome.exit_status;
+  run.stderr_tail = last_lines(printable_text(outcome.stderr_tail), 20);
+  run.problem = classify_ending(outcome, options, limit, run.reason);
+  if (!run.problem) {
+    run.problem = classify_file(run.trajectory_path, expected_bytes, run.reason);
+  } else if (*run.problem == Verdict::kExitStatus || *run.problem == Verdict::kCrashed) {
+    // A writer killed by its file-size limit inside a script shows as the script's exit status
+    // or crash; the oversized file is the better reason.
+    std::string file_reason;
+    if (classify_file(run.trajectory_path, expected_bytes, file_reason) == Verdict::kOversized) {
+      run.problem = Verdict::kOversized;
+      run.reason = file_reason + " (and " + run.reason.substr(std::string("the ").size()) + ")";
+    }
+  }
+  return run;
+}
+
+}  // namespace fosssim

@@ -1,0 +1,56 @@
+#pragma once
+// Running a candidate simulator on one scene the way the course's grading script does,
+// "CANDIDATE -s SCENE -d 0 -o FILE", in a folder of its own, and checking that FILE is a
+// trajectory of the right size before anyone reads it.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "scene_result.h"
+
+namespace fosssim {
+
+/// A fresh temporary folder ("<parent>/fosssim-oracle-XXXXXX"), removed with everything in it
+/// when the object is destroyed, unless keep() was called.
+class WorkFolder {
+ public:
+  /// Creates the folder under `parent` (the system's temporary folder when empty). Throws
+  /// std::runtime_error when it cannot.
+  explicit WorkFolder(const std::string& parent);
+  ~WorkFolder();
+  WorkFolder(const WorkFolder&) = delete;
+  WorkFolder& operator=(const WorkFolder&) = delete;
+
+  const std::string& path() const { return path_; }
+  void keep() { keep_ = true; }
+
+ private:
+  std::string path_;
+  bool keep_ = false;
+};
+
+struct CandidateRunOptions {
+  std::string candidate;         ///< the executable (a path; see resolve_executable)
+  double timeout_seconds = 600.0;
+};
+
+/// What one run produced.
+struct CandidateRun {
+  /// Set when the run or its file cannot be graded: crash, timeout, exit status, no file, short
+  /// or oversized file. Unset: `trajectory_path` holds exactly `expected_bytes` bytes.
+  std::optional<Verdict> problem;
+  std::string reason;            ///< one line, when `problem` is set
+  std::string trajectory_path;   ///< "<work folder>/out.bin"
+  std::string stderr_tail;       ///< the last lines of the candidate's standard error, printable
+  int exit_status = 0;
+  double seconds = 0.0;
+};
+
+/// Runs `options.candidate -s <scene_path> -d 0 -o <work>/out.bin` in `work`, with the timeout,
+/// a per-file size limit and a watch on the folder's size (both well above `expected_bytes`, so
+/// a runaway writer is stopped early), then checks the file's size against `expected_bytes`.
+CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_bytes,
+                           const CandidateRunOptions& options, const WorkFolder& work);
+
+}  // namespace fosssim

@@ -1,0 +1,71 @@
+#include "diagnosis.h"
+
+#include <sstream>
+
+#include "atomic_file.h"
+#include "core/text.h"
+#include "printable_text.h"
+#include "residual_plot.h"
+
+namespace fosssim {
+
+std::string diagnosis_text(const SceneResult& result) {
+  std::ostringstream out;
+  out << result.name << ": " << verdict_label(result.verdict);
+  if (!result.integrator.empty()) {
+    out << " (" << result.integrator << ", " << result.particles << " particles in "
+        << result.dim << "D, " << result.steps << " steps of " << to_text(result.dt) << " s)";
+  }
+  out << "\n";
+  if (!result.reason.empty()) out << result.reason << "\n";
+  if (result.residuals) {
+    const Residuals& r = *result.residuals;
+    out << "Residuals: accumulated position " << to_text(r.accumulated_position)
+        << ", accumulated velocity " << to_text(r.accumulated_velocity) << ", maximum position "
+        << to_text(r.max_position) << ", maximum velocity " << to_text(r.max_velocity) << "\n";
+  }
+  if (!result.details.empty()) out << result.details;
+  if (!result.stderr_tail.empty()) {
+    out << "The candidate's standard error (last lines):\n" << indent_lines(result.stderr_tail, "  ");
+  }
+  return out.str();
+}
+
+std::string residual_table_tsv(const GradeReport& report, double dt) {
+  std::ostringstream out;
+  out << "step\ttime\tmax_position\tposition_particle\tmax_velocity\tvelocity_particle"
+         "\tsum_position\tsum_velocity\n";
+  for (const StepResidual& r : report.per_step) {
+    out << r.step << '\t' << to_text(static_cast<double>(r.step) * dt) << '\t'
+        << to_text(r.max_position) << '\t' << r.max_position_particle << '\t'
+        << to_text(r.max_velocity) << '\t' << r.max_velocity_particle << '\t'
+        << to_text(r.sum_position) << '\t' << to_text(r.sum_velocity) << '\n';
+  }
+  return out.str();
+}
+
+std::string diagnosis_stem(const std::string& folder, const std::string& scene_name) {
+  std::string stem = scene_name;
+  if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".xml") == 0) stem.resize(stem.size() - 4);
+  return folder + "/" + stem;
+}
+
+std::optional<std::string> write_diagnosis(const std::string& folder, const SceneResult& result,
+                                           const GradeReport* report) {
+  const std::string stem = diagnosis_stem(folder, result.name);
+  if (auto problem = write_file_atomically(stem + ".diagnosis.txt", diagnosis_text(result))) {
+    return problem;
+  }
+  if (report == nullptr) return std::nullopt;
+  if (auto problem = write_file_atomically(stem + ".residuals.tsv", residual_table_tsv(*report, result.dt))) {
+    return problem;
+  }
+  ResidualPlotOptions plot;
+  plot.title = result.name + ": largest residual per step (" + result.integrator + ")";
+  plot.dt = result.dt;
+  plot.limit = report->criteria.maximum_limit;
+  if (report->first_divergence) plot.marked_step = report->first_divergence->step;
+  return write_file_atomically(stem + ".residuals.svg", residual_plot_svg(report->per_step, plot));
+}
+
+}  // namespace fosssim

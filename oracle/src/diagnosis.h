@@ -1,0 +1,31 @@
+#pragma once
+// The diagnosis of a failing scene, for the student who has to find the bug: where it first
+// diverges, by how much, the reference state there, and a plot of the residual over time.
+
+#include <optional>
+#include <string>
+
+#include "grading/grader.h"
+#include "scene_result.h"
+
+namespace fosssim {
+
+/// The diagnosis as text: verdict and reason, the details (first divergence with the start
+/// state, the reference step's result and the file's frame), and the candidate's standard error.
+std::string diagnosis_text(const SceneResult& result);
+
+/// The per-step residuals as tab-separated columns: step, time, max position residual and its
+/// particle, max velocity residual and its particle, sums over particles.
+std::string residual_table_tsv(const GradeReport& report, double dt);
+
+/// Writes the diagnosis files of a failing scene under `folder`, named after the scene (its
+/// name without ".xml"): NAME.diagnosis.txt always, and when the trajectory was graded
+/// (`report` not null) NAME.residuals.tsv and NAME.residuals.svg. Returns an error message or
+/// nothing.
+std::optional<std::string> write_diagnosis(const std::string& folder, const SceneResult& result,
+                                           const GradeReport* report);
+
+/// The path without extension that write_diagnosis uses for a scene: "<folder>/assets/t1m1/x".
+std::string diagnosis_stem(const std::string& folder, const std::string& scene_name);
+
+}  // namespace fosssim

@@ -1,0 +1,348 @@
+// fosssim-oracle: grades any simulator that speaks the course's command line against the scenes
+// of a suite, writes the reports autograders read, merges shards of large runs, and keeps the
+// regression manifest of FOSSSim's own trajectories. Only this file chooses exit statuses.
+
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "app/exit_codes.h"
+#include "atomic_file.h"
+#include "batch.h"
+#include "child_process.h"
+#include "gradescope_report.h"
+#include "junit_report.h"
+#include "manifest.h"
+#include "result_table.h"
+#include "shard_result_file.h"
+
+namespace fosssim {
+namespace {
+
+constexpr const char* kRegenerateCommand = "cmake --build --preset release --target oracle-manifest";
+
+/// Where the reports of a run go, and how Gradescope scores it.
+struct ReportOptions {
+  std::string junit, gradescope;
+  GradescopeOptions scoring;
+  bool quiet = false;
+};
+
+struct GradeCommand {
+  std::string candidate;
+  std::vector<std::string> folders, extra_credit;
+  int jobs = 1;
+  std::string shard = "1/1";
+  double timeout = 600.0;
+  std::string shard_result, diagnose_dir, work_dir;
+  bool keep_work = false;
+  ReportOptions reports;
+};
+
+struct MergeCommand {
+  std::vector<std::string> files;
+  ReportOptions reports;
+};
+
+struct ManifestCommand {
+  std::string candidate = "FOSSSim";
+  std::string folder = "oracle/manifest";
+  std::vector<std::string> scene_folders;
+  int jobs = 1;
+  double timeout = 600.0;
+  std::string work_dir;
+};
+
+extern "C" void on_interrupt(int) { stop_all_children(); }
+
+void install_interrupt_handler() {
+  struct sigaction action;
+  std::memset(&action, 0, sizeof(action));
+  action.sa_handler = on_interrupt;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void add_report_options(CLI::App& command, ReportOptions& reports) {
+  command.add_option("--junit", reports.junit, "Write the JUnit XML report here");
+  command.add_option("--gradescope", reports.gradescope, "Write Gradescope's results.json here");
+  command.add_option("--points-per-scene", reports.scoring.points_per_scene,
+                     "Gradescope points for each passing scene")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command.add_option("--visibility", reports.scoring.visibility,
+                     "Gradescope visibility of every test: visible, hidden, after_due_date or "
+                     "after_published")
+      ->check(CLI::IsMember({"visible", "hidden", "after_due_date", "after_published"}))
+      ->capture_default_str();
+  command.add_flag("-q,--quiet", reports.quiet, "No progress lines on standard error");
+}
+
+/// Prints the table and writes the requested reports; returns the exit status.
+int report(const GradingRun& run, const ReportOptions& options) {
+  print_result_table(std::cout, run);
+  int status = tally(run.results).all_passed() ? kExitOk : kExitGradingFailed;
+  const auto write = [&status](const std::string& path, const std::string& content, const char* what) {
+    if (path.empty()) return;
+    if (auto problem = write_file_atomically(path, content)) {
+      std::cerr << "fosssim-oracle: error: " << *problem << "\n";
+      status = kExitIoError;
+    } else {
+      std::cout << what << " written to " << path << "\n";
+    }
+  };
+  write(options.junit, junit_xml(run), "JUnit XML");
+  write(options.gradescope, gradescope_json(run, options.scoring), "Gradescope results");
+  return status;
+}
+
+int run_grade(const GradeCommand& command) {
+  const auto start = std::chrono::steady_clock::now();
+  auto shard = parse_shard(command.shard);
+  if (!shard) {
+    std::cerr << "fosssim-oracle: error: " << shard.error() << "\n";
+    return kExitBadInput;
+  }
+  auto scenes = discover_scenes(command.folders, command.extra_credit);
+  if (!scenes) {
+    std::cerr << "fosssim-oracle: error: " << scenes.error() << "\n";
+    return kExitBadInput;
+  }
+  if (scenes->empty()) {
+    std::cerr << "fosssim-oracle: error: no scene files (*.xml) in the given folders\n";
+    return kExitBadInput;
+  }
+  GradingOptions options;
+  options.run.candidate = resolve_executable(command.candidate);
+  if (options.run.candidate.empty()) {
+    options.run.candidate = command.candidate;
+    std::cerr << "fosssim-oracle: warning: the candidate " << command.candidate
+              << " is not found; every scene will fail\n";
+  }
+  options.run.timeout_seconds = command.timeout;
+  options.work_dir = command.work_dir;
+  options.keep_work = command.keep_work;
+  options.diagnose_dir = command.diagnose_dir;
+
+  GradingRun run;
+  run.candidate = command.candidate;
+  run.shard = *shard;
+  run.scenes = listing_of(*scenes);
+  const std::vector<SceneEntry> selected = select_shard(*scenes, *shard);
+  if (!command.reports.quiet) {
+    std::cerr << "fosssim-oracle: grading " << selected.size() << " of " << scenes->size()
+              << " scenes (shard " << shard->index << "/" << shard->count << ") with "
+              << command.jobs << (command.jobs == 1 ? " job" : " jobs") << "\n";
+  }
+  install_interrupt_handler();
+  const bool quiet = command.reports.quiet;
+  run.results = grade_scenes(selected, options, command.jobs,
+                             [quiet](const SceneResult& r, std::size_t done, std::size_t total) {
+                               if (!quiet) std::cerr << progress_line(r, done, total) << std::endl;
+                             });
+  run.wall_seconds = seconds_since(start);
+  if (children_stopped()) {
+    std::cerr << "fosssim-oracle: interrupted; no reports written\n";
+    return kExitInterrupted;
+  }
+  int status = report(run, command.reports);
+  if (!command.shard_result.empty()) {
+    if (auto problem = write_file_atomically(command.shard_result, shard_result_json(run))) {
+      std::cerr << "fosssim-oracle: error: " << *problem << "\n";
+      status = kExitIoError;
+    } else {
+      std::cout << "Shard results written to " << command.shard_result << "\n";
+    }
+  }
+  return status;
+}
+
+int run_merge(const MergeCommand& command) {
+  std::vector<GradingRun> shards;
+  for (const std::string& file : command.files) {
+    const auto text = read_whole_file(file);
+    if (!text) {
+      std::cerr << "fosssim-oracle: error: cannot read " << file << "\n";
+      return kExitBadInput;
+    }
+    auto shard = parse_shard_result(*text, file);
+    if (!shard) {
+      std::cerr << "fosssim-oracle: error: " << shard.error() << "\n";
+      return kExitBadInput;
+    }
+    shards.push_back(std::move(shard).value());
+  }
+  auto merged = merge_shards(shards, command.files);
+  if (!merged) {
+    std::cerr << "fosssim-oracle: error: " << merged.error() << "\n";
+    return kExitBadInput;
+  }
+  return report(*merged, command.reports);
+}
+
+/// The manifest entries of a fresh run, or an exit status.
+std::variant<std::vector<ManifestEntry>, int> compute_for(const ManifestCommand& command) {
+  auto scenes = discover_scenes(command.scene_folders, {}, /*missing_folders_are_empty=*/true);
+  if (!scenes) {
+    std::cerr << "fosssim-oracle: error: " << scenes.error() << "\n";
+    return kExitBadInput;
+  }
+  CandidateRunOptions options;
+  options.candidate = resolve_executable(command.candidate);
+  if (options.candidate.empty()) {
+    std::cerr << "fosssim-oracle: error: the candidate " << command.candidate << " is not found\n";
+    return kExitBadInput;
+  }
+  options.timeout_seconds = command.timeout;
+  install_interrupt_handler();
+  auto entries = compute_manifest(*scenes, options, command.work_dir, command.jobs);
+  if (children_stopped()) return kExitInterrupted;
+  return entries;
+}
+
+int run_manifest_update(const ManifestCommand& command) {
+  auto computed = compute_for(command);
+  if (auto* status = std::get_if<int>(&computed)) return *status;
+  const auto& entries = std::get<std::vector<ManifestEntry>>(computed);
+  if (auto problem = write_manifest(command.folder, entries, kRegenerateCommand)) {
+    std::cerr << "fosssim-oracle: error: " << *problem << "\n";
+    return kExitIoError;
+  }
+  std::cout << "Manifest of " << entries.size() << " scenes written to " << command.folder << "\n";
+  for (const ManifestEntry& e : entries) {
+    if (e.status != "ok") std::cout << "  note: " << e.scene << ": " << e.status << "\n";
+  }
+  return kExitOk;
+}
+
+int run_manifest_check(const ManifestCommand& command) {
+  auto golden = read_manifest(command.folder);
+  if (!golden) {
+    std::cerr << "fosssim-oracle: error: " << golden.error() << "; create it with `"
+              << kRegenerateCommand << "`\n";
+    return kExitBadInput;
+  }
+  auto computed = compute_for(command);
+  if (auto* status = std::get_if<int>(&computed)) return *status;
+  const auto& entries = std::get<std::vector<ManifestEntry>>(computed);
+  const auto problems = compare_manifest(*golden, entries, kRegenerateCommand);
+  if (problems.empty()) {
+    std::cout << "All " << entries.size() << " scenes match the manifest " << command.folder << "\n";
+    return kExitOk;
+  }
+  for (const std::string& problem : problems) std::cout << problem << "\n";
+  return kExitGradingFailed;
+}
+
+void add_grade_command(CLI::App& app, GradeCommand& c) {
+  CLI::App* grade = app.add_subcommand(
+      "grade", "Run a candidate simulator on every scene and grade its trajectories");
+  grade->add_option("--candidate", c.candidate,
+                    "The simulator to grade: a path, or a name found in $PATH; it is run as\n"
+                    "CANDIDATE -s SCENE -d 0 -o FILE in a temporary folder of its own")
+      ->required();
+  grade->add_option("folders", c.folders, "Scene folders (searched for *.xml) or scene files")
+      ->required();
+  grade->add_option("--extra-credit", c.extra_credit,
+                    "An extra-credit scene folder, scored apart (repeat for several)")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  grade->add_option("-j,--jobs", c.jobs, "Scenes graded at once")->check(CLI::PositiveNumber)->capture_default_str();
+  grade->add_option("--shard", c.shard,
+                    "Grade only shard K of N: the scenes at positions i (0-based, in sorted order)\n"
+                    "with i mod N = K - 1")
+      ->capture_default_str();
+  grade->add_option("--timeout", c.timeout, "Seconds a candidate may run on one scene")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  grade->add_option("--shard-result", c.shard_result,
+                    "Write this run's results as JSON, for `fosssim-oracle merge`");
+  grade->add_option("--diagnose-dir", c.diagnose_dir,
+                    "Write each failing scene's diagnosis (text, per-step residual table, SVG plot)");
+  grade->add_option("--work-dir", c.work_dir, "Where the per-scene temporary folders go (default $TMPDIR)");
+  grade->add_flag("--keep-work", c.keep_work, "Keep the per-scene folders with the candidate's files");
+  add_report_options(*grade, c.reports);
+}
+
+void add_merge_command(CLI::App& app, MergeCommand& c) {
+  CLI::App* merge = app.add_subcommand(
+      "merge", "Merge the --shard-result files of all shards into the reports of the whole run");
+  merge->add_option("files", c.files, "Shard result files, one per shard")->required();
+  add_report_options(*merge, c.reports);
+}
+
+void add_manifest_options(CLI::App& command, ManifestCommand& c) {
+  command.add_option("--candidate", c.candidate, "The FOSSSim executable")->capture_default_str();
+  command.add_option("--manifest", c.folder, "The manifest folder")->capture_default_str();
+  command.add_option("folders", c.scene_folders,
+                     "Scene folders (a folder that does not exist counts as empty)")
+      ->required();
+  command.add_option("-j,--jobs", c.jobs, "Scenes run at once")->check(CLI::PositiveNumber)->capture_default_str();
+  command.add_option("--timeout", c.timeout, "Seconds FOSSSim may run on one scene")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command.add_option("--work-dir", c.work_dir, "Where the per-scene temporary folders go");
+}
+
+}  // namespace
+}  // namespace fosssim
+
+int main(int argc, char** argv) {
+  using namespace fosssim;
+  CLI::App app{"fosssim-oracle: grades any simulator that speaks the course's command line\n"
+               "(CANDIDATE -s SCENE -d 0 -o FILE) with the course's exact criteria",
+               "fosssim-oracle"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "fosssim-oracle 0.1.0");
+  GradeCommand grade;
+  MergeCommand merge;
+  ManifestCommand manifest;
+  add_grade_command(app, grade);
+  add_merge_command(app, merge);
+  CLI::App* manifest_command = app.add_subcommand(
+      "manifest", "The regression store of FOSSSim's own trajectories (oracle/manifest)");
+  manifest_command->require_subcommand(1);
+  CLI::App* update = manifest_command->add_subcommand("update", "Run FOSSSim on every scene and rewrite the manifest");
+  CLI::App* check = manifest_command->add_subcommand("check", "Run FOSSSim on every scene and compare with the manifest");
+  add_manifest_options(*update, manifest);
+  add_manifest_options(*check, manifest);
+  app.footer(
+      "Exit status: 0 every scene passed (manifest: matches); 1 some scene failed (manifest:\n"
+      "differs); 2 bad command line, folder or result file; 4 a report could not be written;\n"
+      "130 interrupted.\n\n"
+      "Examples:\n"
+      "  fosssim-oracle grade --candidate build/release/bin/FOSSSim -j 2 assets \\\n"
+      "      --extra-credit extracreditassets --junit junit.xml --gradescope results.json\n"
+      "  fosssim-oracle grade --candidate ./student --shard 3/8 --shard-result s3.json assets\n"
+      "  fosssim-oracle merge s*.json --junit junit.xml --gradescope results.json\n"
+      "  fosssim-oracle manifest check --candidate build/release/bin/FOSSSim assets extracreditassets");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return kExitOk;
+  } catch (const CLI::CallForVersion&) {
+    std::cout << app.version() << "\n";
+    return kExitOk;
+  } catch (const CLI::ParseError& error) {
+    if (error.get_exit_code() == 0) {
+      std::cout << app.help("", CLI::AppFormatMode::All);
+      return kExitOk;
+    }
+    std::cerr << "fosssim-oracle: error: " << error.what()
+              << "\nRun fosssim-oracle --help (or fosssim-oracle COMMAND --help) for the options.\n";
+    return kExitBadInput;
+  }
+  if (app.got_subcommand("grade")) return run_grade(grade);
+  if (app.got_subcommand("merge")) return run_merge(merge);
+  if (update->parsed()) return run_manifest_update(manifest);
+  if (check->parsed()) return run_manifest_check(manifest);
+  return kExitBadInput;
+}

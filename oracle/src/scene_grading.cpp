@@ -1,0 +1,187 @@
+#include "scene_grading.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/text.h"
+#include "diagnosis.h"
+#include "io/scene_loader.h"
+#include "printable_text.h"
+
+namespace fosssim {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string vector_text(const Vector& x, int begin, int dim) {
+  std::string text = "(";
+  for (int c = 0; c < dim; ++c) text += (c ? ", " : "") + to_text(x[begin + c]);
+  return text + ")";
+}
+
+void take_grade(const GradeReport& report, int dim, SceneResult& result) {
+  result.residuals = Residuals{report.accumulated_position, report.accumulated_velocity,
+                               report.max_position, report.max_velocity};
+  if (const auto& d = report.first_divergence) {
+    result.first_divergence =
+        DivergencePoint{d->step, d->particle, d->position_residual, d->velocity_residual};
+  }
+  result.verdict = report.passed() ? Verdict::kPassed : Verdict::kFailed;
+  if (!report.passed()) {
+    result.reason = failure_reason(report);
+    result.details = failure_details(report, dim);
+  }
+}
+
+/// Grades the checked trajectory of a run; fills verdict, residuals and explanation.
+const GradeReport* grade_file(const Scene& scene, const std::string& path, SceneResult& result,
+                              std::optional<GradeReport>& kept) {
+  auto file = TrajectoryReader::open(path, scene.model.num_dofs());
+  if (!file) {
+    result.verdict = Verdict::kNoOutput;
+    result.reason = file.error();
+    return nullptr;
+  }
+  if (auto bad = find_non_finite(*file, scene.model.dim)) {
+    result.verdict = Verdict::kGarbage;
+    result.reason = "the trajectory holds a non-finite value: " + *bad;
+    return nullptr;
+  }
+  auto report = grade_trajectory(scene, *file);
+  if (!report) {
+    result.verdict = Verdict::kShort;
+    result.reason = report.error();
+    return nullptr;
+  }
+  take_grade(*report, scene.model.dim, result);
+  kept = std::move(report).value();
+  return &*kept;
+}
+
+}  // namespace
+
+std::optional<std::string> find_non_finite(TrajectoryReader& file, int dim) {
+  Vector q, v;
+  for (std::int64_t k = 0; k < file.num_frames(); ++k) {
+    file.read_frame(k, q, v);
+    if (q.allFinite() && v.allFinite()) continue;
+    for (int p = 0; p * dim < q.size(); ++p) {
+      const bool bad_q = !q.segment(dim * p, dim).allFinite();
+      if (bad_q || !v.segment(dim * p, dim).allFinite()) {
+        return "frame " + std::to_string(k) + ", particle " + std::to_string(p) + ": " +
+               (bad_q ? "position " + vector_text(q, dim * p, dim)
+                      : "velocity " + vector_text(v, dim * p, dim));
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+std::string failure_reason(const GradeReport& report) {
+  if (report.reference_failure) return *report.reference_failure;
+  std::string reason;
+  const auto add = [&reason](bool passed, const char* name, double value, double limit) {
+    if (passed) return;
+    reason += (reason.empty() ? "" : ", ") + std::string(name) + " " + to_text(value) +
+              " (limit " + to_text(limit) + ")";
+  };
+  const GradingCriteria& c = report.criteria;
+  add(report.accumulated_position_passed(), "Accumulated Position Residual",
+      report.accumulated_position, c.accumulated_limit);
+  add(report.accumulated_velocity_passed(), "Accumulated Velocity Residual",
+      report.accumulated_velocity, c.accumulated_limit);
+  add(report.max_position_passed(), "Maximum Position Residual", report.max_position,
+      c.maximum_limit);
+  add(report.max_velocity_passed(), "Maximum Velocity Residual", report.max_velocity,
+      c.maximum_limit);
+  if (const auto& d = report.first_divergence) {
+    reason += "; first divergence at step " + std::to_string(d->step) + ", particle " +
+              std::to_string(d->particle);
+  }
+  return reason;
+}
+
+std::string failure_details(const GradeReport& report, int dim) {
+  std::ostringstream out;
+  out << describe_failure(report, dim);
+  const auto beats = [](double a, double b) { return std::isnan(a) ? !std::isnan(b) : a > b; };
+  std::int64_t over = 0, first_over = 0, last_over = 0, worst_step = 0;
+  double worst = -1.0;
+  for (const StepResidual& r : report.per_step) {
+    const bool exceeds = !(r.max_position < report.criteria.maximum_limit &&
+                           r.max_velocity < report.criteria.maximum_limit);
+    if (exceeds) {
+      if (over++ == 0) first_over = r.step;
+      last_over = r.step;
+    }
+    for (double m : {r.max_position, r.max_velocity}) {
+      if (beats(m, worst)) {
+        worst = m;
+        worst_step = r.step;
+      }
+    }
+  }
+  if (over > 0) {
+    out << "Steps at or above the maximum limit: " << over << " of " << report.steps
+        << " (from step " << first_over << " to step " << last_over << ")\n";
+  }
+  if (worst_step > 0) {
+    out << "Largest single residual: " << to_text(worst) << " at step " << worst_step << "\n";
+  }
+  return out.str();
+}
+
+SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) {
+  SceneResult result;
+  result.name = entry.name;
+  result.extra_credit = entry.extra_credit;
+  auto loaded = load_scene_file(entry.path);
+  if (!loaded) {
+    result.verdict = Verdict::kSceneError;
+    result.details = printable_text(loaded.error().what());
+    result.reason = first_line(result.details);
+    return result;
+  }
+  const Scene& scene = *loaded;
+  const SceneModel& model = scene.model;
+  result.integrator = integrator_name(model.integrator.kind);
+  result.dim = model.dim;
+  result.particles = model.num_particles();
+  result.steps = model.num_steps();
+  result.dt = model.integrator.dt;
+  const std::int64_t expected_bytes = (result.steps + 1) * trajectory_frame_bytes(model.num_dofs());
+
+  std::optional<GradeReport> report;
+  try {
+    WorkFolder work(options.work_dir);
+    if (options.keep_work) work.keep();
+    const CandidateRun run = run_candidate(entry.path, expected_bytes, options.run, work);
+    result.run_seconds = run.seconds;
+    result.stderr_tail = run.stderr_tail;
+    if (run.problem) {
+      result.verdict = *run.problem;
+      result.reason = run.reason;
+    } else {
+      const auto start = std::chrono::steady_clock::now();
+      grade_file(scene, run.trajectory_path, result, report);
+      result.grade_seconds = seconds_since(start);
+    }
+    if (options.keep_work) result.details += "The candidate's folder was kept: " + work.path() + "\n";
+  } catch (const std::exception& error) {
+    result.verdict = Verdict::kCannotRun;
+    result.reason = std::string("the oracle could not run this scene: ") + error.what();
+  }
+  if (!result.passed() && !options.diagnose_dir.empty()) {
+    if (auto problem = write_diagnosis(options.diagnose_dir, result, report ? &*report : nullptr)) {
+      result.details += "(could not write the diagnosis files: " + *problem + ")\n";
+    }
+  }
+  return result;
+}
+
+}  // namespace fosssim

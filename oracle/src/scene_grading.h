@@ -1,0 +1,39 @@
+#pragma once
+// Grading one scene end to end: load it, run the candidate, check the file, replay it with the
+// course's exact criteria (fosssim_grading), explain a failure.
+
+#include <optional>
+#include <string>
+
+#include "candidate_run.h"
+#include "grading/grader.h"
+#include "io/trajectory_file.h"
+#include "scene_list.h"
+#include "scene_result.h"
+
+namespace fosssim {
+
+struct GradingOptions {
+  CandidateRunOptions run;
+  std::string work_dir;      ///< parent of the per-scene temporary folders; empty: system default
+  bool keep_work = false;    ///< keep each scene's folder (with the candidate's out.bin)
+  std::string diagnose_dir;  ///< where failing scenes' diagnosis files go; empty: none
+};
+
+/// Grades one scene. Never throws for a problem of the candidate: every such problem becomes
+/// the scene's verdict with a reason. A scene file that cannot be loaded is kSceneError.
+SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options);
+
+/// Where a trajectory first holds a NaN or infinite value, as
+/// "frame 12, particle 3: velocity (nan, 0)"; nothing when every value is finite.
+std::optional<std::string> find_non_finite(TrajectoryReader& file, int dim);
+
+/// One line naming the criteria a graded trajectory misses, with the first divergence:
+/// "Maximum Position Residual 1e-09 (limit 1e-10); first divergence at step 17, particle 2".
+std::string failure_reason(const GradeReport& report);
+
+/// Several lines for a graded failure: describe_failure() of the grading library, then how many
+/// steps exceed the maximum limit and which step is worst.
+std::string failure_details(const GradeReport& report, int dim);
+
+}  // namespace fosssim

@@ -1,0 +1,49 @@
+#pragma once
+// Which scenes a run grades: the scene files under the given folders, named so that the name is
+// the same on every machine, sorted, and split into shards.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/expected.h"
+
+namespace fosssim {
+
+/// One scene to grade.
+struct SceneEntry {
+  /// The folder's own name followed by the path inside it, with '/' separators:
+  /// "assets/t1m1/springs_single.xml". Independent of where the folder lies, so that shards run
+  /// on different machines name scenes alike.
+  std::string name;
+  std::string path;           ///< where the file is on this machine (absolute)
+  bool extra_credit = false;  ///< found under an --extra-credit folder
+  /// The report group: the name of the folder that holds the file ("assets/t1m1").
+  std::string suite() const;
+};
+
+/// Finds every "*.xml" file under `folders` (searched recursively; a file argument is taken as
+/// one scene) and under `extra_credit_folders`, sorted by name with regular scenes first.
+/// Fails with a message when a folder does not exist (unless `missing_folders_are_empty`) or
+/// when two scenes would get the same name.
+Expected<std::vector<SceneEntry>, std::string> discover_scenes(
+    const std::vector<std::string>& folders, const std::vector<std::string>& extra_credit_folders,
+    bool missing_folders_are_empty = false);
+
+/// Shard K of N (1 <= K <= N): the scenes at positions i (0-based, in the sorted list) with
+/// i mod N == K - 1. Round robin spreads long scenes of one folder over all shards.
+struct Shard {
+  int index = 1;
+  int count = 1;
+  bool contains(std::size_t position) const {
+    return static_cast<int>(position % static_cast<std::size_t>(count)) == index - 1;
+  }
+};
+
+/// Parses "K/N"; the message says what is wrong.
+Expected<Shard, std::string> parse_shard(const std::string& text);
+
+/// The entries of `all` that belong to `shard`, in order.
+std::vector<SceneEntry> select_shard(const std::vector<SceneEntry>& all, const Shard& shard);
+
+}  // namespace fosssim

@@ -1,0 +1,152 @@
+// The fosssim-oracle executable end to end: grading the test suite, sharding and merging,
+// diagnosis files, exit statuses and the manifest commands.
+
+#include <gtest/gtest.h>
+#include <tinyxml2.h>
+
+#include <nlohmann/json.hpp>
+#include <regex>
+
+#include "test_support.h"
+
+namespace fosssim {
+namespace {
+
+using testing::TemporaryFolder;
+
+ChildOutcome oracle(std::vector<std::string> arguments) {
+  arguments.insert(arguments.begin(), testing::kOracle);
+  return testing::run_program(arguments);
+}
+
+/// The report without its timings, which differ from run to run.
+std::string without_times(const std::string& report) {
+  static const std::regex xml_time(" time=\"[0-9.]+\"");
+  static const std::regex json_time("\"execution_time\": [0-9]+");
+  return std::regex_replace(std::regex_replace(report, xml_time, ""), json_time, "");
+}
+
+void use_perturbing_candidate() {
+  testing::set_env("FOSSSIM", testing::kFossSim);
+  testing::set_env("PERTURB_TOOL", testing::kPerturbTool);
+  testing::set_env("PERTURB_FRAME", "17");
+  testing::set_env("PERTURB_PARTICLE", "2");
+  testing::set_env("PERTURB_COMPONENT", "0");
+  testing::set_env("PERTURB_DELTA", "1e-9");
+}
+
+TEST(OracleCommand, GradesTheSuiteAndWritesBothReports) {
+  TemporaryFolder out;
+  const ChildOutcome run = oracle({"grade", "--candidate", testing::kFossSim, "-j", "2",
+                                   testing::kAssets, "--extra-credit", testing::kExtraCredit,
+                                   "--junit", out / "reports/junit.xml", "--gradescope",
+                                   out / "reports/results.json"});
+  EXPECT_EQ(run.exit_status, 0) << run.stdout_tail << run.stderr_tail;
+  EXPECT_NE(run.stdout_tail.find("assets/implicit/orbit_implicit.xml"), std::string::npos);
+  EXPECT_NE(run.stdout_tail.find("Regular scenes: 4 of 4 passed; extra credit: 1 of 1 passed."),
+            std::string::npos) << run.stdout_tail;
+  EXPECT_NE(run.stderr_tail.find("[5/5] PASS"), std::string::npos) << run.stderr_tail;
+  tinyxml2::XMLDocument junit;
+  ASSERT_EQ(junit.LoadFile((out / "reports/junit.xml").c_str()), tinyxml2::XML_SUCCESS);
+  EXPECT_EQ(junit.RootElement()->IntAttribute("tests"), 5);
+  const auto results = nlohmann::json::parse(testing::read_bytes(out / "reports/results.json"));
+  EXPECT_EQ(results.at("score").get<double>(), 5.0);
+  EXPECT_FALSE(std::filesystem::exists(out / "reports/junit.xml.partial"));
+}
+
+TEST(OracleCommand, MergedShardsGiveTheSameReportsAsOneRun) {
+  TemporaryFolder out;
+  use_perturbing_candidate();
+  const std::string candidate = testing::candidate("perturbing_candidate.sh");
+  const std::vector<std::string> suite = {testing::kAssets, "--extra-credit", testing::kExtraCredit};
+  auto grade = [&](std::vector<std::string> extra) {
+    std::vector<std::string> arguments = {"grade", "-q", "--candidate", candidate};
+    arguments.insert(arguments.end(), suite.begin(), suite.end());
+    arguments.insert(arguments.end(), extra.begin(), extra.end());
+    return oracle(arguments);
+  };
+  const ChildOutcome whole = grade({"-j", "2", "--junit", out / "whole.xml", "--gradescope", out / "whole.json"});
+  EXPECT_EQ(whole.exit_status, 1) << whole.stderr_tail;  // the perturbed scenes fail
+  for (const char* shard : {"1/3", "2/3", "3/3"}) {
+    const std::string name = std::string("shard") + shard[0] + ".json";
+    const ChildOutcome part = grade({"--shard", shard, "--shard-result", out / name});
+    EXPECT_NE(part.exit_status, 2) << part.stderr_tail;
+  }
+  const ChildOutcome merged = oracle({"merge", out / "shard3.json", out / "shard1.json", out / "shard2.json",
+                                      "--junit", out / "merged.xml", "--gradescope", out / "merged.json"});
+  EXPECT_EQ(merged.exit_status, 1) << merged.stderr_tail;
+  EXPECT_EQ(without_times(testing::read_bytes(out / "merged.xml")),
+            without_times(testing::read_bytes(out / "whole.xml")));
+  EXPECT_EQ(without_times(testing::read_bytes(out / "merged.json")),
+            without_times(testing::read_bytes(out / "whole.json")));
+  // The perturbed explicit chain fails at the perturbed step in the merged reports too.
+  EXPECT_NE(testing::read_bytes(out / "merged.xml").find("first divergence at step 17, particle 2"),
+            std::string::npos);
+  // A missing shard is refused.
+  const ChildOutcome incomplete = oracle({"merge", out / "shard1.json", out / "shard3.json"});
+  EXPECT_EQ(incomplete.exit_status, 2);
+  EXPECT_NE(incomplete.stderr_tail.find("the shards 2/3 are missing"), std::string::npos);
+}
+
+TEST(OracleCommand, DiagnosesAFailingSceneInItsFolder) {
+  TemporaryFolder out;
+  use_perturbing_candidate();
+  const ChildOutcome run = oracle({"grade", "-q", "--candidate", testing::candidate("perturbing_candidate.sh"),
+                                   testing::kChainScene, "--diagnose-dir", out / "diagnosis"});
+  EXPECT_EQ(run.exit_status, 1);
+  EXPECT_NE(run.stdout_tail.find("FAIL"), std::string::npos);
+  EXPECT_NE(run.stdout_tail.find("step 17, particle 2"), std::string::npos) << run.stdout_tail;
+  for (const char* suffix : {".diagnosis.txt", ".residuals.tsv", ".residuals.svg"}) {
+    EXPECT_TRUE(std::filesystem::exists(out / (std::string("diagnosis/spring_chain_explicit") + suffix)))
+        << suffix;
+  }
+}
+
+TEST(OracleCommand, ExitStatusesForBadInput) {
+  EXPECT_EQ(oracle({"grade", "--candidate", testing::kFossSim, "--shard", "3/2", testing::kAssets}).exit_status, 2);
+  EXPECT_EQ(oracle({"grade", "--candidate", testing::kFossSim, "/no/such/folder"}).exit_status, 2);
+  EXPECT_EQ(oracle({"grade", testing::kAssets}).exit_status, 2);  // --candidate is required
+  EXPECT_EQ(oracle({"nonsense"}).exit_status, 2);
+  EXPECT_EQ(oracle({"--help"}).exit_status, 0);
+  // A candidate that is not there fails every scene, but the run completes and reports.
+  TemporaryFolder out;
+  const ChildOutcome missing = oracle({"grade", "-q", "--candidate", out / "nothing", testing::kAssets,
+                                       "--junit", out / "junit.xml"});
+  EXPECT_EQ(missing.exit_status, 1);
+  EXPECT_NE(missing.stdout_tail.find("CANNOT-RUN"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(out / "junit.xml"));
+}
+
+TEST(OracleCommand, ManifestUpdateThenCheckAndADetectedChange) {
+  TemporaryFolder out;
+  const std::string manifest = out / "manifest";
+  const ChildOutcome update = oracle({"manifest", "update", "--candidate", testing::kFossSim, "--manifest",
+                                      manifest, testing::kAssets, testing::kExtraCredit, out / "absent"});
+  ASSERT_EQ(update.exit_status, 0) << update.stderr_tail;
+  const ChildOutcome check = oracle({"manifest", "check", "--candidate", testing::kFossSim, "--manifest",
+                                     manifest, "-j", "2", testing::kAssets, testing::kExtraCredit});
+  EXPECT_EQ(check.exit_status, 0) << check.stdout_tail;
+  EXPECT_NE(check.stdout_tail.find("All 5 scenes match"), std::string::npos);
+  // Checking only some folders reports the others' entries as gone.
+  const ChildOutcome partial = oracle({"manifest", "check", "--candidate", testing::kFossSim, "--manifest",
+                                       manifest, testing::kAssets});
+  EXPECT_EQ(partial.exit_status, 1);
+  EXPECT_NE(partial.stdout_tail.find("extracreditassets/vortex/vortex_symplectic.xml: in the manifest"),
+            std::string::npos) << partial.stdout_tail;
+  // A trajectory that changes by one bit while the manifest does not fails the check.
+  testing::set_env("FOSSSIM", testing::kFossSim);
+  testing::set_env("PERTURB_TOOL", testing::kPerturbTool);
+  testing::set_env("PERTURB_FRAME", "5");
+  testing::set_env("PERTURB_PARTICLE", "0");
+  testing::set_env("PERTURB_COMPONENT", "3");
+  testing::set_env("PERTURB_DELTA", "flip-bit");
+  const ChildOutcome changed = oracle({"manifest", "check", "--candidate", testing::candidate("perturbing_candidate.sh"),
+                                       "--manifest", manifest, testing::kAssets, testing::kExtraCredit});
+  EXPECT_EQ(changed.exit_status, 1);
+  EXPECT_NE(changed.stdout_tail.find("the trajectory changed"), std::string::npos) << changed.stdout_tail;
+  EXPECT_NE(changed.stdout_tail.find("cmake --build --preset release --target oracle-manifest"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace fosssim

@@ -1,0 +1,267 @@
+// The oracle on real candidates: FOSSSim itself, a deliberately wrong one, and every way a
+// candidate can misbehave. Each must give its verdict with a clear reason, never stop the run.
+
+#include "scene_grading.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <sstream>
+
+#include "batch.h"
+#include "test_support.h"
+
+namespace fosssim {
+namespace {
+
+using testing::TemporaryFolder;
+
+SceneEntry chain_scene() { return {"assets/basics/spring_chain_explicit.xml", testing::kChainScene, false}; }
+
+GradingOptions options_for(const std::string& candidate, const TemporaryFolder& work) {
+  GradingOptions options;
+  options.run.candidate = candidate;
+  options.run.timeout_seconds = 30.0;
+  options.work_dir = work.path();
+  return options;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+/// The tab-separated fields of the line of `table` whose first field is `key`.
+std::vector<std::string> tsv_row(const std::string& table, const std::string& key) {
+  std::istringstream lines(table);
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::vector<std::string> fields;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, '\t');) fields.push_back(cell);
+    if (!fields.empty() && fields[0] == key) return fields;
+  }
+  return {};
+}
+
+TEST(GradeScene, FossSimPassesEveryTestSceneWithZeroResiduals) {
+  TemporaryFolder work;
+  auto scenes = discover_scenes({testing::kAssets}, {testing::kExtraCredit});
+  ASSERT_TRUE(scenes);
+  const auto results = grade_scenes(*scenes, options_for(testing::kFossSim, work), 2);
+  ASSERT_EQ(results.size(), 5u);
+  for (const SceneResult& r : results) {
+    EXPECT_EQ(r.verdict, Verdict::kPassed) << r.name << ": " << r.reason;
+    ASSERT_TRUE(r.residuals);
+    EXPECT_EQ(r.residuals->max_position, 0.0);  // same code, same bits
+    EXPECT_EQ(r.residuals->max_velocity, 0.0);
+  }
+  EXPECT_EQ(results[3].integrator, "implicit-euler");
+  EXPECT_EQ(results[3].dim, 3);
+  EXPECT_EQ(results[0].steps, 50);
+  // The work folders are gone.
+  EXPECT_TRUE(std::filesystem::is_empty(work.path()));
+}
+
+TEST(GradeScene, PerturbedCandidateFailsAtExactlyThePerturbedStepAndParticle) {
+  TemporaryFolder work, diagnosis;
+  testing::set_env("FOSSSIM", testing::kFossSim);
+  testing::set_env("PERTURB_TOOL", testing::kPerturbTool);
+  testing::set_env("PERTURB_FRAME", "17");
+  testing::set_env("PERTURB_PARTICLE", "2");
+  testing::set_env("PERTURB_COMPONENT", "1");  // position y
+  testing::set_env("PERTURB_DELTA", "1e-9");
+  GradingOptions options = options_for(testing::candidate("perturbing_candidate.sh"), work);
+  options.diagnose_dir = diagnosis.path();
+  const SceneResult r = grade_scene(chain_scene(), options);
+  EXPECT_EQ(r.verdict, Verdict::kFailed);
+  ASSERT_TRUE(r.first_divergence);
+  EXPECT_EQ(r.first_divergence->step, 17);
+  EXPECT_EQ(r.first_divergence->particle, 2);
+  EXPECT_NEAR(r.first_divergence->position_residual, 1e-9, 1e-15);
+  EXPECT_EQ(r.first_divergence->velocity_residual, 0.0);  // frame 16 is intact, so is v at 17
+  EXPECT_TRUE(contains(r.reason, "first divergence at step 17, particle 2")) << r.reason;
+  EXPECT_TRUE(contains(r.details, "First divergence at step 17, particle 2")) << r.details;
+  EXPECT_TRUE(contains(r.details, "reference step")) << r.details;
+  // Diagnosis files: text, per-step table and plot.
+  const std::string stem = diagnosis / "assets/basics/spring_chain_explicit";
+  const std::string text = testing::read_bytes(stem + ".diagnosis.txt");
+  EXPECT_TRUE(contains(text, "First divergence at step 17, particle 2")) << text;
+  const auto row = tsv_row(testing::read_bytes(stem + ".residuals.tsv"), "16");
+  ASSERT_EQ(row.size(), 8u);
+  EXPECT_EQ(row[2], "0");  // step 16 is still exact
+  const auto failing = tsv_row(testing::read_bytes(stem + ".residuals.tsv"), "17");
+  ASSERT_EQ(failing.size(), 8u);
+  EXPECT_NEAR(std::stod(failing[2]), 1e-9, 1e-15);
+  EXPECT_EQ(failing[3], "2");
+  const std::string svg = testing::read_bytes(stem + ".residuals.svg");
+  EXPECT_TRUE(contains(svg, "first divergence: step 17"));
+}
+
+TEST(GradeScene, PerturbationBelowTheLimitPasses) {
+  TemporaryFolder work;
+  testing::set_env("FOSSSIM", testing::kFossSim);
+  testing::set_env("PERTURB_TOOL", testing::kPerturbTool);
+  testing::set_env("PERTURB_FRAME", "17");
+  testing::set_env("PERTURB_PARTICLE", "2");
+  testing::set_env("PERTURB_COMPONENT", "0");
+  testing::set_env("PERTURB_DELTA", "1e-12");
+  const SceneResult r = grade_scene(chain_scene(), options_for(testing::candidate("perturbing_candidate.sh"), work));
+  EXPECT_EQ(r.verdict, Verdict::kPassed) << r.reason;
+  ASSERT_TRUE(r.residuals);
+  EXPECT_GT(r.residuals->max_position, 0.0);
+  EXPECT_LT(r.residuals->max_position, 1e-10);
+}
+
+/// Grades the chain scene with file_copying_candidate.sh writing `bytes`.
+SceneResult grade_copied(const std::string& bytes, const TemporaryFolder& work, int exit_status = 0,
+                         const std::string& stderr_text = "") {
+  const std::string file = work / "prepared.bin";
+  testing::write_bytes(file, bytes);
+  testing::set_env("ORACLE_TEST_TRAJECTORY", file);
+  testing::set_env("ORACLE_TEST_EXIT", std::to_string(exit_status));
+  testing::set_env("ORACLE_TEST_STDERR", stderr_text);
+  return grade_scene(chain_scene(), options_for(testing::candidate("file_copying_candidate.sh"), work));
+}
+
+TEST(GradeScene, CopiedCorrectTrajectoryPasses) {
+  TemporaryFolder work;
+  EXPECT_EQ(grade_copied(testing::fosssim_trajectory(testing::kChainScene, work), work).verdict,
+            Verdict::kPassed);
+}
+
+TEST(GradeScene, ShortFileFails) {
+  TemporaryFolder work;
+  const std::string good = testing::fosssim_trajectory(testing::kChainScene, work);
+  const SceneResult whole_frames = grade_copied(good.substr(0, good.size() / 2), work);
+  EXPECT_EQ(whole_frames.verdict, Verdict::kShort);
+  EXPECT_TRUE(contains(whole_frames.reason, "3264 bytes, but the scene needs 6528")) << whole_frames.reason;
+  const SceneResult cut_frame = grade_copied(good.substr(0, good.size() - 5), work);
+  EXPECT_EQ(cut_frame.verdict, Verdict::kShort);
+}
+
+TEST(GradeScene, OversizedFileFailsWithoutBeingRead) {
+  TemporaryFolder work;
+  const std::string good = testing::fosssim_trajectory(testing::kChainScene, work);
+  const SceneResult r = grade_copied(good + good.substr(0, 128), work);
+  EXPECT_EQ(r.verdict, Verdict::kOversized);
+  EXPECT_TRUE(contains(r.reason, "6656 bytes")) << r.reason;
+}
+
+TEST(GradeScene, RunawayWriterIsStoppedAndFailsAsOversized) {
+  TemporaryFolder work;
+  const SceneResult r =
+      grade_scene(chain_scene(), options_for(testing::candidate("runaway_candidate.sh"), work));
+  EXPECT_EQ(r.verdict, Verdict::kOversized) << r.reason;
+  EXPECT_LT(r.run_seconds, 20.0);
+}
+
+TEST(GradeScene, NanFileIsGarbage) {
+  TemporaryFolder work;
+  std::string bytes = testing::fosssim_trajectory(testing::kChainScene, work);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // Frame 9, particle 1, velocity y: frame = 16 doubles, velocities start at double 8.
+  std::memcpy(bytes.data() + 8 * (16 * 9 + 8 + 2 * 1 + 1), &nan, sizeof(nan));
+  const SceneResult r = grade_copied(bytes, work);
+  EXPECT_EQ(r.verdict, Verdict::kGarbage);
+  EXPECT_TRUE(contains(r.reason, "frame 9, particle 1: velocity (")) << r.reason;
+  EXPECT_TRUE(contains(r.reason, "nan")) << r.reason;
+}
+
+TEST(GradeScene, RandomBytesFailAtTheFirstStep) {
+  TemporaryFolder work;
+  std::mt19937_64 random(12345);
+  std::uniform_real_distribution<double> value(-10.0, 10.0);
+  std::string bytes(6528, '\0');
+  for (std::size_t k = 0; k < bytes.size() / 8; ++k) {
+    const double x = value(random);
+    std::memcpy(bytes.data() + 8 * k, &x, sizeof(x));
+  }
+  const SceneResult r = grade_copied(bytes, work);
+  EXPECT_EQ(r.verdict, Verdict::kFailed);
+  ASSERT_TRUE(r.first_divergence);
+  EXPECT_EQ(r.first_divergence->step, 1);
+  const SceneResult odd = grade_copied(bytes.substr(0, 1001), work);
+  EXPECT_EQ(odd.verdict, Verdict::kShort);
+}
+
+TEST(GradeScene, NonZeroExitFailsEvenWithAGoodFileAndKeepsStandardError) {
+  TemporaryFolder work;
+  const SceneResult r = grade_copied(testing::fosssim_trajectory(testing::kChainScene, work), work, 3,
+                                     "solver <exploded> & \"died\"");
+  EXPECT_EQ(r.verdict, Verdict::kExitStatus);
+  EXPECT_TRUE(contains(r.reason, "exited with status 3"));
+  EXPECT_EQ(r.stderr_tail, "solver <exploded> & \"died\"");
+}
+
+TEST(GradeScene, NoFileFails) {
+  TemporaryFolder work;
+  testing::set_env("ORACLE_TEST_TRAJECTORY", "");
+  testing::set_env("ORACLE_TEST_EXIT", "0");
+  const SceneResult r =
+      grade_scene(chain_scene(), options_for(testing::candidate("file_copying_candidate.sh"), work));
+  EXPECT_EQ(r.verdict, Verdict::kNoOutput);
+  EXPECT_TRUE(contains(r.reason, "wrote no trajectory")) << r.reason;
+}
+
+TEST(GradeScene, CrashFailsWithTheSignal) {
+  TemporaryFolder work;
+  const SceneResult r =
+      grade_scene(chain_scene(), options_for(testing::candidate("crashing_candidate.sh"), work));
+  EXPECT_EQ(r.verdict, Verdict::kCrashed);
+  EXPECT_TRUE(contains(r.reason, "SIGSEGV")) << r.reason;
+  EXPECT_EQ(r.stderr_tail, "about to crash");
+}
+
+TEST(GradeScene, HangIsKilledAtTheTimeout) {
+  TemporaryFolder work;
+  GradingOptions options = options_for(testing::candidate("hanging_candidate.sh"), work);
+  options.run.timeout_seconds = 0.5;
+  const SceneResult r = grade_scene(chain_scene(), options);
+  EXPECT_EQ(r.verdict, Verdict::kTimedOut);
+  EXPECT_TRUE(contains(r.reason, "timeout of 0.5 s")) << r.reason;
+  EXPECT_LT(r.run_seconds, 5.0);
+}
+
+TEST(GradeScene, MissingAndNonExecutableCandidatesFailEveryScene) {
+  TemporaryFolder work;
+  const SceneResult missing = grade_scene(chain_scene(), options_for(work / "no-such-simulator", work));
+  EXPECT_EQ(missing.verdict, Verdict::kCannotRun);
+  EXPECT_TRUE(contains(missing.reason, "does not exist")) << missing.reason;
+  testing::write_bytes(work / "not-executable.sh", "#!/bin/sh\nexit 0\n");
+  const SceneResult denied = grade_scene(chain_scene(), options_for(work / "not-executable.sh", work));
+  EXPECT_EQ(denied.verdict, Verdict::kCannotRun);
+  EXPECT_TRUE(contains(denied.reason, "not executable")) << denied.reason;
+}
+
+TEST(GradeScene, BrokenSceneIsASceneError) {
+  TemporaryFolder work;
+  testing::write_bytes(work / "broken.xml", "<scene><particle m=\"1\"/></scene>");
+  const SceneResult r = grade_scene({"x/broken.xml", work / "broken.xml", false},
+                                    options_for(testing::kFossSim, work));
+  EXPECT_EQ(r.verdict, Verdict::kSceneError);
+  EXPECT_TRUE(contains(r.reason, "broken.xml")) << r.reason;
+}
+
+TEST(GradeScenes, OneBadCandidateRunDoesNotStopTheBatch) {
+  // The crashing candidate fails every scene, each with its reason, and all are reported.
+  TemporaryFolder work;
+  auto scenes = discover_scenes({testing::kAssets}, {testing::kExtraCredit});
+  ASSERT_TRUE(scenes);
+  std::size_t finished = 0;
+  const auto results = grade_scenes(*scenes, options_for(testing::candidate("crashing_candidate.sh"), work), 2,
+                                    [&finished](const SceneResult&, std::size_t done, std::size_t total) {
+                                      EXPECT_EQ(done, ++finished);
+                                      EXPECT_EQ(total, 5u);
+                                    });
+  ASSERT_EQ(results.size(), 5u);
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    EXPECT_EQ(results[k].name, (*scenes)[k].name);  // in scene order, whatever finished first
+    EXPECT_EQ(results[k].verdict, Verdict::kCrashed);
+  }
+}
+
+}  // namespace
+}  // namespace fosssim

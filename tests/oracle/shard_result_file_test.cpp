@@ -1,0 +1,114 @@
+#include "shard_result_file.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "gradescope_report.h"
+#include "junit_report.h"
+#include "printable_text.h"
+#include "report_samples.h"
+
+namespace fosssim {
+namespace {
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(a)) == 0; }
+
+TEST(ShardResultFile, RoundTripsEveryFieldBitForBit) {
+  GradingRun run = testing::sample_run();
+  run.results[1].residuals->accumulated_position = 0.1 + 0.2;  // not a short decimal
+  run.results[1].residuals->accumulated_velocity = -HUGE_VAL;
+  auto parsed = parse_shard_result(shard_result_json(run), "test");
+  ASSERT_TRUE(parsed) << parsed.error();
+  EXPECT_EQ(parsed->candidate, run.candidate);
+  EXPECT_EQ(parsed->scenes, run.scenes);
+  ASSERT_EQ(parsed->results.size(), run.results.size());
+  for (std::size_t k = 0; k < run.results.size(); ++k) {
+    const SceneResult& a = run.results[k];
+    const SceneResult& b = parsed->results[k];
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.verdict, b.verdict);
+    EXPECT_EQ(printable_text(a.reason), b.reason);  // texts are stored printable
+    EXPECT_EQ(printable_text(a.stderr_tail), b.stderr_tail);
+    EXPECT_EQ(a.details, b.details);
+    EXPECT_EQ(a.extra_credit, b.extra_credit);
+    EXPECT_EQ(a.residuals.has_value(), b.residuals.has_value());
+    if (a.residuals) {
+      EXPECT_TRUE(same_bits(a.residuals->accumulated_position, b.residuals->accumulated_position));
+      EXPECT_TRUE(same_bits(a.residuals->accumulated_velocity, b.residuals->accumulated_velocity));
+      EXPECT_TRUE(same_bits(a.residuals->max_position, b.residuals->max_position));
+      EXPECT_EQ(std::isnan(a.residuals->max_velocity), std::isnan(b.residuals->max_velocity));
+    }
+    EXPECT_EQ(a.first_divergence.has_value(), b.first_divergence.has_value());
+  }
+  // The reports written from the parsed run are the same bytes.
+  EXPECT_EQ(junit_xml(*parsed), junit_xml(run));
+  EXPECT_EQ(gradescope_json(*parsed), gradescope_json(run));
+}
+
+TEST(ShardResultFile, RejectsOtherFiles) {
+  EXPECT_FALSE(parse_shard_result("not json", "x"));
+  EXPECT_FALSE(parse_shard_result("{\"tests\": []}", "x"));
+  auto wrong = parse_shard_result("{\"format\": \"fosssim-oracle-results\", \"version\": 99}", "x.json");
+  ASSERT_FALSE(wrong);
+  EXPECT_NE(wrong.error().find("version 99"), std::string::npos);
+}
+
+/// Splits a run into its shards the way `grade --shard K/N` selects scenes.
+std::vector<GradingRun> split(const GradingRun& whole, int count) {
+  std::vector<GradingRun> shards;
+  for (int k = 1; k <= count; ++k) {
+    GradingRun shard = whole;
+    shard.shard = Shard{k, count};
+    shard.results.clear();
+    for (std::size_t i = 0; i < whole.results.size(); ++i) {
+      if (shard.shard.contains(i)) shard.results.push_back(whole.results[i]);
+    }
+    shards.push_back(shard);
+  }
+  return shards;
+}
+
+TEST(MergeShards, GivesTheWholeRunsReportsWhateverTheShardOrder) {
+  const GradingRun whole = testing::sample_run();
+  std::vector<GradingRun> shards = split(whole, 4);
+  std::swap(shards[0], shards[3]);
+  auto merged = merge_shards(shards, {"a", "b", "c", "d"});
+  ASSERT_TRUE(merged) << merged.error();
+  ASSERT_EQ(merged->results.size(), whole.results.size());
+  for (std::size_t k = 0; k < whole.results.size(); ++k) {
+    EXPECT_EQ(merged->results[k].name, whole.results[k].name);
+  }
+  GradingRun timeless = *merged;
+  timeless.wall_seconds = whole.wall_seconds;
+  EXPECT_EQ(junit_xml(timeless), junit_xml(whole));
+  EXPECT_EQ(gradescope_json(timeless), gradescope_json(whole));
+}
+
+TEST(MergeShards, RefusesIncompleteDuplicatedOrForeignShards) {
+  const GradingRun whole = testing::sample_run();
+  std::vector<GradingRun> shards = split(whole, 3);
+  auto missing = merge_shards({shards[0], shards[2]}, {"a", "c"});
+  ASSERT_FALSE(missing);
+  EXPECT_NE(missing.error().find("2/3 are missing"), std::string::npos) << missing.error();
+  auto twice = merge_shards({shards[0], shards[1], shards[1], shards[2]}, {"a", "b", "b2", "c"});
+  ASSERT_FALSE(twice);
+  EXPECT_NE(twice.error().find("given twice"), std::string::npos);
+  GradingRun foreign = shards[2];
+  foreign.scenes.pop_back();
+  auto other = merge_shards({shards[0], shards[1], foreign}, {"a", "b", "c"});
+  ASSERT_FALSE(other);
+  EXPECT_NE(other.error().find("lists other scenes"), std::string::npos);
+  GradingRun wrong_count = shards[2];
+  wrong_count.shard = Shard{3, 4};
+  EXPECT_FALSE(merge_shards({shards[0], shards[1], wrong_count}, {"a", "b", "c"}));
+  GradingRun lost = shards[1];
+  lost.results.pop_back();
+  auto incomplete = merge_shards({shards[0], lost, shards[2]}, {"a", "b", "c"});
+  ASSERT_FALSE(incomplete);
+  EXPECT_NE(incomplete.error().find("does not hold the result"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fosssim
