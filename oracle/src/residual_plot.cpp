@@ -10,7 +10,7 @@ namespace fosssim {
 namespace {
 
 // Canvas and plot area, in SVG user units (pixels).
-constexpr double kWidth = 760, kHeight = 420;
+constexpr double kWidth = 760, kHeight = 440;
 constexpr double kLeft = 80, kRight = 730, kTop = 56, kBottom = 360;
 
 /// One plotted column: the time and the largest residual of the steps it stands for.
@@ -93,21 +93,22 @@ std::string residual_plot_svg(const std::vector<StepResidual>& per_step,
                               const ResidualPlotOptions& options) {
   const std::vector<Column> columns =
       per_step.empty() ? std::vector<Column>{} : reduce(per_step, options.dt, options.max_points);
+  bool has_zero = false, has_non_finite = false;
+  for (const Column& c : columns) {
+    for (double v : {c.position, c.velocity}) {
+      has_zero = has_zero || v == 0.0;
+      has_non_finite = has_non_finite || !std::isfinite(v);
+    }
+  }
   const auto decades = decade_range(columns, options.limit);
-  const int low = decades.first, high = decades.second;
+  // Zeros get the bottom line of their own, one decade below the smallest residual.
+  const int low = decades.first - (has_zero ? 1 : 0), high = decades.second;
   const double end_time =
       per_step.empty() ? options.dt : std::max(static_cast<double>(per_step.back().step) * options.dt, 1e-300);
   const auto x_of = [&](double t) { return kLeft + (kRight - kLeft) * t / end_time; };
-  bool has_zero = false, has_non_finite = false;
   const auto y_of = [&](double v) {
-    if (!std::isfinite(v)) {
-      has_non_finite = true;
-      return kTop;
-    }
-    if (v <= 0.0) {
-      has_zero = true;
-      return kBottom;
-    }
+    if (!std::isfinite(v)) return kTop;
+    if (v <= 0.0) return kBottom;
     const double e = std::clamp(std::log10(v), double(low), double(high));
     return kBottom - (kBottom - kTop) * (e - low) / (high - low);
   };
@@ -125,7 +126,9 @@ std::string residual_plot_svg(const std::vector<StepResidual>& per_step,
     const double y = y_of(std::pow(10.0, e));
     svg << "<line x1=\"" << kLeft << "\" y1=\"" << number(y) << "\" x2=\"" << kRight << "\" y2=\""
         << number(y) << "\" stroke=\"#e4e4e4\"/>\n";
-    if ((high - e) % label_every == 0) {
+    if (e == low && has_zero) {
+      svg << "<text x=\"" << kLeft - 6 << "\" y=\"" << number(y + 4) << "\" text-anchor=\"end\">0</text>\n";
+    } else if ((high - e) % label_every == 0) {
       svg << "<text x=\"" << kLeft - 6 << "\" y=\"" << number(y + 4)
           << "\" text-anchor=\"end\">1e" << e << "</text>\n";
     }
@@ -137,7 +140,7 @@ std::string residual_plot_svg(const std::vector<StepResidual>& per_step,
   }
   svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << kRight - kLeft
       << "\" height=\"" << kBottom - kTop << "\" fill=\"none\" stroke=\"black\"/>\n"
-      << "<text x=\"" << (kLeft + kRight) / 2 << "\" y=\"" << kBottom + 40
+      << "<text x=\"" << (kLeft + kRight) / 2 << "\" y=\"" << kBottom + 38
       << "\" text-anchor=\"middle\">simulated time (s)</text>\n"
       << "<text transform=\"translate(18 " << (kTop + kBottom) / 2
       << ") rotate(-90)\" text-anchor=\"middle\">largest residual of the step</text>\n";
@@ -171,8 +174,8 @@ std::string residual_plot_svg(const std::vector<StepResidual>& per_step,
       << "\" y2=\"" << legend_y - 4 << "\" stroke=\"#ff7f0e\" stroke-width=\"2\"/>\n"
       << "<text x=\"" << kLeft + 140 << "\" y=\"" << legend_y << "\">velocity</text>\n";
   std::string notes;
-  if (has_zero) notes += "zero residuals drawn on the bottom edge. ";
-  if (has_non_finite) notes += "NaN or infinite residuals drawn on the top edge.";
+  if (has_zero) notes += "Exact zeros are drawn on the bottom line. ";
+  if (has_non_finite) notes += "NaN or infinite residuals are drawn on the top edge.";
   if (!notes.empty()) {
     svg << "<text x=\"" << kLeft + 230 << "\" y=\"" << legend_y << "\" fill=\"#555555\">"
         << escape_xml(notes) << "</text>\n";

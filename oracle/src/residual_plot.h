@@ -21,8 +21,8 @@ struct ResidualPlotOptions {
 };
 
 /// The SVG document (UTF-8 text): max over particles of the position and of the velocity
-/// residual at every step, y = log10(residual). Zero residuals sit on the bottom edge and
-/// non-finite ones on the top edge, both said in the legend.
+/// residual at every step, y = log10(residual). Exact zeros get a bottom line of their own,
+/// labelled 0, one decade below the smallest residual; non-finite ones sit on the top edge.
 std::string residual_plot_svg(const std::vector<StepResidual>& per_step,
                               const ResidualPlotOptions& options);
 

@@ -26,15 +26,6 @@ std::vector<ManifestEntry> compute_with(const std::string& candidate, const Temp
   return compute_manifest(test_scenes(), options, work.path(), 2);
 }
 
-void use_bit_flipper(int frame, int particle) {
-  testing::set_env("FOSSSIM", testing::kFossSim);
-  testing::set_env("PERTURB_TOOL", testing::kPerturbTool);
-  testing::set_env("PERTURB_FRAME", std::to_string(frame));
-  testing::set_env("PERTURB_PARTICLE", std::to_string(particle));
-  testing::set_env("PERTURB_COMPONENT", "0");
-  testing::set_env("PERTURB_DELTA", "flip-bit");
-}
-
 TEST(FinalStateText, OneLinePerParticleWithShortestRoundTripNumbers) {
   Vector q(4), v(4);
   q << 0.1, -2.0, 1.0 / 3.0, 0.0;
@@ -66,7 +57,7 @@ TEST(Manifest, DigestsFossSimsTrajectoriesAndRoundTripsThroughItsFolder) {
 TEST(Manifest, ASingleFlippedBitInAnyFrameIsDetected) {
   TemporaryFolder work;
   const auto golden = compute_with(testing::kFossSim, work);
-  use_bit_flipper(10, 1);  // a middle frame: the final state stays the same
+  testing::use_perturbing_candidate(10, 1, 0, "flip-bit");  // a middle frame: the final state stays the same
   const auto flipped = compute_with(testing::candidate("perturbing_candidate.sh"), work);
   const auto problems = compare_manifest(golden, flipped, kRegenerate);
   // Every scene's trajectory changed by one bit; each is named, then the hint.
@@ -81,7 +72,7 @@ TEST(Manifest, ASingleFlippedBitInAnyFrameIsDetected) {
 TEST(Manifest, AFlippedBitInTheLastFrameNamesTheParticle) {
   TemporaryFolder work;
   const auto golden = compute_with(testing::kFossSim, work);
-  use_bit_flipper(30, 1);  // the last frame of the 30-step scenes
+  testing::use_perturbing_candidate(30, 1, 0, "flip-bit");  // the last frame of the 30-step scenes
   const auto flipped = compute_with(testing::candidate("perturbing_candidate.sh"), work);
   const auto problems = compare_manifest(golden, flipped, kRegenerate);
   bool named = false;

@@ -5,7 +5,9 @@
 #include <tinyxml2.h>
 
 #include <nlohmann/json.hpp>
+#include <fstream>
 #include <regex>
+#include <thread>
 
 #include "test_support.h"
 
@@ -24,15 +26,6 @@ std::string without_times(const std::string& report) {
   static const std::regex xml_time(" time=\"[0-9.]+\"");
   static const std::regex json_time("\"execution_time\": [0-9]+");
   return std::regex_replace(std::regex_replace(report, xml_time, ""), json_time, "");
-}
-
-void use_perturbing_candidate() {
-  testing::set_env("FOSSSIM", testing::kFossSim);
-  testing::set_env("PERTURB_TOOL", testing::kPerturbTool);
-  testing::set_env("PERTURB_FRAME", "17");
-  testing::set_env("PERTURB_PARTICLE", "2");
-  testing::set_env("PERTURB_COMPONENT", "0");
-  testing::set_env("PERTURB_DELTA", "1e-9");
 }
 
 TEST(OracleCommand, GradesTheSuiteAndWritesBothReports) {
@@ -56,7 +49,7 @@ TEST(OracleCommand, GradesTheSuiteAndWritesBothReports) {
 
 TEST(OracleCommand, MergedShardsGiveTheSameReportsAsOneRun) {
   TemporaryFolder out;
-  use_perturbing_candidate();
+  testing::use_perturbing_candidate(17, 2, 0, "1e-9");
   const std::string candidate = testing::candidate("perturbing_candidate.sh");
   const std::vector<std::string> suite = {testing::kAssets, "--extra-credit", testing::kExtraCredit};
   auto grade = [&](std::vector<std::string> extra) {
@@ -90,7 +83,7 @@ TEST(OracleCommand, MergedShardsGiveTheSameReportsAsOneRun) {
 
 TEST(OracleCommand, DiagnosesAFailingSceneInItsFolder) {
   TemporaryFolder out;
-  use_perturbing_candidate();
+  testing::use_perturbing_candidate(17, 2, 0, "1e-9");
   const ChildOutcome run = oracle({"grade", "-q", "--candidate", testing::candidate("perturbing_candidate.sh"),
                                    testing::kChainScene, "--diagnose-dir", out / "diagnosis"});
   EXPECT_EQ(run.exit_status, 1);
@@ -117,6 +110,36 @@ TEST(OracleCommand, ExitStatusesForBadInput) {
   EXPECT_TRUE(std::filesystem::exists(out / "junit.xml"));
 }
 
+TEST(OracleCommand, InterruptStopsTheRunningCandidateAndWritesNoReports) {
+  TemporaryFolder out;
+  const std::string pid_file = out / "sleep.pid";
+  testing::set_env("ORACLE_TEST_PID_FILE", pid_file);
+  // Start a run on a hanging candidate, wait until the candidate is up, then press "Ctrl-C".
+  const std::string script =
+      "\"$0\" grade -q --candidate \"$1\" --junit \"$2\" \"$3\" & oracle=$!; "
+      "while [ ! -s \"$4\" ]; do sleep 0.02; done; kill -INT $oracle; wait $oracle; echo status $?";
+  const ChildOutcome run = testing::run_program(
+      {"/bin/sh", "-c", script, testing::kOracle, testing::candidate("hanging_candidate.sh"),
+       out / "junit.xml", testing::kAssets, pid_file},
+      60.0);
+  EXPECT_EQ(run.stdout_tail, "status 130\n") << run.stderr_tail;
+  EXPECT_NE(run.stderr_tail.find("interrupted; no reports written"), std::string::npos) << run.stderr_tail;
+  EXPECT_FALSE(std::filesystem::exists(out / "junit.xml"));
+  int sleeper = 0;
+  std::ifstream(pid_file) >> sleeper;
+  ASSERT_GT(sleeper, 0);
+  const std::string proc = "/proc/" + std::to_string(sleeper) + "/stat";
+  std::string state;
+  for (int k = 0; k < 100; ++k) {
+    std::ifstream stat(proc);
+    std::string pid_text, command;
+    state.clear();
+    if (!(stat >> pid_text >> command >> state) || state == "Z") break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_TRUE(state.empty() || state == "Z") << "the candidate's child survived the interrupt";
+}
+
 TEST(OracleCommand, ManifestUpdateThenCheckAndADetectedChange) {
   TemporaryFolder out;
   const std::string manifest = out / "manifest";
@@ -134,12 +157,7 @@ TEST(OracleCommand, ManifestUpdateThenCheckAndADetectedChange) {
   EXPECT_NE(partial.stdout_tail.find("extracreditassets/vortex/vortex_symplectic.xml: in the manifest"),
             std::string::npos) << partial.stdout_tail;
   // A trajectory that changes by one bit while the manifest does not fails the check.
-  testing::set_env("FOSSSIM", testing::kFossSim);
-  testing::set_env("PERTURB_TOOL", testing::kPerturbTool);
-  testing::set_env("PERTURB_FRAME", "5");
-  testing::set_env("PERTURB_PARTICLE", "0");
-  testing::set_env("PERTURB_COMPONENT", "3");
-  testing::set_env("PERTURB_DELTA", "flip-bit");
+  testing::use_perturbing_candidate(5, 0, 3, "flip-bit");
   const ChildOutcome changed = oracle({"manifest", "check", "--candidate", testing::candidate("perturbing_candidate.sh"),
                                        "--manifest", manifest, testing::kAssets, testing::kExtraCredit});
   EXPECT_EQ(changed.exit_status, 1);

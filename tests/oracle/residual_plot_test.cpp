@@ -47,7 +47,7 @@ TEST(ResidualPlot, IsWellFormedSvgWithBothSeriesTheLimitAndTheMarker) {
   EXPECT_NE(svg.find("scene &lt;&amp;&gt; &quot;quoted&quot;"), std::string::npos);
   EXPECT_NE(svg.find("maximum limit 1e-10"), std::string::npos);
   EXPECT_NE(svg.find("first divergence: step 60"), std::string::npos);
-  EXPECT_NE(svg.find("zero residuals drawn on the bottom edge"), std::string::npos);
+  EXPECT_NE(svg.find("Exact zeros are drawn on the bottom line"), std::string::npos);
   // Decades from 1e-15 (the smallest non-zero residual) to 1e-6 (the largest).
   EXPECT_NE(svg.find(">1e-15<"), std::string::npos);
   EXPECT_EQ(svg.find(">1e-16<"), std::string::npos);
@@ -70,7 +70,7 @@ TEST(ResidualPlot, LongRunsAreReducedKeepingTheLargestResidual) {
   ASSERT_EQ(document.Parse(svg.c_str()), tinyxml2::XML_SUCCESS);
   EXPECT_EQ(polyline_points(document.RootElement(), 0), 1000);
   EXPECT_NE(svg.find(">1e-3<"), std::string::npos);  // the spike set the top decade
-  EXPECT_NE(svg.find("NaN or infinite residuals drawn on the top edge"), std::string::npos);
+  EXPECT_NE(svg.find("NaN or infinite residuals are drawn on the top edge"), std::string::npos);
 }
 
 TEST(ResidualPlot, EmptyRunStillGivesADocument) {

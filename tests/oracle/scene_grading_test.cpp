@@ -29,6 +29,11 @@ GradingOptions options_for(const std::string& candidate, const TemporaryFolder& 
   return options;
 }
 
+/// Grades the explicit chain scene with one of the scripts in candidates/.
+SceneResult grade_chain_with(const std::string& script, const TemporaryFolder& work) {
+  return grade_scene(chain_scene(), options_for(testing::candidate(script), work));
+}
+
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
@@ -67,12 +72,7 @@ TEST(GradeScene, FossSimPassesEveryTestSceneWithZeroResiduals) {
 
 TEST(GradeScene, PerturbedCandidateFailsAtExactlyThePerturbedStepAndParticle) {
   TemporaryFolder work, diagnosis;
-  testing::set_env("FOSSSIM", testing::kFossSim);
-  testing::set_env("PERTURB_TOOL", testing::kPerturbTool);
-  testing::set_env("PERTURB_FRAME", "17");
-  testing::set_env("PERTURB_PARTICLE", "2");
-  testing::set_env("PERTURB_COMPONENT", "1");  // position y
-  testing::set_env("PERTURB_DELTA", "1e-9");
+  testing::use_perturbing_candidate(17, 2, 1, "1e-9");  // frame 17, particle 2, position y
   GradingOptions options = options_for(testing::candidate("perturbing_candidate.sh"), work);
   options.diagnose_dir = diagnosis.path();
   const SceneResult r = grade_scene(chain_scene(), options);
@@ -102,13 +102,8 @@ TEST(GradeScene, PerturbedCandidateFailsAtExactlyThePerturbedStepAndParticle) {
 
 TEST(GradeScene, PerturbationBelowTheLimitPasses) {
   TemporaryFolder work;
-  testing::set_env("FOSSSIM", testing::kFossSim);
-  testing::set_env("PERTURB_TOOL", testing::kPerturbTool);
-  testing::set_env("PERTURB_FRAME", "17");
-  testing::set_env("PERTURB_PARTICLE", "2");
-  testing::set_env("PERTURB_COMPONENT", "0");
-  testing::set_env("PERTURB_DELTA", "1e-12");
-  const SceneResult r = grade_scene(chain_scene(), options_for(testing::candidate("perturbing_candidate.sh"), work));
+  testing::use_perturbing_candidate(17, 2, 0, "1e-12");
+  const SceneResult r = grade_chain_with("perturbing_candidate.sh", work);
   EXPECT_EQ(r.verdict, Verdict::kPassed) << r.reason;
   ASSERT_TRUE(r.residuals);
   EXPECT_GT(r.residuals->max_position, 0.0);
@@ -123,7 +118,7 @@ SceneResult grade_copied(const std::string& bytes, const TemporaryFolder& work, 
   testing::set_env("ORACLE_TEST_TRAJECTORY", file);
   testing::set_env("ORACLE_TEST_EXIT", std::to_string(exit_status));
   testing::set_env("ORACLE_TEST_STDERR", stderr_text);
-  return grade_scene(chain_scene(), options_for(testing::candidate("file_copying_candidate.sh"), work));
+  return grade_chain_with("file_copying_candidate.sh", work);
 }
 
 TEST(GradeScene, CopiedCorrectTrajectoryPasses) {
@@ -152,8 +147,7 @@ TEST(GradeScene, OversizedFileFailsWithoutBeingRead) {
 
 TEST(GradeScene, RunawayWriterIsStoppedAndFailsAsOversized) {
   TemporaryFolder work;
-  const SceneResult r =
-      grade_scene(chain_scene(), options_for(testing::candidate("runaway_candidate.sh"), work));
+  const SceneResult r = grade_chain_with("runaway_candidate.sh", work);
   EXPECT_EQ(r.verdict, Verdict::kOversized) << r.reason;
   EXPECT_LT(r.run_seconds, 20.0);
 }
@@ -200,16 +194,14 @@ TEST(GradeScene, NoFileFails) {
   TemporaryFolder work;
   testing::set_env("ORACLE_TEST_TRAJECTORY", "");
   testing::set_env("ORACLE_TEST_EXIT", "0");
-  const SceneResult r =
-      grade_scene(chain_scene(), options_for(testing::candidate("file_copying_candidate.sh"), work));
+  const SceneResult r = grade_chain_with("file_copying_candidate.sh", work);
   EXPECT_EQ(r.verdict, Verdict::kNoOutput);
   EXPECT_TRUE(contains(r.reason, "wrote no trajectory")) << r.reason;
 }
 
 TEST(GradeScene, CrashFailsWithTheSignal) {
   TemporaryFolder work;
-  const SceneResult r =
-      grade_scene(chain_scene(), options_for(testing::candidate("crashing_candidate.sh"), work));
+  const SceneResult r = grade_chain_with("crashing_candidate.sh", work);
   EXPECT_EQ(r.verdict, Verdict::kCrashed);
   EXPECT_TRUE(contains(r.reason, "SIGSEGV")) << r.reason;
   EXPECT_EQ(r.stderr_tail, "about to crash");

@@ -79,4 +79,15 @@ inline std::string fosssim_trajectory(const std::string& scene, const TemporaryF
 /// process of its own under ctest).
 inline void set_env(const char* name, const std::string& value) { ::setenv(name, value.c_str(), 1); }
 
+/// Configures candidates/perturbing_candidate.sh: FOSSSim's trajectory with `change` ("1e-9",
+/// or "flip-bit") applied to frame `frame`, particle `particle`, component `component`.
+inline void use_perturbing_candidate(int frame, int particle, int component, const std::string& change) {
+  set_env("FOSSSIM", kFossSim);
+  set_env("PERTURB_TOOL", kPerturbTool);
+  set_env("PERTURB_FRAME", std::to_string(frame));
+  set_env("PERTURB_PARTICLE", std::to_string(particle));
+  set_env("PERTURB_COMPONENT", std::to_string(component));
+  set_env("PERTURB_DELTA", change);
+}
+
 }  // namespace fosssim::testing
