@@ -35,6 +35,47 @@ void TestScene::add_simple_gravity(const Vector& g) {
   }
 }
 
+TestScene LinearAnchoredSystem::scene(IntegratorKind kind) const {
+  TestScene out(static_cast<int>(a.size()), kind, h);
+  out.add_particle(3.0, a, u, /*fixed=*/true);
+  out.add_particle(m, x, w);
+  out.add_spring(0, 1, k, 0.0);
+  out.add_drag(c);
+  return out;
+}
+
+State LinearAnchoredSystem::backward_euler_step() const {
+  const int dim = static_cast<int>(a.size());
+  const Vector v = (m * w - h * k * (x - a) + h * h * k * u) / (m + h * c + h * h * k);
+  State out;
+  out.q.resize(2 * dim);
+  out.v.resize(2 * dim);
+  out.q << a + h * u, x + h * v;
+  out.v << u, v;
+  return out;
+}
+
+TestScene LinearPairSystem::scene(IntegratorKind kind) const {
+  TestScene out(static_cast<int>(xa.size()), kind, h);
+  out.add_particle(m, xa, va);
+  out.add_particle(m, xb, vb);
+  out.add_spring(0, 1, k, 0.0);
+  out.add_drag(c);
+  return out;
+}
+
+State LinearPairSystem::backward_euler_step() const {
+  const int dim = static_cast<int>(xa.size());
+  const Vector s = m * (va + vb) / (m + h * c);
+  const Vector r = (m * (vb - va) - 2.0 * h * k * (xb - xa)) / (m + h * c + 2.0 * h * h * k);
+  State out;
+  out.q.resize(2 * dim);
+  out.v.resize(2 * dim);
+  out.v << 0.5 * (s - r), 0.5 * (s + r);
+  out.q << xa + h * out.v.head(dim), xb + h * out.v.tail(dim);
+  return out;
+}
+
 State run_steps(const SceneModel& model, State state, std::int64_t steps) {
   const auto integrator = make_integrator(model);
   for (std::int64_t s = 0; s < steps; ++s) integrator->step(model, state);
@@ -47,6 +88,23 @@ Vector linear_momentum(const SceneModel& model, const Vector& v) {
     p += model.mass[model.dim * particle] * v.segment(model.dim * particle, model.dim);
   }
   return p;
+}
+
+void expect_close(const Vector& actual, const Vector& expected, double tolerance,
+                  const std::string& what) {
+  ASSERT_EQ(actual.size(), expected.size()) << what;
+  const double error = (actual - expected).lpNorm<Eigen::Infinity>();
+  const double scale = std::max(1.0, expected.lpNorm<Eigen::Infinity>());
+  EXPECT_LE(error, tolerance * scale) << what << "\n  actual:   " << actual.transpose()
+                                      << "\n  expected: " << expected.transpose();
+}
+
+Vector spring_force_on_j(const Vector& xi, const Vector& xj, const Vector& vi, const Vector& vj,
+                         double k, double l0, double b) {
+  const Vector d = xj - xi;
+  const double l = d.norm();
+  const Vector n = d / l;
+  return -k * (l - l0) * n - b * n.dot(vj - vi) * n;
 }
 
 double asymmetry(const Eigen::MatrixXd& A) {
@@ -193,11 +251,11 @@ class ErrorTablePrinter : public ::testing::Environment {
     std::printf("\nLargest finite-difference relative errors (library: the worst direction of\n"
                 "core/analysis/derivative_check; full-matrix: central differences written in the\n"
                 "test, relative in the Frobenius norm):\n");
-    std::printf("%-12s %-3s %-16s %-9s %-12s %-9s %s\n", "force", "dim", "configuration",
+    std::printf("%-14s %-3s %-16s %-9s %-12s %-9s %s\n", "force", "dim", "configuration",
                 "quantity", "checker", "max error", "where");
     for (const auto& [key, worst] : error_table()) {
       const auto& [force, dim, configuration, derivative, checker] = key;
-      std::printf("%-12s %dD  %-16s %-9s %-12s %.2e  %s\n", force.c_str(), dim,
+      std::printf("%-14s %dD  %-16s %-9s %-12s %.2e  %s\n", force.c_str(), dim,
                   configuration.c_str(), derivative.c_str(), checker.c_str(), worst.error,
                   worst.detail.c_str());
     }

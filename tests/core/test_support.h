@@ -87,6 +87,41 @@ State run_steps(const SceneModel& model, State state, std::int64_t steps);
 /// Total linear momentum Σ m_p v_p (size dim).
 Vector linear_momentum(const SceneModel& model, const Vector& v);
 
+/// Expects ‖actual - expected‖_∞ ≤ tolerance · max(1, ‖expected‖_∞), printing both on failure.
+void expect_close(const Vector& actual, const Vector& expected, double tolerance,
+                  const std::string& what);
+
+/// Spring force on particle j of a spring from i to j (SPEC 3.2), written out for expected
+/// values: F_j = -k (l - l0) n - b (n·dv) n with d = x_j - x_i, n = d/l, dv = v_j - v_i.
+Vector spring_force_on_j(const Vector& xi, const Vector& xj, const Vector& vi, const Vector& vj,
+                         double k, double l0, double b);
+
+/// A linear system with a fixed particle: particle 0 fixed at a, moving with velocity u;
+/// particle 1 of mass m at x with velocity w; a zero-rest-length spring k from 0 to 1; drag c.
+struct LinearAnchoredSystem {
+  double h, m, k, c;
+  Vector a, u, x, w;
+
+  TestScene scene(IntegratorKind kind) const;
+  /// One step of backward Euler in closed form. With a' = a + h u and x' = x + h v',
+  /// m (v' - w) = h (-k (x' - a') - c v') gives v' = (m w - h k (x - a) + h² k u) / (m + h c + h² k);
+  /// the fixed particle ends at a' with velocity u. Linearized implicit Euler is exact here too.
+  State backward_euler_step() const;
+};
+
+/// A linear system of two free particles of equal mass m at xa, xb with velocities va, vb,
+/// joined by a zero-rest-length spring k, with drag c on both.
+struct LinearPairSystem {
+  double h, m, k, c;
+  Vector xa, va, xb, vb;
+
+  TestScene scene(IntegratorKind kind) const;
+  /// One step of backward Euler in closed form, from the sum s = va + vb and the difference
+  /// r = vb - va, d = xb - xa: m (s' - s) = -h c s' and m (r' - r) = h (-2k (d + h r') - c r'),
+  /// so s' = m s / (m + h c), r' = (m r - 2 h k d) / (m + h c + 2 h² k); x' = x + h v'.
+  State backward_euler_step() const;
+};
+
 // ---------------------------------------------------------------------------------------------
 // Randomness and dense views
 
