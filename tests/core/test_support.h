@@ -160,6 +160,20 @@ Eigen::MatrixXd dense_pair_pattern(int n, int dim, int i, int j, const Eigen::Ma
 /// The 90° rotation about a unit axis in 3D, R a = axis × a (the cross-product matrix).
 Mat<3> cross_product_matrix(const Vec<3>& axis);
 
+/// Two orthonormal vectors spanning a plane for planar motions: the x and y axes in 2D, a plane
+/// tilted away from every coordinate plane in 3D, e₁ = (1, 2, 2)/3, e₂ = (2, 1, -2)/3.
+template <int D>
+std::pair<Vector, Vector> plane_axes() {
+  if constexpr (D == 2) {
+    return {Vector::Unit(2, 0), Vector::Unit(2, 1)};
+  } else {
+    Vector e1(3), e2(3);
+    e1 << 1.0 / 3.0, 2.0 / 3.0, 2.0 / 3.0;
+    e2 << 2.0 / 3.0, 1.0 / 3.0, -2.0 / 3.0;
+    return {e1, e2};
+  }
+}
+
 /// The 90° counter-clockwise rotation R(a) = (-a_y, a_x) in 2D.
 inline Mat<2> rotation_2d() {
   Mat<2> R;
