@@ -69,8 +69,8 @@ TYPED_TEST(ForceEvaluationTest, DampedSpringsAndVorticesMakeHessXNonSymmetric) {
     if (variant == 0) {
       scene.add_spring(0, 2, 3.0, 0.5, 2.0);  // damped
     } else {
-      scene.add_force(std::make_unique<VortexForce<D>>(
-          0, 2, 2.0, 1.0, vortex_rotation<D>(Vec<3>(0.0, 0.6, 0.8))));
+      scene.add_force(std::make_unique<VortexForce<D>>(0, 2, 2.0, 1.0,
+                                                       vortex_rotation<D>(Vec<3>(0.0, 0.6, 0.8))));
     }
     EXPECT_FALSE(scene.model.has_symmetric_jacobians());
     const Eigen::MatrixXd hx = dense(compute_hessian_x(scene.model, scene.state.q, scene.state.v));
@@ -94,7 +94,8 @@ TYPED_TEST(ForceEvaluationTest, SumsOverForcesAndEnergies) {
   EXPECT_EQ(compute_force(model, q, v), -compute_gradient(model, q, v));
   EXPECT_NEAR(compute_potential_energy(model, q, v), potential, 1e-14 * std::abs(potential));
   double kinetic = 0.0;
-  for (int dof = 0; dof < model.num_dofs(); ++dof) kinetic += 0.5 * model.mass[dof] * v[dof] * v[dof];
+  for (int dof = 0; dof < model.num_dofs(); ++dof)
+    kinetic += 0.5 * model.mass[dof] * v[dof] * v[dof];
   EXPECT_NEAR(compute_kinetic_energy(model, v), kinetic, 1e-15 * kinetic);
 }
 
@@ -106,8 +107,8 @@ TYPED_TEST(ForceEvaluationTest, StepMatrixEliminatesFixedParticles) {
   const Vector& q = scene.state.q;
   const Vector& v = scene.state.v;
   const double h = 0.05;
-  Eigen::MatrixXd expected = h * h * dense(compute_hessian_x(model, q, v)) +
-                             h * dense(compute_hessian_v(model, q, v));
+  Eigen::MatrixXd expected =
+      h * h * dense(compute_hessian_x(model, q, v)) + h * dense(compute_hessian_v(model, q, v));
   expected.diagonal() += model.mass;
   // Particle 1 is fixed: zero its rows and columns, 1 on its diagonal.
   expected.middleRows(D, D).setZero();

@@ -47,7 +47,9 @@ TEST(SimulationHealthCheck, BlowUpIsReportedAtTheStepThatProducesIt) {
     EXPECT_EQ(state.step, error.step());
     EXPECT_FALSE(state.q.allFinite() && state.v.allFinite()) << "the state is the one produced";
     const std::string message = error.what();
-    EXPECT_EQ(message.rfind("step " + std::to_string(error.step()) + ": particle 1 has a non-finite ", 0), 0u)
+    EXPECT_EQ(
+        message.rfind("step " + std::to_string(error.step()) + ": particle 1 has a non-finite ", 0),
+        0u)
         << message;
     std::printf("blew up as expected: %s\n", message.c_str());
   }
@@ -70,7 +72,9 @@ TEST(SimulationHealthCheck, NamesTheFirstBadParticleAndQuantity) {
     FAIL() << "expected StepError";
   } catch (const StepError& error) {
     EXPECT_EQ(error.step(), 7);
-    EXPECT_EQ(std::string(error.what()).rfind("step 7: particle 2 has a non-finite position (0, 0, inf)", 0), 0u)
+    EXPECT_EQ(std::string(error.what())
+                  .rfind("step 7: particle 2 has a non-finite position (0, 0, inf)", 0),
+              0u)
         << error.what();
   }
   state.q[8] = 0.0;
@@ -104,9 +108,9 @@ TestScene busy_scene(IntegratorKind kind) {
 }
 
 TEST(SimulationDeterminism, TwoRunsGiveIdenticalBytesWithEveryIntegrator) {
-  for (IntegratorKind kind : {IntegratorKind::kExplicitEuler, IntegratorKind::kSymplecticEuler,
-                              IntegratorKind::kLinearizedImplicitEuler,
-                              IntegratorKind::kImplicitEuler}) {
+  for (IntegratorKind kind :
+       {IntegratorKind::kExplicitEuler, IntegratorKind::kSymplecticEuler,
+        IntegratorKind::kLinearizedImplicitEuler, IntegratorKind::kImplicitEuler}) {
     SCOPED_TRACE(integrator_name(kind));
     const TestScene scene = busy_scene(kind);
     ASSERT_EQ(scene.model.num_steps(), 200);

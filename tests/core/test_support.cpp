@@ -95,8 +95,8 @@ void expect_close(const Vector& actual, const Vector& expected, double tolerance
   ASSERT_EQ(actual.size(), expected.size()) << what;
   const double error = (actual - expected).lpNorm<Eigen::Infinity>();
   const double scale = std::max(1.0, expected.lpNorm<Eigen::Infinity>());
-  EXPECT_LE(error, tolerance * scale) << what << "\n  actual:   " << actual.transpose()
-                                      << "\n  expected: " << expected.transpose();
+  EXPECT_LE(error, tolerance * scale)
+      << what << "\n  actual:   " << actual.transpose() << "\n  expected: " << expected.transpose();
 }
 
 Vector spring_force_on_j(const Vector& xi, const Vector& xj, const Vector& vi, const Vector& vj,
@@ -181,10 +181,10 @@ MatrixComparison compare_hessian_full(const Force& force, const Vector& q, const
   Eigen::MatrixXd numeric(n, n);
   for (int k = 0; k < n; ++k) {
     const Perturbation p = perturb(in_velocity ? v : q, k, t);
-    const Vector g_plus = in_velocity ? gradient_of(force, q, p.plus, mass)
-                                      : gradient_of(force, p.plus, v, mass);
-    const Vector g_minus = in_velocity ? gradient_of(force, q, p.minus, mass)
-                                       : gradient_of(force, p.minus, v, mass);
+    const Vector g_plus =
+        in_velocity ? gradient_of(force, q, p.plus, mass) : gradient_of(force, p.plus, v, mass);
+    const Vector g_minus =
+        in_velocity ? gradient_of(force, q, p.minus, mass) : gradient_of(force, p.minus, v, mass);
     numeric.col(k) = (g_plus - g_minus) / p.step;
   }
   const Eigen::MatrixXd analytic =
@@ -205,9 +205,9 @@ MatrixComparison compare_gradient_full(const Force& force, const Vector& q, cons
   MatrixComparison result = compare(gradient_of(force, q, rest, mass), numeric);
   constexpr double kEps = std::numeric_limits<double>::epsilon();
   const double curvature = hessian_x_of(force, q, rest, mass).norm();
-  result.noise_floor = 100.0 * kEps * std::sqrt(static_cast<double>(n)) *
-                       (std::abs(energy_of(force, q, rest, mass)) / t +
-                        curvature * q.lpNorm<Eigen::Infinity>());
+  result.noise_floor =
+      100.0 * kEps * std::sqrt(static_cast<double>(n)) *
+      (std::abs(energy_of(force, q, rest, mass)) / t + curvature * q.lpNorm<Eigen::Infinity>());
   return result;
 }
 
@@ -248,9 +248,10 @@ class ErrorTablePrinter : public ::testing::Environment {
  public:
   void TearDown() override {
     if (error_table().empty()) return;
-    std::printf("\nLargest finite-difference relative errors (library: the worst direction of\n"
-                "core/analysis/derivative_check; full-matrix: central differences written in the\n"
-                "test, relative in the Frobenius norm):\n");
+    std::printf(
+        "\nLargest finite-difference relative errors (library: the worst direction of\n"
+        "core/analysis/derivative_check; full-matrix: central differences written in the\n"
+        "test, relative in the Frobenius norm):\n");
     std::printf("%-14s %-3s %-16s %-9s %-12s %-9s %s\n", "force", "dim", "configuration",
                 "quantity", "checker", "max error", "where");
     for (const auto& [key, worst] : error_table()) {
@@ -277,8 +278,8 @@ void record_fd_error(const DerivativeCase& what, int dim, const std::string& der
 bool check_force_everywhere(const Force& force, int dim, const Vector& q, const Vector& v,
                             const Vector& mass, const DerivativeCase& what) {
   bool all_passed = true;
-  const std::string where = what.force + " " + std::to_string(dim) + "D " + what.configuration +
-                            " (" + what.detail + ")";
+  const std::string where =
+      what.force + " " + std::to_string(dim) + "D " + what.configuration + " (" + what.detail + ")";
 
   DerivativeCheckOptions options;
   options.step = suggest_finite_difference_step(q, dim);

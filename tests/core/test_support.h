@@ -104,8 +104,9 @@ struct LinearAnchoredSystem {
 
   TestScene scene(IntegratorKind kind) const;
   /// One step of backward Euler in closed form. With a' = a + h u and x' = x + h v',
-  /// m (v' - w) = h (-k (x' - a') - c v') gives v' = (m w - h k (x - a) + h² k u) / (m + h c + h² k);
-  /// the fixed particle ends at a' with velocity u. Linearized implicit Euler is exact here too.
+  /// m (v' - w) = h (-k (x' - a') - c v') gives v' = (m w - h k (x - a) + h² k u) / (m + h c + h²
+  /// k); the fixed particle ends at a' with velocity u. Linearized implicit Euler is exact here
+  /// too.
   State backward_euler_step() const;
 };
 
@@ -129,7 +130,9 @@ struct LinearPairSystem {
 class Random {
  public:
   explicit Random(unsigned seed) : rng_(seed) {}
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
+  double uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng_);
+  }
   Vector uniform_vector(int n, double lo, double hi) {
     Vector out(n);
     for (int k = 0; k < n; ++k) out[k] = uniform(lo, hi);

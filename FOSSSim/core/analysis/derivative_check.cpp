@@ -106,8 +106,7 @@ DerivativeCheck check_gradient(const Force& force, const Vector& q, const Vector
     return g.dot(step);
   };
   for (const Vector& u : directions) {
-    const auto [numeric, analytic] =
-        directional_difference(q, u, options.step, energy, apply);
+    const auto [numeric, analytic] = directional_difference(q, u, options.step, energy, apply);
     // Round-off: the energy values carry ε|U|; and both sides carry the rounding of the
     // positions' differences, ε |q|_∞ ‖hessX u‖, which is all there is at an equilibrium
     // (a spring at its rest length), where gradE itself is round-off.
@@ -115,8 +114,7 @@ DerivativeCheck check_gradient(const Force& force, const Vector& q, const Vector
     const double curvature =
         (gradient_at(force, s.plus, rest, mass) - gradient_at(force, s.minus, rest, mass)).norm() /
         (2.0 * options.step);
-    const double floor =
-        1e3 * kMachineEpsilon * (energy_size / options.step + curvature * size);
+    const double floor = 1e3 * kMachineEpsilon * (energy_size / options.step + curvature * size);
     record(check, std::abs(analytic - numeric), std::max(std::abs(analytic), std::abs(numeric)),
            floor, options.relative_tolerance);
   }
@@ -144,8 +142,8 @@ DerivativeCheck check_hessian(const Force& force, Derivative which, const Vector
   // drown hessV in the round-off of gradE.
   const double step = in_q ? options.step : options.velocity_step;
   const double size = (in_q ? q : v).lpNorm<Eigen::Infinity>();
-  const double floor = 1e3 * kMachineEpsilon *
-                       (gradient_at(force, q, v, mass).norm() / step + H.norm() * size);
+  const double floor =
+      1e3 * kMachineEpsilon * (gradient_at(force, q, v, mass).norm() / step + H.norm() * size);
   const std::function<Vector(const Vector&)> gradient = [&](const Vector& x) {
     return in_q ? gradient_at(force, x, v, mass) : gradient_at(force, q, x, mass);
   };
@@ -153,8 +151,7 @@ DerivativeCheck check_hessian(const Force& force, Derivative which, const Vector
     return Vector(H * step);
   };
   for (const Vector& u : directions) {
-    const auto [numeric, analytic] =
-        directional_difference(in_q ? q : v, u, step, gradient, apply);
+    const auto [numeric, analytic] = directional_difference(in_q ? q : v, u, step, gradient, apply);
     record(check, (analytic - numeric).norm(), std::max(analytic.norm(), numeric.norm()), floor,
            options.relative_tolerance);
   }

@@ -148,11 +148,11 @@ TYPED_TEST(DerivativeCheckTest, PassesOnSpringsAtExactlyTheirRestLength) {
     for (double b : {0.0, 1.0}) {
       DerivativeCheckOptions options;
       options.step = suggest_finite_difference_step(positions, D);
-      for (const auto& check :
-           check_force_derivatives(SpringForce<D>(0, 1, 10.0, l0, b), positions, v, mass, options)) {
-        EXPECT_TRUE(check.passed()) << derivative_name(check.which) << " b = " << b
-                                    << ": absolute error " << check.absolute_error
-                                    << ", allowance used " << check.allowance_used;
+      for (const auto& check : check_force_derivatives(SpringForce<D>(0, 1, 10.0, l0, b), positions,
+                                                       v, mass, options)) {
+        EXPECT_TRUE(check.passed())
+            << derivative_name(check.which) << " b = " << b << ": absolute error "
+            << check.absolute_error << ", allowance used " << check.allowance_used;
         // What is left is round-off: k = 10 times a few ε_machine.
         if (check.which == Derivative::kGradient) {
           EXPECT_LT(check.absolute_error, 1e-13);

@@ -43,8 +43,8 @@ TYPED_TEST(GravitationalForceTest, ForceEnergyAndHessianMatchTheFormulaOnA345Tri
   Eigen::MatrixXd block = Eigen::MatrixXd::Identity(D, D);
   block.topLeftCorner(2, 2) -= 3.0 * (Eigen::Matrix2d() << 0.36, 0.48, 0.48, 0.64).finished();
   block *= 3.0 / 125.0;
-  EXPECT_TRUE(hessian_x_of(gravity, q, v, mass)
-                  .isApprox(dense_pair_pattern(2 * D, D, 0, 1, block), 1e-15));
+  EXPECT_TRUE(
+      hessian_x_of(gravity, q, v, mass).isApprox(dense_pair_pattern(2 * D, D, 0, 1, block), 1e-15));
   EXPECT_TRUE(hessian_v_of(gravity, q, v, mass).isZero(0.0));
   EXPECT_TRUE(gravity.is_conservative());
 }
@@ -76,7 +76,8 @@ TYPED_TEST(GravitationalForceTest, DerivativesOfNearlyCoincidentParticles) {
     const Vector v = random.uniform_vector(3 * D, -1.0, 1.0);
     const Vector mass = random.uniform_vector(3 * D, 0.5, 2.0);
     const GravitationalForce<D> gravity(1, 0, 0.3);
-    check_force_everywhere(gravity, D, q, v, mass, {"gravitation", "near-degenerate", "l = " + to_text(l)});
+    check_force_everywhere(gravity, D, q, v, mass,
+                           {"gravitation", "near-degenerate", "l = " + to_text(l)});
     EXPECT_LE(asymmetry(hessian_x_of(gravity, q, v, mass)), 1e-15);
   }
 }

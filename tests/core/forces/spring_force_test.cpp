@@ -15,12 +15,12 @@
 //   asymmetry (b/l) [n dvᵀ (I - P) - (I - P) dv nᵀ] is of the size predicted by hand.
 
 #include "core/forces/spring_force.h"
-#include "core/text.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "core/text.h"
 #include "test_support.h"
 
 namespace fosssim::testing {
@@ -151,7 +151,8 @@ TYPED_TEST(SpringForceTest, ZeroRestLengthWithCoincidentEndsHasHessianKI) {
       dense_pair_pattern(3 * D, D, 0, 1, k * Eigen::MatrixXd::Identity(D, D));
   EXPECT_EQ(hessian_x_of(spring, q, v, mass), expected);
   EXPECT_TRUE(hessian_v_of(spring, q, v, mass).isZero(0.0));
-  check_force_everywhere(spring, D, q, v, mass, {"spring", "near-degenerate", "coincident, l0 = 0"});
+  check_force_everywhere(spring, D, q, v, mass,
+                         {"spring", "near-degenerate", "coincident, l0 = 0"});
 
   // Away from coincidence a zero-rest-length spring is linear: hessX = k I to round-off.
   q.segment(D, D) = c + 0.3 * random.unit_vector(D);

@@ -72,7 +72,9 @@ class MapParameters final : public ForceParameters {
   }
   int particle_index(const char* name) override { return static_cast<int>(values_.at(name)); }
   int edge_index(const char* name) override { return static_cast<int>(values_.at(name)); }
-  [[noreturn]] void fail(const std::string& problem) override { throw std::invalid_argument(problem); }
+  [[noreturn]] void fail(const std::string& problem) override {
+    throw std::invalid_argument(problem);
+  }
   [[noreturn]] void fail(const char* name, const std::string& problem) override {
     throw std::invalid_argument(std::string(name) + ": " + problem);
   }
@@ -89,8 +91,8 @@ TEST(VortexForce3D, FactoryNormalizesTheAxisAndDefaultsToZ) {
   const ForceContext context{model, positions};
   const Vector d = vec({2.0, 0.0, 0.0}), dv = vec({0.0, 1.0, 0.0});
   const Vector expected = vec({0.0, 1.0, 0.0, 0.0, -1.0, 0.0});  // as in 2D, about z
-  for (const auto& axis : {std::map<std::string, double>{{"az", 2.0}},
-                           std::map<std::string, double>{}}) {
+  for (const auto& axis :
+       {std::map<std::string, double>{{"az", 2.0}}, std::map<std::string, double>{}}) {
     std::map<std::string, double> values{{"i", 0}, {"j", 1}, {"kbs", 3.0}, {"kvc", 2.0}};
     values.insert(axis.begin(), axis.end());
     MapParameters params(values);

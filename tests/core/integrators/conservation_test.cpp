@@ -34,7 +34,9 @@ template <typename T>
 class ConservationTest : public ::testing::Test {};
 TYPED_TEST_SUITE(ConservationTest, Dimensions, DimensionName);
 
-double total_energy(const TestScene& scene) { return compute_energies(scene.model, scene.state).total(); }
+double total_energy(const TestScene& scene) {
+  return compute_energies(scene.model, scene.state).total();
+}
 
 /// A planet of mass m = 1 at perihelion r_p = a(1 - e) of an orbit with a = 1, e = 0.5 around a
 /// fixed sun M = 1, G = 1: v_p = √(GM(1 + e)/(a(1 - e))) = √3, E = -GMm/(2a) = -0.5, P = 2π.
@@ -76,8 +78,10 @@ TYPED_TEST(ConservationTest, SymplecticEulerKeepsKeplerEnergyBoundedExplicitEule
     last = in_period;
     worst = std::max(worst, in_period);
   }
-  std::printf("%dD Kepler, 100 periods: symplectic relative energy oscillation %.4e "
-              "(bound %.4e), first period %.4e, last %.4e\n", D, worst, bound, first, last);
+  std::printf(
+      "%dD Kepler, 100 periods: symplectic relative energy oscillation %.4e "
+      "(bound %.4e), first period %.4e, last %.4e\n",
+      D, worst, bound, first, last);
   EXPECT_LE(worst, bound);
   EXPECT_NEAR(last, first, 0.01 * first) << "the oscillation does not grow";
 
@@ -100,8 +104,9 @@ TYPED_TEST(ConservationTest, SymplecticEulerKeepsKeplerEnergyBoundedExplicitEule
     EXPECT_GT(at_perihelion_direction[k], at_perihelion_direction[k - 1]) << "revolution " << k;
   }
   const double drift = (at_perihelion_direction.back() - e0) / 0.5;
-  std::printf("%dD Kepler, same run: explicit Euler energy up by %.3f of |E| over %zu revolutions\n",
-              D, drift, at_perihelion_direction.size());
+  std::printf(
+      "%dD Kepler, same run: explicit Euler energy up by %.3f of |E| over %zu revolutions\n", D,
+      drift, at_perihelion_direction.size());
   EXPECT_GT(drift, 100.0 * bound);
 }
 
@@ -168,16 +173,16 @@ TestScene pair_forces_only(IntegratorKind kind) {
   scene.add_spring(3, 4, 25.0, 1.2);
   scene.add_gravitation(0, 1, 0.5);  // on springs, which keep the pairs apart
   scene.add_gravitation(3, 4, 0.5);
-  scene.add_force(std::make_unique<VortexForce<D>>(4, 0, 0.8, 0.3,
-                                                   vortex_rotation<D>(Vec<3>(0.0, 0.6, 0.8))));
+  scene.add_force(
+      std::make_unique<VortexForce<D>>(4, 0, 0.8, 0.3, vortex_rotation<D>(Vec<3>(0.0, 0.6, 0.8))));
   return scene;
 }
 
 TYPED_TEST(ConservationTest, PairForcesConserveMomentumWithEveryMethod) {
   constexpr int D = TypeParam::value;
-  for (IntegratorKind kind : {IntegratorKind::kExplicitEuler, IntegratorKind::kSymplecticEuler,
-                              IntegratorKind::kLinearizedImplicitEuler,
-                              IntegratorKind::kImplicitEuler}) {
+  for (IntegratorKind kind :
+       {IntegratorKind::kExplicitEuler, IntegratorKind::kSymplecticEuler,
+        IntegratorKind::kLinearizedImplicitEuler, IntegratorKind::kImplicitEuler}) {
     TestScene scene = pair_forces_only<D>(kind);
     const Vector start = linear_momentum(scene.model, scene.state.v);
     double scale = 0.0;  // max m|v|: the size of the terms that cancel

@@ -75,10 +75,10 @@ Problem oscillator() {
   State exact;
   exact.q.resize(2 * D);
   exact.v.resize(2 * D);
-  exact.q << Vector::Zero(D), A * std::cos(omega * kEndTime) * e1 +
-                                  (B / omega) * std::sin(omega * kEndTime) * e2;
-  exact.v << Vector::Zero(D), -A * omega * std::sin(omega * kEndTime) * e1 +
-                                  B * std::cos(omega * kEndTime) * e2;
+  exact.q << Vector::Zero(D),
+      A * std::cos(omega * kEndTime) * e1 + (B / omega) * std::sin(omega * kEndTime) * e2;
+  exact.v << Vector::Zero(D),
+      -A * omega * std::sin(omega * kEndTime) * e1 + B * std::cos(omega * kEndTime) * e2;
   const auto scene = [=](IntegratorKind kind, double h) {
     TestScene s(D, kind, h);
     s.add_particle(1.0, Vector::Zero(D), Vector::Zero(D), /*fixed=*/true);
@@ -184,8 +184,8 @@ TYPED_TEST(ConvergenceTest, DragFollowsTheDiscreteDecayFactors) {
   for (IntegratorKind kind : kAllKinds) {
     TestScene scene = problem.scene(kind, h);
     const State end = run_steps(scene.model, scene.state, 64);
-    const bool implicit = kind == IntegratorKind::kLinearizedImplicitEuler ||
-                          kind == IntegratorKind::kImplicitEuler;
+    const bool implicit =
+        kind == IntegratorKind::kLinearizedImplicitEuler || kind == IntegratorKind::kImplicitEuler;
     const double factor = implicit ? 1.0 / (1.0 + h * b / m) : 1.0 - h * b / m;
     expect_close(end.v, terminal + std::pow(factor, 64) * (v0 - terminal), 1e-13,
                  integrator_name(kind));

@@ -121,8 +121,9 @@ TestScene stiff_chain(double k, double h, int links) {
 // pre-asymptotic phase whose length grows with h²k/m. Measured on this chain (40 steps):
 // h = 0.1 (h²k/m = 1e4..1e6): at most 11..21 iterations, 6.8..8.1 on average; h = 0.01: at
 // most 4..6. The bounds below (30 and 9 at most, 10 on average) leave room above the worst
-// measured step and stay far below the cap of 200. (Plain Newton is not globally convergent: a chain released 10% stretched with random
-// offsets, k = 1e7, h = 0.1 in 3D, does not converge in 200 iterations; see the report.)
+// measured step and stay far below the cap of 200. (Plain Newton is not globally convergent: a
+// chain released 10% stretched with random offsets, k = 1e7, h = 0.1 in 3D, does not converge in
+// 200 iterations; see the report.)
 TYPED_TEST(ImplicitEulerTest, NewtonConvergesOnStiffSpringsWithLargeSteps) {
   constexpr int D = TypeParam::value;
   for (double h : {0.1, 0.01}) {
@@ -137,8 +138,10 @@ TYPED_TEST(ImplicitEulerTest, NewtonConvergesOnStiffSpringsWithLargeSteps) {
         most = std::max(most, integrator.last_iterations());
         total += integrator.last_iterations();
       }
-      std::printf("implicit Euler, %dD chain, k = %.0e, h = %g: Newton iterations at most %d, "
-                  "mean %.1f\n", D, k, h, most, static_cast<double>(total) / steps);
+      std::printf(
+          "implicit Euler, %dD chain, k = %.0e, h = %g: Newton iterations at most %d, "
+          "mean %.1f\n",
+          D, k, h, most, static_cast<double>(total) / steps);
       EXPECT_LE(most, h == 0.1 ? 30 : 9) << "k = " << k << ", h = " << h;
       EXPECT_LE(total, 10 * steps) << "k = " << k << ", h = " << h;
     }

@@ -50,7 +50,8 @@ SparseMatrix chain_step_matrix(int n, double l0_factor, double b, double h, unsi
                        random.uniform_vector(D, -1.0, 1.0));
   }
   for (int p = 1; p < n; ++p) {
-    const double l = (scene.state.q.segment(D * p, D) - scene.state.q.segment(D * (p - 1), D)).norm();
+    const double l =
+        (scene.state.q.segment(D * p, D) - scene.state.q.segment(D * (p - 1), D)).norm();
     scene.add_spring(p - 1, p, 100.0, l0_factor * l, b);
   }
   if (gravity) scene.add_gravitation(0, n - 1, 50.0);
