@@ -22,9 +22,7 @@
 namespace fosssim::testing {
 namespace {
 
-template <typename T>
-class ForceEvaluationTest : public ::testing::Test {};
-TYPED_TEST_SUITE(ForceEvaluationTest, Dimensions, DimensionName);
+FOSSSIM_TEST_SUITE_IN_2D_AND_3D(ForceEvaluationTest);
 
 /// Four particles (the second fixed) at random places with undamped springs, Newtonian gravity,
 /// drag, simple gravity and a constant force: every Jacobian symmetric.

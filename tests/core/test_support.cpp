@@ -35,6 +35,48 @@ void TestScene::add_simple_gravity(const Vector& g) {
   }
 }
 
+FallingParticle::FallingParticle(int dim, unsigned seed) {
+  Random random(seed);
+  x = random.uniform_vector(dim, -1.0, 1.0);
+  w = random.uniform_vector(dim, -1.0, 1.0);
+  g = random.uniform_vector(dim, -10.0, 10.0);
+}
+
+TestScene FallingParticle::scene(IntegratorKind kind, double h) const {
+  TestScene out(static_cast<int>(x.size()), kind, h);
+  out.add_particle(2.0, x, w);
+  out.add_simple_gravity(g);
+  return out;
+}
+
+AnchoredSpring::AnchoredSpring(int dim, unsigned seed, double m, double k, double l0, double b,
+                               double c)
+    : m(m), k(k), l0(l0), b(b), c(c) {
+  Random random(seed);
+  a = random.uniform_vector(dim, -1.0, 1.0);
+  u = random.uniform_vector(dim, -1.0, 1.0);
+  x = random.uniform_vector(dim, -1.0, 1.0);
+  w = random.uniform_vector(dim, -1.0, 1.0);
+}
+
+TestScene AnchoredSpring::scene(IntegratorKind kind, double h) const {
+  TestScene out(static_cast<int>(a.size()), kind, h);
+  out.add_particle(5.0, a, u, /*fixed=*/true);
+  out.add_particle(m, x, w);
+  out.add_spring(0, 1, k, l0, b);
+  out.add_drag(c);
+  return out;
+}
+
+void AnchoredSpring::expect_step(const State& next, double h, const Vector& x_expected,
+                                 const Vector& v_expected, double tolerance) const {
+  const int dim = static_cast<int>(a.size());
+  expect_close(next.q.head(dim), a + h * u, 1e-15, "fixed particle's position");
+  EXPECT_EQ(Vector(next.v.head(dim)), u) << "a fixed particle keeps its velocity exactly";
+  expect_close(next.v.tail(dim), v_expected, tolerance, "free particle's velocity");
+  expect_close(next.q.tail(dim), x_expected, tolerance, "free particle's position");
+}
+
 TestScene LinearAnchoredSystem::scene(IntegratorKind kind) const {
   TestScene out(static_cast<int>(a.size()), kind, h);
   out.add_particle(3.0, a, u, /*fixed=*/true);
@@ -105,6 +147,27 @@ Vector spring_force_on_j(const Vector& xi, const Vector& xj, const Vector& vi, c
   const double l = d.norm();
   const Vector n = d / l;
   return -k * (l - l0) * n - b * n.dot(vj - vi) * n;
+}
+
+PairCase random_pair_case(int dim, Random& random) {
+  PairCase out;
+  out.q = random.uniform_vector(3 * dim, -1.0, 1.0);
+  out.v = random.uniform_vector(3 * dim, -1.0, 1.0);
+  out.mass.resize(3 * dim);
+  for (int p = 0; p < 3; ++p) out.mass.segment(dim * p, dim).setConstant(random.uniform(0.5, 2.0));
+  out.i = random.index(3);
+  out.j = (out.i + 1 + random.index(2)) % 3;
+  return out;
+}
+
+PairCase pair_at_distance(int dim, Random& random, double l) {
+  PairCase out;
+  const Vector c = random.uniform_vector(dim, -1.0, 1.0);
+  out.q.resize(3 * dim);
+  out.q << c, c + l * random.unit_vector(dim), c + random.unit_vector(dim);
+  out.v = random.uniform_vector(3 * dim, -1.0, 1.0);
+  out.mass = Vector::Ones(3 * dim);
+  return out;
 }
 
 double asymmetry(const Eigen::MatrixXd& A) {

@@ -81,6 +81,11 @@ struct TestScene {
   void add_simple_gravity(const Vector& g);
 };
 
+/// The four integrators, in the order of IntegratorKind.
+constexpr IntegratorKind kAllIntegrators[] = {
+    IntegratorKind::kExplicitEuler, IntegratorKind::kSymplecticEuler,
+    IntegratorKind::kLinearizedImplicitEuler, IntegratorKind::kImplicitEuler};
+
 /// Runs `steps` steps of the model's integrator from the scene's state and returns the result.
 State run_steps(const SceneModel& model, State state, std::int64_t steps);
 
@@ -95,6 +100,30 @@ void expect_close(const Vector& actual, const Vector& expected, double tolerance
 /// values: F_j = -k (l - l0) n - b (n·dv) n with d = x_j - x_i, n = d/l, dv = v_j - v_i.
 Vector spring_force_on_j(const Vector& xi, const Vector& xj, const Vector& vi, const Vector& vj,
                          double k, double l0, double b);
+
+/// A particle of mass 2 at x with velocity w under gravity g (x, w in [-1, 1)ᵈ, g in [-10, 10)ᵈ,
+/// random from a seed), for hand-computed steps.
+struct FallingParticle {
+  Vector x, w, g;
+
+  FallingParticle(int dim, unsigned seed);
+  TestScene scene(IntegratorKind kind, double h) const;
+};
+
+/// A spring (k, l0, damping b) from a fixed particle 0 of mass 5 at a, moving with velocity u,
+/// to a free particle 1 of mass m at x with velocity w, plus drag c on both (a, u, x, w in
+/// [-1, 1)ᵈ, random from a seed), for hand-computed steps.
+struct AnchoredSpring {
+  double m, k, l0, b, c;
+  Vector a, u, x, w;
+
+  AnchoredSpring(int dim, unsigned seed, double m, double k, double l0, double b, double c);
+  TestScene scene(IntegratorKind kind, double h) const;
+  /// Expects the fixed particle of `next` at a + h u with velocity exactly u, and the free one
+  /// at (x_expected, v_expected), to the relative tolerance.
+  void expect_step(const State& next, double h, const Vector& x_expected, const Vector& v_expected,
+                   double tolerance) const;
+};
 
 /// A linear system with a fixed particle: particle 0 fixed at a, moving with velocity u;
 /// particle 1 of mass m at x with velocity w; a zero-rest-length spring k from 0 to 1; drag c.
@@ -150,6 +179,19 @@ class Random {
  private:
   std::mt19937 rng_;
 };
+
+/// Three particles for testing a pair force (i, j): positions, velocities, per-DOF masses.
+struct PairCase {
+  Vector q, v, mass;
+  int i = 0, j = 1;
+};
+
+/// Random positions and velocities in [-1, 1)ᵈ, masses in [0.5, 2) and a random pair.
+PairCase random_pair_case(int dim, Random& random);
+
+/// i = 0 at c and j = 1 at c + l u (c random in [-1, 1)ᵈ, u a random unit vector), a bystander
+/// 2 at distance 1 from c; velocities random in [-1, 1)ᵈ, unit masses.
+PairCase pair_at_distance(int dim, Random& random, double l);
 
 inline Eigen::MatrixXd dense(const SparseMatrix& A) { return Eigen::MatrixXd(A); }
 
@@ -289,5 +331,12 @@ struct DimensionName {
     return std::to_string(T::value) + "D";
   }
 };
+
+/// Declares the typed test suite `Suite`, run once in 2D and once in 3D; in its tests
+/// `TypeParam::value` is the dimension.
+#define FOSSSIM_TEST_SUITE_IN_2D_AND_3D(Suite) \
+  template <typename T>                        \
+  class Suite : public ::testing::Test {};     \
+  TYPED_TEST_SUITE(Suite, ::fosssim::testing::Dimensions, ::fosssim::testing::DimensionName)
 
 }  // namespace fosssim::testing

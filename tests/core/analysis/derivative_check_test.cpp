@@ -100,9 +100,7 @@ const FaultCase kFaults[] = {
     {Fault::kHessianXNaN, Derivative::kHessianX, "NaN in hessX"},
 };
 
-template <typename T>
-class DerivativeCheckTest : public ::testing::Test {};
-TYPED_TEST_SUITE(DerivativeCheckTest, Dimensions, DimensionName);
+FOSSSIM_TEST_SUITE_IN_2D_AND_3D(DerivativeCheckTest);
 
 TYPED_TEST(DerivativeCheckTest, FailsOnEachDeliberatelyWrongDerivative) {
   constexpr int D = TypeParam::value;

@@ -13,9 +13,7 @@
 namespace fosssim::testing {
 namespace {
 
-template <typename T>
-class ConstantForceTest : public ::testing::Test {};
-TYPED_TEST_SUITE(ConstantForceTest, Dimensions, DimensionName);
+FOSSSIM_TEST_SUITE_IN_2D_AND_3D(ConstantForceTest);
 
 TYPED_TEST(ConstantForceTest, SameForceOnEveryParticleWhateverItsMass) {
   constexpr int D = TypeParam::value;

@@ -13,9 +13,7 @@
 namespace fosssim::testing {
 namespace {
 
-template <typename T>
-class DragDampingForceTest : public ::testing::Test {};
-TYPED_TEST_SUITE(DragDampingForceTest, Dimensions, DimensionName);
+FOSSSIM_TEST_SUITE_IN_2D_AND_3D(DragDampingForceTest);
 
 TYPED_TEST(DragDampingForceTest, ForceOpposesVelocityAndHessVIsBI) {
   constexpr int D = TypeParam::value;

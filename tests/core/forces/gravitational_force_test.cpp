@@ -19,9 +19,7 @@
 namespace fosssim::testing {
 namespace {
 
-template <typename T>
-class GravitationalForceTest : public ::testing::Test {};
-TYPED_TEST_SUITE(GravitationalForceTest, Dimensions, DimensionName);
+FOSSSIM_TEST_SUITE_IN_2D_AND_3D(GravitationalForceTest);
 
 TYPED_TEST(GravitationalForceTest, ForceEnergyAndHessianMatchTheFormulaOnA345Triangle) {
   constexpr int D = TypeParam::value;
@@ -53,16 +51,11 @@ TYPED_TEST(GravitationalForceTest, DerivativesOnRandomConfigurations) {
   constexpr int D = TypeParam::value;
   for (unsigned seed = 31; seed <= 36; ++seed) {
     Random random(seed);
-    const Vector q = random.uniform_vector(3 * D, -1.0, 1.0);
-    const Vector v = random.uniform_vector(3 * D, -1.0, 1.0);
-    Vector mass(3 * D);
-    for (int p = 0; p < 3; ++p) mass.segment(D * p, D).setConstant(random.uniform(0.1, 10.0));
-    const int i = random.index(3);
-    const int j = (i + 1 + random.index(2)) % 3;
-    const GravitationalForce<D> gravity(i, j, random.uniform(0.1, 5.0));
-    check_force_everywhere(gravity, D, q, v, mass,
+    const PairCase c = random_pair_case(D, random);
+    const GravitationalForce<D> gravity(c.i, c.j, random.uniform(0.1, 5.0));
+    check_force_everywhere(gravity, D, c.q, c.v, c.mass,
                            {"gravitation", "random", "seed " + std::to_string(seed)});
-    EXPECT_LE(asymmetry(hessian_x_of(gravity, q, v, mass)), 1e-15);
+    EXPECT_LE(asymmetry(hessian_x_of(gravity, c.q, c.v, c.mass)), 1e-15);
   }
 }
 
@@ -70,15 +63,12 @@ TYPED_TEST(GravitationalForceTest, DerivativesOfNearlyCoincidentParticles) {
   constexpr int D = TypeParam::value;
   Random random(37);
   for (double l : {1e-4, 1e-5, 1e-6}) {
-    const Vector c = random.uniform_vector(D, -1.0, 1.0);
-    Vector q(3 * D);
-    q << c, c + l * random.unit_vector(D), c + random.unit_vector(D);
-    const Vector v = random.uniform_vector(3 * D, -1.0, 1.0);
-    const Vector mass = random.uniform_vector(3 * D, 0.5, 2.0);
+    PairCase c = pair_at_distance(D, random, l);
+    c.mass = random.uniform_vector(3 * D, 0.5, 2.0);
     const GravitationalForce<D> gravity(1, 0, 0.3);
-    check_force_everywhere(gravity, D, q, v, mass,
+    check_force_everywhere(gravity, D, c.q, c.v, c.mass,
                            {"gravitation", "near-degenerate", "l = " + to_text(l)});
-    EXPECT_LE(asymmetry(hessian_x_of(gravity, q, v, mass)), 1e-15);
+    EXPECT_LE(asymmetry(hessian_x_of(gravity, c.q, c.v, c.mass)), 1e-15);
   }
 }
 

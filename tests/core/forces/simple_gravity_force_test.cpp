@@ -14,9 +14,7 @@
 namespace fosssim::testing {
 namespace {
 
-template <typename T>
-class SimpleGravityForceTest : public ::testing::Test {};
-TYPED_TEST_SUITE(SimpleGravityForceTest, Dimensions, DimensionName);
+FOSSSIM_TEST_SUITE_IN_2D_AND_3D(SimpleGravityForceTest);
 
 TYPED_TEST(SimpleGravityForceTest, ForceIsMassTimesAccelerationAndEnergyIsLinear) {
   constexpr int D = TypeParam::value;

@@ -30,9 +30,7 @@
 namespace fosssim::testing {
 namespace {
 
-template <typename T>
-class ConservationTest : public ::testing::Test {};
-TYPED_TEST_SUITE(ConservationTest, Dimensions, DimensionName);
+FOSSSIM_TEST_SUITE_IN_2D_AND_3D(ConservationTest);
 
 double total_energy(const TestScene& scene) {
   return compute_energies(scene.model, scene.state).total();

@@ -25,13 +25,7 @@
 namespace fosssim::testing {
 namespace {
 
-template <typename T>
-class ConvergenceTest : public ::testing::Test {};
-TYPED_TEST_SUITE(ConvergenceTest, Dimensions, DimensionName);
-
-constexpr IntegratorKind kAllKinds[] = {
-    IntegratorKind::kExplicitEuler, IntegratorKind::kSymplecticEuler,
-    IntegratorKind::kLinearizedImplicitEuler, IntegratorKind::kImplicitEuler};
+FOSSSIM_TEST_SUITE_IN_2D_AND_3D(ConvergenceTest);
 
 constexpr double kEndTime = 1.0;
 
@@ -153,7 +147,7 @@ Problem circular_orbit() {
 TYPED_TEST(ConvergenceTest, EveryMethodIsFirstOrderOnEveryProblem) {
   constexpr int D = TypeParam::value;
   for (const Problem& problem : {oscillator<D>(), free_fall<D>(), drag<D>(), circular_orbit<D>()}) {
-    for (IntegratorKind kind : kAllKinds) expect_first_order(problem, kind, D);
+    for (IntegratorKind kind : kAllIntegrators) expect_first_order(problem, kind, D);
   }
 }
 
@@ -162,7 +156,7 @@ TYPED_TEST(ConvergenceTest, FreeFallResultsAreKnownExactly) {
   const Problem problem = free_fall<D>();
   Vector g(D);
   g.setLinSpaced(-1.0, -9.81);
-  for (IntegratorKind kind : kAllKinds) {
+  for (IntegratorKind kind : kAllIntegrators) {
     const double h = 1.0 / 128;
     TestScene scene = problem.scene(kind, h);
     const State end = run_steps(scene.model, scene.state, 128);
@@ -181,7 +175,7 @@ TYPED_TEST(ConvergenceTest, DragFollowsTheDiscreteDecayFactors) {
   g.setLinSpaced(0.5, -9.81);
   const Vector terminal = m * g / b;
   const Problem problem = drag<D>();
-  for (IntegratorKind kind : kAllKinds) {
+  for (IntegratorKind kind : kAllIntegrators) {
     TestScene scene = problem.scene(kind, h);
     const State end = run_steps(scene.model, scene.state, 64);
     const bool implicit =

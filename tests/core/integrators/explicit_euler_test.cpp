@@ -17,44 +17,28 @@
 namespace fosssim::testing {
 namespace {
 
-template <typename T>
-class ExplicitEulerTest : public ::testing::Test {};
-TYPED_TEST_SUITE(ExplicitEulerTest, Dimensions, DimensionName);
+FOSSSIM_TEST_SUITE_IN_2D_AND_3D(ExplicitEulerTest);
 
 TYPED_TEST(ExplicitEulerTest, ParticleUnderGravityMovesWithTheOldVelocity) {
   constexpr int D = TypeParam::value;
-  Random random(101);
   const double h = 0.1;
-  const Vector x = random.uniform_vector(D, -1.0, 1.0), w = random.uniform_vector(D, -1.0, 1.0);
-  const Vector g = random.uniform_vector(D, -10.0, 10.0);
-  TestScene scene(D, IntegratorKind::kExplicitEuler, h);
-  scene.add_particle(2.0, x, w);
-  scene.add_simple_gravity(g);
+  const FallingParticle p(D, 101);
+  const TestScene scene = p.scene(IntegratorKind::kExplicitEuler, h);
   const State next = run_steps(scene.model, scene.state, 1);
-  expect_close(next.q, x + h * w, 1e-15, "position");
-  expect_close(next.v, w + h * g, 1e-15, "velocity");
+  expect_close(next.q, p.x + h * p.w, 1e-15, "position");
+  expect_close(next.v, p.w + h * p.g, 1e-15, "velocity");
   EXPECT_EQ(next.step, 1);
   EXPECT_EQ(next.time, h);
 }
 
 TYPED_TEST(ExplicitEulerTest, SpringFromAMovingFixedParticle) {
   constexpr int D = TypeParam::value;
-  Random random(102);
-  const double h = 0.05, m = 1.5, k = 40.0, l0 = 0.7, b = 0.9, c = 0.3;
-  const Vector a = random.uniform_vector(D, -1.0, 1.0), u = random.uniform_vector(D, -1.0, 1.0);
-  const Vector x = random.uniform_vector(D, -1.0, 1.0), w = random.uniform_vector(D, -1.0, 1.0);
-  TestScene scene(D, IntegratorKind::kExplicitEuler, h);
-  scene.add_particle(5.0, a, u, /*fixed=*/true);
-  scene.add_particle(m, x, w);
-  scene.add_spring(0, 1, k, l0, b);
-  scene.add_drag(c);
+  const double h = 0.05;
+  const AnchoredSpring s(D, 102, 1.5, 40.0, 0.7, 0.9, 0.3);
+  const TestScene scene = s.scene(IntegratorKind::kExplicitEuler, h);
   const State next = run_steps(scene.model, scene.state, 1);
-
-  const Vector force = spring_force_on_j(a, x, u, w, k, l0, b) - c * w;
-  expect_close(next.q.head(D), a + h * u, 1e-15, "fixed particle's position");
-  EXPECT_EQ(Vector(next.v.head(D)), u) << "a fixed particle keeps its velocity exactly";
-  expect_close(next.q.tail(D), x + h * w, 1e-15, "free particle's position");
-  expect_close(next.v.tail(D), w + (h / m) * force, 1e-14, "free particle's velocity");
+  const Vector force = spring_force_on_j(s.a, s.x, s.u, s.w, s.k, s.l0, s.b) - s.c * s.w;
+  s.expect_step(next, h, s.x + h * s.w, s.w + (h / s.m) * force, 1e-14);
 }
 
 }  // namespace

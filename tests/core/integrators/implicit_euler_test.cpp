@@ -27,9 +27,7 @@
 namespace fosssim::testing {
 namespace {
 
-template <typename T>
-class ImplicitEulerTest : public ::testing::Test {};
-TYPED_TEST_SUITE(ImplicitEulerTest, Dimensions, DimensionName);
+FOSSSIM_TEST_SUITE_IN_2D_AND_3D(ImplicitEulerTest);
 
 constexpr IntegratorKind kKind = IntegratorKind::kImplicitEuler;
 
@@ -42,40 +40,28 @@ std::pair<State, int> step_once(const SceneModel& model, State state) {
 
 TYPED_TEST(ImplicitEulerTest, ParticleUnderGravity) {
   constexpr int D = TypeParam::value;
-  Random random(131);
   const double h = 0.1;
-  const Vector x = random.uniform_vector(D, -1.0, 1.0), w = random.uniform_vector(D, -1.0, 1.0);
-  const Vector g = random.uniform_vector(D, -10.0, 10.0);
-  TestScene scene(D, kKind, h);
-  scene.add_particle(2.0, x, w);
-  scene.add_simple_gravity(g);
+  const FallingParticle p(D, 131);
+  const TestScene scene = p.scene(kKind, h);
   const auto [next, iterations] = step_once(scene.model, scene.state);
-  expect_close(next.v, w + h * g, 1e-15, "velocity");
-  expect_close(next.q, x + h * w + h * h * g, 1e-15, "position");
+  expect_close(next.v, p.w + h * p.g, 1e-15, "velocity");
+  expect_close(next.q, p.x + h * p.w + h * h * p.g, 1e-15, "position");
   EXPECT_EQ(iterations, 2);
 }
 
 TYPED_TEST(ImplicitEulerTest, DampedSpringStepSolvesTheBackwardEulerEquations) {
   constexpr int D = TypeParam::value;
+  const double h = 0.1;
   for (unsigned seed = 132; seed <= 135; ++seed) {
-    Random random(seed);
-    const double h = 0.1, m = 1.5, k = 300.0, l0 = 0.7, b = 2.5, c = 0.3;
-    const Vector a = random.uniform_vector(D, -1.0, 1.0), u = random.uniform_vector(D, -1.0, 1.0);
-    const Vector x = random.uniform_vector(D, -1.0, 1.0), w = random.uniform_vector(D, -1.0, 1.0);
-    TestScene scene(D, kKind, h);
-    scene.add_particle(5.0, a, u, /*fixed=*/true);
-    scene.add_particle(m, x, w);
-    scene.add_spring(0, 1, k, l0, b);
-    scene.add_drag(c);
+    const AnchoredSpring s(D, seed, 1.5, 300.0, 0.7, 2.5, 0.3);
+    const TestScene scene = s.scene(kKind, h);
     const auto [next, iterations] = step_once(scene.model, scene.state);
-
-    expect_close(next.q.head(D), a + h * u, 1e-15, "fixed particle's position");
-    EXPECT_EQ(Vector(next.v.head(D)), u);
     const Vector v1 = next.v.tail(D);
-    expect_close(next.q.tail(D), x + h * v1, 1e-15, "q' = q + h v'");
-    const Vector force = spring_force_on_j(a + h * u, x + h * v1, u, v1, k, l0, b) - c * v1;
-    const Vector residual = m * (v1 - w) - h * force;
-    EXPECT_LE(residual.norm(), 1e-12 * (m * w.norm() + h * force.norm()))
+    s.expect_step(next, h, s.x + h * v1, v1, 1e-15);  // fixed particle; q' = q + h v'
+    const Vector force =
+        spring_force_on_j(s.a + h * s.u, s.x + h * v1, s.u, v1, s.k, s.l0, s.b) - s.c * v1;
+    const Vector residual = s.m * (v1 - s.w) - h * force;
+    EXPECT_LE(residual.norm(), 1e-12 * (s.m * s.w.norm() + h * force.norm()))
         << "seed " << seed << ", " << iterations << " iterations";
     EXPECT_LE(iterations, 8) << "seed " << seed;
   }

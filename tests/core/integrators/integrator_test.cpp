@@ -20,13 +20,7 @@
 namespace fosssim::testing {
 namespace {
 
-template <typename T>
-class IntegratorTest : public ::testing::Test {};
-TYPED_TEST_SUITE(IntegratorTest, Dimensions, DimensionName);
-
-constexpr IntegratorKind kAllKinds[] = {
-    IntegratorKind::kExplicitEuler, IntegratorKind::kSymplecticEuler,
-    IntegratorKind::kLinearizedImplicitEuler, IntegratorKind::kImplicitEuler};
+FOSSSIM_TEST_SUITE_IN_2D_AND_3D(IntegratorTest);
 
 TEST(MakeIntegrator, BuildsTheNamedMethod) {
   SceneModel model;
@@ -46,7 +40,7 @@ TYPED_TEST(IntegratorTest, FixedParticlesGetNoForceAndMoveInAStraightLine) {
   const Vector start = random.uniform_vector(D, -1.0, 1.0);
   const Vector u = random.uniform_vector(D, -1.0, 1.0);
   const Vector anchor = random.uniform_vector(D, -1.0, 1.0);
-  for (IntegratorKind kind : kAllKinds) {
+  for (IntegratorKind kind : kAllIntegrators) {
     SCOPED_TRACE(integrator_name(kind));
     const double h = 0.01;
     TestScene scene(D, kind, h);

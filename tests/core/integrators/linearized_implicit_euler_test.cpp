@@ -27,58 +27,25 @@
 namespace fosssim::testing {
 namespace {
 
-template <typename T>
-class LinearizedImplicitEulerTest : public ::testing::Test {};
-TYPED_TEST_SUITE(LinearizedImplicitEulerTest, Dimensions, DimensionName);
+FOSSSIM_TEST_SUITE_IN_2D_AND_3D(LinearizedImplicitEulerTest);
 
 constexpr IntegratorKind kKind = IntegratorKind::kLinearizedImplicitEuler;
 
 TYPED_TEST(LinearizedImplicitEulerTest, ParticleUnderGravity) {
   constexpr int D = TypeParam::value;
-  Random random(121);
   const double h = 0.1;
-  const Vector x = random.uniform_vector(D, -1.0, 1.0), w = random.uniform_vector(D, -1.0, 1.0);
-  const Vector g = random.uniform_vector(D, -10.0, 10.0);
-  TestScene scene(D, kKind, h);
-  scene.add_particle(2.0, x, w);
-  scene.add_simple_gravity(g);
+  const FallingParticle p(D, 121);
+  const TestScene scene = p.scene(kKind, h);
   const State next = run_steps(scene.model, scene.state, 1);
-  expect_close(next.v, w + h * g, 1e-15, "velocity");
-  expect_close(next.q, x + h * w + h * h * g, 1e-15, "position");
-}
-
-/// The anchored spring scene of this file: fixed particle 0 at a moving with u, free 1 at x, w.
-struct Anchored {
-  double h = 0.1, m = 1.5, k = 200.0, l0 = 0.7, b = 0.0, c = 0.3;
-  Vector a, u, x, w;
-};
-
-template <int D>
-Anchored random_anchored(unsigned seed, double b) {
-  Random random(seed);
-  Anchored s;
-  s.b = b;
-  s.a = random.uniform_vector(D, -1.0, 1.0);
-  s.u = random.uniform_vector(D, -1.0, 1.0);
-  s.x = random.uniform_vector(D, -1.0, 1.0);
-  s.w = random.uniform_vector(D, -1.0, 1.0);
-  return s;
-}
-
-State step_anchored(const Anchored& s, int dim) {
-  TestScene scene(dim, kKind, s.h);
-  scene.add_particle(5.0, s.a, s.u, /*fixed=*/true);
-  scene.add_particle(s.m, s.x, s.w);
-  scene.add_spring(0, 1, s.k, s.l0, s.b);
-  scene.add_drag(s.c);
-  return run_steps(scene.model, scene.state, 1);
+  expect_close(next.v, p.w + h * p.g, 1e-15, "velocity");
+  expect_close(next.q, p.x + h * p.w + h * h * p.g, 1e-15, "position");
 }
 
 TYPED_TEST(LinearizedImplicitEulerTest, UndampedSpringFromAMovingFixedParticle) {
   constexpr int D = TypeParam::value;
+  const double h = 0.1;
   for (unsigned seed = 122; seed <= 124; ++seed) {
-    const Anchored s = random_anchored<D>(seed, 0.0);
-    const double h = s.h;
+    const AnchoredSpring s(D, seed, 1.5, 200.0, 0.7, 0.0, 0.3);
     const Vector d = (s.x + h * s.w) - (s.a + h * s.u);
     const double l = d.norm();
     const Vector n = d / l;
@@ -86,19 +53,16 @@ TYPED_TEST(LinearizedImplicitEulerTest, UndampedSpringFromAMovingFixedParticle) 
     const double along = rhs.dot(n);
     const Vector dv = along * n / (s.m + h * s.c + h * h * s.k) +
                       (rhs - along * n) / (s.m + h * s.c + h * h * s.k * (l - s.l0) / l);
-    const State next = step_anchored(s, D);
-    expect_close(next.q.head(D), s.a + h * s.u, 1e-15, "fixed particle's position");
-    EXPECT_EQ(Vector(next.v.head(D)), s.u);
-    expect_close(next.v.tail(D), s.w + dv, 1e-14, "free particle's velocity");
-    expect_close(next.q.tail(D), s.x + h * (s.w + dv), 1e-14, "free particle's position");
+    const TestScene scene = s.scene(kKind, h);
+    s.expect_step(run_steps(scene.model, scene.state, 1), h, s.x + h * (s.w + dv), s.w + dv, 1e-14);
   }
 }
 
 TYPED_TEST(LinearizedImplicitEulerTest, DampedSpringFromAMovingFixedParticle) {
   constexpr int D = TypeParam::value;
+  const double h = 0.1;
   for (unsigned seed = 125; seed <= 127; ++seed) {
-    const Anchored s = random_anchored<D>(seed, 2.5);
-    const double h = s.h;
+    const AnchoredSpring s(D, seed, 1.5, 200.0, 0.7, 2.5, 0.3);
     const Vector d = (s.x + h * s.w) - (s.a + h * s.u);
     const Vector rel = s.w - s.u;
     const double l = d.norm();
@@ -110,11 +74,8 @@ TYPED_TEST(LinearizedImplicitEulerTest, DampedSpringFromAMovingFixedParticle) {
     const Eigen::MatrixXd A = (s.m + h * s.c) * I + h * h * hess_x + h * s.b * P;
     const Vector rhs = h * (-s.k * (l - s.l0) * n - s.b * n.dot(rel) * n - s.c * s.w);
     const Vector dv = A.partialPivLu().solve(rhs);
-    const State next = step_anchored(s, D);
-    expect_close(next.q.head(D), s.a + h * s.u, 1e-15, "fixed particle's position");
-    EXPECT_EQ(Vector(next.v.head(D)), s.u);
-    expect_close(next.v.tail(D), s.w + dv, 1e-14, "free particle's velocity");
-    expect_close(next.q.tail(D), s.x + h * (s.w + dv), 1e-14, "free particle's position");
+    const TestScene scene = s.scene(kKind, h);
+    s.expect_step(run_steps(scene.model, scene.state, 1), h, s.x + h * (s.w + dv), s.w + dv, 1e-14);
   }
 }
 
