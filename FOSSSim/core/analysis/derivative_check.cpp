@@ -102,8 +102,8 @@ DerivativeCheck check_gradient(const Force& force, const Vector& q, const Vector
   const std::function<double(const Vector&)> energy = [&](const Vector& x) {
     return energy_at(force, x, rest, mass);
   };
-  const std::function<double(const Vector&)> apply = [&](const Vector& step) {
-    return g.dot(step);
+  const std::function<double(const Vector&)> apply = [&](const Vector& delta) {
+    return g.dot(delta);
   };
   for (const Vector& u : directions) {
     const auto [numeric, analytic] = directional_difference(q, u, options.step, energy, apply);
@@ -147,8 +147,8 @@ DerivativeCheck check_hessian(const Force& force, Derivative which, const Vector
   const std::function<Vector(const Vector&)> gradient = [&](const Vector& x) {
     return in_q ? gradient_at(force, x, v, mass) : gradient_at(force, q, x, mass);
   };
-  const std::function<Vector(const Vector&)> apply = [&](const Vector& step) {
-    return Vector(H * step);
+  const std::function<Vector(const Vector&)> apply = [&](const Vector& delta) {
+    return Vector(H * delta);
   };
   for (const Vector& u : directions) {
     const auto [numeric, analytic] = directional_difference(in_q ? q : v, u, step, gradient, apply);
