@@ -19,7 +19,8 @@ enum class Derivative {
 const char* derivative_name(Derivative which);
 
 struct DerivativeCheckOptions {
-  double step = 1e-6;       ///< finite-difference step ε, in the units of q (or v)
+  double step = 1e-6;            ///< finite-difference step ε in q, in the units of q
+  double velocity_step = 1e-4;   ///< finite-difference step in v for hessV, in the units of v
   int random_directions = 8;  ///< random unit directions u checked
   int all_directions_up_to = 60;  ///< also check every unit vector e_k when #DOFs ≤ this
   unsigned seed = 1;
@@ -32,8 +33,11 @@ struct DerivativeCheck {
   Derivative which = Derivative::kGradient;
   double absolute_error = 0.0;  ///< ‖analytic·u - finite difference‖
   double scale = 0.0;           ///< max(‖analytic·u‖, ‖finite difference‖) in that direction
-  double noise_floor = 0.0;     ///< round-off level of the finite difference
+  /// Round-off level of the comparison: ε_machine·1e3·(|U|/ε + ‖gradE‖ + |q|_∞‖hessX u‖) for
+  /// the gradient, ε_machine·1e3·(‖gradE‖/ε + |x|_∞‖H‖) for a Hessian H in x = q or v.
+  double noise_floor = 0.0;
   /// error / (rtol·scale + noise_floor) in the worst direction; the check passes when ≤ 1.
+  /// Infinite when a derivative or its estimate is NaN.
   double allowance_used = 0.0;
   bool passed() const { return allowance_used <= 1.0; }
   /// Error relative to the scale, 0 when both sides vanish.
@@ -41,8 +45,11 @@ struct DerivativeCheck {
 };
 
 /// Checks gradient, hessX and hessV of one force at (q, v) by Richardson-extrapolated central
-/// differences (error O(ε⁴)) along random and unit directions. The gradient is checked against
-/// the energy at v = 0, and only for forces with a potential (Force::has_potential).
+/// differences (error O(ε⁴)) along random and unit directions. The differences are compared
+/// with the analytic derivative applied to the steps actually taken between the rounded points
+/// x ± εu, so short distances far from the origin are checked as accurately as near it. The
+/// gradient is checked against the energy at v = 0, and only for forces with a potential
+/// (Force::has_potential).
 std::vector<DerivativeCheck> check_force_derivatives(const Force& force, const Vector& q,
                                                      const Vector& v, const Vector& mass,
                                                      const DerivativeCheckOptions& options);
