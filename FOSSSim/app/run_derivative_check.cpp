@@ -12,19 +12,23 @@ int run_derivative_check(const Scene& scene, const Options&) {
   check_options.step = suggest_finite_difference_step(scene.initial.q, scene.model.dim);
   const auto checks = check_model_derivatives(scene.model, scene.initial.q, scene.initial.v,
                                               check_options);
-  std::printf("Finite-difference check at the initial state of %s (step %.3g, %d random\n"
-              "directions%s; Richardson-extrapolated central differences)\n\n",
-              scene.source.c_str(), check_options.step, check_options.random_directions,
+  std::printf("Finite-difference check at the initial state of %s (steps %.3g in q and %.3g\n"
+              "in v, %d random directions%s; Richardson-extrapolated central differences).\n"
+              "A check passes when its error is within rtol %.0e of the value plus the\n"
+              "round-off floor of the differences; 'used' is the error over that allowance.\n\n",
+              scene.source.c_str(), check_options.step, check_options.velocity_step,
+              check_options.random_directions,
               scene.model.num_dofs() <= check_options.all_directions_up_to
                   ? " and every unit direction"
-                  : "");
-  std::printf("%-32s %-9s %12s %12s  %s\n", "force", "quantity", "rel. error", "abs. error",
-              "verdict");
+                  : "",
+              check_options.relative_tolerance);
+  std::printf("%-32s %-9s %11s %11s %11s %9s  %s\n", "force", "quantity", "rel. error",
+              "abs. error", "floor", "used", "verdict");
   bool all_passed = true;
   for (const DerivativeCheck& check : checks) {
-    std::printf("%-32s %-9s %12.3e %12.3e  %s\n", check.force.c_str(),
+    std::printf("%-32s %-9s %11.3e %11.3e %11.3e %9.2e  %s\n", check.force.c_str(),
                 derivative_name(check.which), check.relative_error(), check.absolute_error,
-                check.passed() ? "ok" : "FAILED");
+                check.noise_floor, check.allowance_used, check.passed() ? "ok" : "FAILED");
     all_passed = all_passed && check.passed();
   }
   std::printf("\n%zu checks, %s\n", checks.size(), all_passed ? "all passed" : "some FAILED");

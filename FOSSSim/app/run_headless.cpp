@@ -58,6 +58,9 @@ int run_headless(const Scene& scene, const Options& options) {
     std::cerr << "FOSSSim: error: " << error.what() << "\n";
     return kExitIoError;
   }
+  for (const std::string& note : simulation.integrator().notes()) {
+    std::cerr << "FOSSSim: note: " << note << "\n";
+  }
   std::cout << "Simulation complete at time " << simulation.state().time << ". Exiting."
             << std::endl;
   return kExitOk;

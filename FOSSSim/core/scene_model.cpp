@@ -32,4 +32,9 @@ bool SceneModel::has_symmetric_jacobians() const {
                      [](const auto& force) { return force->has_symmetric_jacobians(); });
 }
 
+bool SceneModel::is_conservative() const {
+  return std::all_of(forces.begin(), forces.end(),
+                     [](const auto& force) { return force->is_conservative(); });
+}
+
 }  // namespace fosssim

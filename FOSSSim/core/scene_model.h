@@ -59,6 +59,8 @@ struct SceneModel {
   std::int64_t num_steps() const;
   /// True when every force's Jacobians are symmetric, so the step matrix is symmetric.
   bool has_symmetric_jacobians() const;
+  /// True when every force derives from the potential energy its add_energy reports.
+  bool is_conservative() const;
 };
 
 }  // namespace fosssim

@@ -24,6 +24,7 @@ class Simulation {
   bool finished() const { return state_.step >= model_.num_steps(); }
 
   const SceneModel& model() const { return model_; }
+  const Integrator& integrator() const { return *integrator_; }
   const State& state() const { return state_; }
   /// The state, for grading (which restarts every step from a reference frame) and scripting.
   State& mutable_state() { return state_; }

@@ -2,6 +2,8 @@
 // The interface of every time-stepping method.
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "core/scene_model.h"
 #include "core/state.h"
@@ -21,6 +23,10 @@ class Integrator {
     ++state.step;
     state.time = static_cast<double>(state.step) * model.integrator.dt;
   }
+
+  /// Things the user should know about the run so far (for example, fallbacks taken), one
+  /// sentence each; empty when there is nothing to say.
+  virtual std::vector<std::string> notes() const { return {}; }
 
  protected:
   /// Updates state.q and state.v from step state.step to state.step + 1.
