@@ -174,11 +174,7 @@ Expected<FrameOutputs, std::string> FrameOutputs::open(const Scene& scene, const
         std::make_unique<PictureSequenceOutput>(sequence.first, sequence.second));
   }
   if (!options.movie.empty()) {
-    MovieSettings settings;
-    settings.width = options.width;
-    settings.height = options.height;
-    settings.fps = options.fps;
-    auto writer = MovieWriter::open(options.movie, settings);
+    auto writer = MovieWriter::open(options.movie, movie_settings(options));
     if (!writer) return writer.error();
     outputs.outputs_.push_back(std::make_unique<MovieOutput>(
         std::move(writer).value(), movie_stride(options, scene.model.integrator.dt)));

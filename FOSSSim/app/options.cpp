@@ -79,6 +79,7 @@ std::optional<std::string> check_picture_options(Options& options) {
            "combined with grading (-i)";
   }
   if (!options.movie.empty()) {
+    if (auto problem = check_movie_settings(options.movie, movie_settings(options))) return problem;
     if (options.display_given && options.display == 1) {
       return "--movie renders headless; leave out -d 1 (the window cannot record movies)";
     }
@@ -87,10 +88,15 @@ std::optional<std::string> check_picture_options(Options& options) {
   if (!options.window_screenshot.empty() && options.display == 0) {
     return "--window-screenshot needs the window (-d 1)";
   }
-  if (!(options.fps > 0.0) || options.fps > 1000.0) {
-    return "--fps must be in (0, 1000], found " + to_text(options.fps);
-  }
   return std::nullopt;
+}
+
+MovieSettings movie_settings(const Options& options) {
+  MovieSettings settings;
+  settings.width = options.width;
+  settings.height = options.height;
+  settings.fps = options.fps;
+  return settings;
 }
 
 void add_options(CLI::App& app, Options& options) {

@@ -9,6 +9,7 @@
 
 #include "core/expected.h"
 #include "core/scene.h"
+#include "pictures/movie_writer.h"
 
 namespace fosssim {
 
@@ -48,6 +49,9 @@ void add_options(CLI::App& app, Options& options);
 /// Checks the picture options against each other and the mode, parses --size, and makes
 /// --movie run headless when -d was not given. Returns a message for a bad combination.
 std::optional<std::string> check_picture_options(Options& options);
+
+/// The movie settings of --size and --fps.
+MovieSettings movie_settings(const Options& options);
 
 /// Applies the command line's overrides to a loaded scene; returns a message if one is invalid.
 std::optional<std::string> apply_overrides(const Options& options, Scene& scene);

@@ -190,16 +190,25 @@ std::vector<double> nice_ticks(double low, double high, int target) {
   std::vector<double> ticks;
   if (!(high > low) || target < 1) return ticks;
   const double raw = (high - low) / target;
-  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  double step = 10.0 * magnitude;
+  int exponent = static_cast<int>(std::floor(std::log10(raw)));
+  double multiple = 10.0;
   for (double m : {1.0, 2.0, 5.0}) {
-    if (raw <= m * magnitude) {
-      step = m * magnitude;
+    if (raw <= m * std::pow(10.0, exponent)) {
+      multiple = m;
       break;
     }
   }
-  for (double k = std::ceil(low / step - 1e-9); k * step <= high + 1e-9 * step; k += 1.0) {
-    ticks.push_back(k * step);
+  if (multiple == 10.0) multiple = 1.0, ++exponent;
+  // Tick k is k · multiple · 10^exponent; dividing by an exact power of ten gives the double
+  // nearest to 0.6, where multiplying by 0.1 would give 0.6000000000000001.
+  const double power = std::pow(10.0, std::abs(exponent));
+  const auto value = [&](double k) {
+    const double v = exponent < 0 ? k * multiple / power : k * multiple * power;
+    return v == 0.0 ? 0.0 : v;  // no "-0" labels
+  };
+  const double step = value(1.0);
+  for (double k = std::ceil(low / step - 1e-9); value(k) <= high + 1e-9 * step; k += 1.0) {
+    ticks.push_back(value(k));
   }
   return ticks;
 }

@@ -89,7 +89,9 @@ std::string read_log(std::FILE* log) {
   return text;
 }
 
-std::optional<std::string> check_settings(const std::string& path, const MovieSettings& s) {
+}  // namespace
+
+std::optional<std::string> check_movie_settings(const std::string& path, const MovieSettings& s) {
   if (lowercase(std::filesystem::path(path).extension().string()) != ".mp4") {
     return "the movie " + path + " must be named *.mp4 (FOSSSim writes H.264 in MP4)";
   }
@@ -104,8 +106,6 @@ std::optional<std::string> check_settings(const std::string& path, const MovieSe
   }
   return std::nullopt;
 }
-
-}  // namespace
 
 std::optional<std::string> find_program(const std::string& name) {
   const char* path = std::getenv("PATH");
@@ -125,7 +125,7 @@ std::optional<std::string> find_program(const std::string& name) {
 
 Expected<MovieWriter, std::string> MovieWriter::open(const std::string& path,
                                                      const MovieSettings& settings) {
-  if (auto problem = check_settings(path, settings)) return *problem;
+  if (auto problem = check_movie_settings(path, settings)) return *problem;
   const auto program = find_program("ffmpeg");
   if (!program) {
     return std::string(

@@ -61,6 +61,11 @@ class MovieWriter {
   bool done_ = false;
 };
 
+/// Why `path` and `settings` cannot make a movie (not *.mp4, odd size, bad frame rate), or
+/// nothing when they can.
+std::optional<std::string> check_movie_settings(const std::string& path,
+                                                const MovieSettings& settings);
+
 /// The full path of an executable `name` on PATH, or nothing.
 std::optional<std::string> find_program(const std::string& name);
 
