@@ -5,26 +5,14 @@
 
 #include "app_render/program_runner.h"
 #include "pictures/cairo_painter.h"
+#include "render/tiny_scene.h"
 
 namespace fosssim {
 namespace {
 
-// 12 steps of a red particle on a spring; a viewport fixes the camera: particle 0 starts at
-// pixel (128, 256).
-constexpr const char* kScene = R"(<scene>
-  <duration time="0.12"/><integrator type="explicit-euler" dt="0.01"/>
-  <particle m="1" px="-0.5" py="0" vx="0" vy="1" fixed="0" radius="0.1"/>
-  <particle m="1" px="0.5" py="0.25" vx="0" vy="0" fixed="1"/>
-  <edge i="0" j="1" radius="0.05"/>
-  <springforce edge="0" k="20" l0="1"/>
-  <particlecolor i="0" r="1" g="0" b="0"/>
-  <backgroundcolor r="0.1" g="0.1" b="0.2"/>
-  <viewport cx="0" cy="0" size="1"/>
-</scene>)";
-
 class CliPictures : public ::testing::Test {
  protected:
-  void SetUp() override { folder_.write("scene.xml", kScene); }
+  void SetUp() override { folder_.write("scene.xml", testing::kTinyScene); }
   testing::ProgramResult fosssim(const std::string& arguments) {
     return testing::run_command(folder_,
                                 testing::quoted(testing::fosssim_program()) + " " + arguments);
@@ -44,15 +32,15 @@ TEST_F(CliPictures, PngPerStepGoesIntoPngs) {
   const auto result = fosssim("-s scene.xml -d 0 -g 1");
   ASSERT_EQ(result.status, 0) << result.err;
   const auto names = files_in("pngs");
-  ASSERT_EQ(names.size(), 13u);  // the initial state and 12 steps
+  ASSERT_EQ(names.size(), testing::kTinySteps + 1u);  // the initial state and every step
   EXPECT_EQ(names.front(), "frame_00000.png");
-  EXPECT_EQ(names.back(), "frame_00012.png");
+  EXPECT_EQ(names.back(), "frame_00030.png");
   const Image first = read_png(folder_ / "pngs/frame_00000.png");
   EXPECT_EQ(first.width, 512);
-  EXPECT_LT(color_distance(first.color_at(128, 256), Color{1, 0, 0}), 0.01);
-  EXPECT_LT(color_distance(first.color_at(500, 500), Color{0.1, 0.1, 0.2}), 0.01);
-  // The particle moves up: 12 steps later its old centre is no longer its centre's colour.
-  const Image last = read_png(folder_ / "pngs/frame_00012.png");
+  EXPECT_LT(color_distance(first.color_at(128, 256), testing::kRed), 0.01);
+  EXPECT_LT(color_distance(first.color_at(500, 500), testing::kBackground), 0.01);
+  // The particle moves up, so the last picture differs from the first.
+  const Image last = read_png(folder_ / "pngs/frame_00030.png");
   EXPECT_NE(last.pixels, first.pixels);
 }
 
@@ -64,7 +52,7 @@ TEST_F(CliPictures, PngFolderAndSizeCanBeChosen) {
   EXPECT_EQ(image.height, 240);
   // Same camera, 240 pixels tall: 120 per unit, centre (160, 120); particle 0 at (100, 120).
   EXPECT_LT(color_distance(read_png(folder_ / "out/frames/frame_00000.png").color_at(100, 120),
-                           Color{1, 0, 0}),
+                           testing::kRed),
             0.01);
 }
 
@@ -72,7 +60,7 @@ TEST_F(CliPictures, SvgPerStepIsValidXml) {
   const auto result = fosssim("-s scene.xml -d 0 -m svgs");
   ASSERT_EQ(result.status, 0) << result.err;
   const auto names = files_in("svgs");
-  ASSERT_EQ(names.size(), 13u);
+  ASSERT_EQ(names.size(), testing::kTinySteps + 1u);
   for (const auto& name : names) {
     tinyxml2::XMLDocument document;
     ASSERT_EQ(document.LoadFile((folder_ / ("svgs/" + name)).c_str()), tinyxml2::XML_SUCCESS)
@@ -84,8 +72,9 @@ TEST_F(CliPictures, SvgPerStepIsValidXml) {
 TEST_F(CliPictures, PicturesAndTrajectoryInOneRun) {
   const auto result = fosssim("-s scene.xml -d 0 -g 1 -m svgs -o run.bin");
   ASSERT_EQ(result.status, 0) << result.err;
-  EXPECT_EQ(std::filesystem::file_size(folder_ / "run.bin"), 13u * 2 * 4 * 8);
-  EXPECT_EQ(files_in("pngs").size(), 13u);
+  EXPECT_EQ(std::filesystem::file_size(folder_ / "run.bin"),
+            (testing::kTinySteps + 1u) * 2 * 4 * 8);
+  EXPECT_EQ(files_in("pngs").size(), testing::kTinySteps + 1u);
 }
 
 TEST_F(CliPictures, PicturesCannotBeCombinedWithGrading) {

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "app_render/program_runner.h"
-#include "pictures/tiny_scene.h"
+#include "render/tiny_scene.h"
 
 namespace fosssim {
 namespace {

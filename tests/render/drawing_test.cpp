@@ -4,31 +4,15 @@
 
 #include "io/scene_loader.h"
 #include "render/scene_view.h"
+#include "render/tiny_scene.h"
 
 namespace fosssim {
 namespace {
 
-// Two particles and an edge seen through a fixed viewport: 256 pixels per unit on 512x512.
-constexpr const char* kTiny = R"(<scene>
-  <duration time="1"/><integrator type="explicit-euler" dt="0.01"/>
-  <particle m="1" px="-0.5" py="0" vx="0" vy="1" fixed="0" radius="0.1"/>
-  <particle m="1" px="0.5" py="0.25" vx="0" vy="0" fixed="1"/>
-  <edge i="0" j="1" radius="0.05"/>
-  <particlecolor i="0" r="1" g="0" b="0"/>
-  <edgecolor i="0" r="0" g="1" b="0"/>
-  <backgroundcolor r="0.1" g="0.1" b="0.2"/>
-  <particlepath i="0" duration="0.5" r="1" g="1" b="0"/>
-  <viewport cx="0" cy="0" size="1"/>
-</scene>)";
-
-Scene tiny() {
-  auto scene = load_scene_text(kTiny, "tiny.xml");
-  EXPECT_TRUE(scene.has_value());
-  return std::move(scene).value();
-}
+using testing::tiny_scene;
 
 TEST(ComposeDrawing, PlacesParticlesAndEdgesInPixels) {
-  const Scene scene = tiny();
+  const Scene scene = tiny_scene();
   const PathHistory paths(scene);
   const Camera camera{0.0, 0.0, 1.0};
   const Drawing d = compose_drawing(scene, scene.initial, paths, camera, 512, 512);
@@ -55,7 +39,7 @@ TEST(ComposeDrawing, PlacesParticlesAndEdgesInPixels) {
 }
 
 TEST(ComposeDrawing, AddsMarksAndStatusAndCanHideTheTime) {
-  const Scene scene = tiny();
+  const Scene scene = tiny_scene();
   Overlay overlay;
   overlay.show_time = false;
   overlay.status = {"paused"};
@@ -69,7 +53,7 @@ TEST(ComposeDrawing, AddsMarksAndStatusAndCanHideTheTime) {
 }
 
 TEST(SceneView, RecordsTrailsAndRecentres) {
-  const Scene scene = tiny();
+  const Scene scene = tiny_scene();
   SceneView view(scene, scene.initial, 512, 512);
   EXPECT_DOUBLE_EQ(view.camera().scale, 1.0);  // the viewport
   State state = scene.initial;
@@ -82,7 +66,7 @@ TEST(SceneView, RecordsTrailsAndRecentres) {
   ASSERT_EQ(d.paths.size(), 1u);
   EXPECT_EQ(d.paths[0].points.size(), 50u);  // ceil(0.5 / 0.01)
   EXPECT_DOUBLE_EQ(d.paths[0].points.back().y, 256.0 - 0.6 * 256.0);
-  EXPECT_EQ(d.paths[0].color, (Color{1, 1, 0}));
+  EXPECT_EQ(d.paths[0].color, testing::kYellow);
   view.recenter(state);
   EXPECT_DOUBLE_EQ(view.camera().cx, 0.0);
   EXPECT_DOUBLE_EQ(view.camera().cy, 0.5 * (0.6 + 0.25));

@@ -89,25 +89,28 @@ void write_run(const Scene& scene, bool with_hook, const std::string& path) {
   writer->commit();
 }
 
-TEST(GradingWithFountain, ATrajectoryWithTheSameTeleportsPasses) {
+/// Grades a run of `scene` written with or without its hook.
+std::optional<GradeReport> grade_run(const Scene& scene, bool with_hook) {
   const testing::ScratchFolder folder;
-  const Scene scene = load(kFountain);
-  write_run(scene, true, folder / "run.bin");
+  write_run(scene, with_hook, folder / "run.bin");
   auto file = TrajectoryReader::open(folder / "run.bin", scene.model.num_dofs());
-  ASSERT_TRUE(file.has_value());
-  const auto report = grade_trajectory(scene, *file);
+  if (!file) return std::nullopt;
+  auto report = grade_trajectory(scene, *file);
+  if (!report) return std::nullopt;
+  return std::move(report).value();
+}
+
+TEST(GradingWithFountain, ATrajectoryWithTheSameTeleportsPasses) {
+  const Scene scene = load(kFountain);
+  const auto report = grade_run(scene, true);
   ASSERT_TRUE(report.has_value());
   EXPECT_TRUE(report->passed());
   EXPECT_EQ(report->max_position, 0.0);
 }
 
 TEST(GradingWithFountain, ATrajectoryWithoutTeleportsFailsAtTheFirstTeleport) {
-  const testing::ScratchFolder folder;
   const Scene scene = load(kFountain);
-  write_run(scene, false, folder / "run.bin");
-  auto file = TrajectoryReader::open(folder / "run.bin", scene.model.num_dofs());
-  ASSERT_TRUE(file.has_value());
-  const auto report = grade_trajectory(scene, *file);
+  const auto report = grade_run(scene, false);
   ASSERT_TRUE(report.has_value());
   EXPECT_FALSE(report->passed());
   ASSERT_TRUE(report->first_divergence.has_value());

@@ -11,25 +11,13 @@
 #include "io/scene_loader.h"
 #include "io/trajectory_file.h"
 #include "pictures/cairo_painter.h"
+#include "render/tiny_scene.h"
 #include "viewer/xvfb_server.h"
 
 namespace fosssim {
 namespace {
 
-// The tiny scene of the picture tests, moving, with a trail.
-constexpr const char* kScene = R"(<scene>
-  <duration time="0.3"/><integrator type="symplectic-euler" dt="0.01"/>
-  <maxsimfreq max="1000"/>
-  <particle m="1" px="-0.5" py="0" vx="0" vy="1" fixed="0" radius="0.1"/>
-  <particle m="1" px="0.5" py="0.25" vx="0" vy="0" fixed="1"/>
-  <edge i="0" j="1" radius="0.05"/>
-  <springforce edge="0" k="20" l0="1"/>
-  <particlecolor i="0" r="1" g="0" b="0"/>
-  <edgecolor i="0" r="0" g="1" b="0"/>
-  <backgroundcolor r="0.1" g="0.1" b="0.2"/>
-  <particlepath i="0" duration="1" r="1" g="1" b="0"/>
-  <viewport cx="0" cy="0" size="1"/>
-</scene>)";
+using testing::kTinyScene;
 
 class WindowTest : public ::testing::Test {
  protected:
@@ -39,7 +27,7 @@ class WindowTest : public ::testing::Test {
     }
     server_ = testing::XvfbServer::start();
     ASSERT_TRUE(server_.has_value()) << "Xvfb is installed but did not start";
-    scene_ = folder_.write("scene.xml", kScene);
+    scene_ = folder_.write("scene.xml", kTinyScene);
   }
 
   testing::ProgramResult fosssim(const std::string& arguments) {
@@ -65,7 +53,7 @@ TEST_F(WindowTest, OpensAndShowsTheScene) {
   // Particle 1 is fixed at pixel (384, 192) and has the default colour; far corners show the
   // background.
   EXPECT_LT(color_distance(shot.color_at(384, 192), Appearance::kDefaultParticleColor), 0.01);
-  EXPECT_LT(color_distance(shot.color_at(500, 500), Color{0.1, 0.1, 0.2}), 0.01);
+  EXPECT_LT(color_distance(shot.color_at(500, 500), testing::kBackground), 0.01);
 }
 
 TEST_F(WindowTest, ShowsExactlyWhatTheHeadlessPicturesShow) {
@@ -82,7 +70,7 @@ TEST_F(WindowTest, ShowsExactlyWhatTheHeadlessPicturesShow) {
 
 TEST_F(WindowTest, GradingModeRingsTheParticleTheFileGotWrong) {
   ASSERT_EQ(fosssim("-s scene.xml -d 0 -o run.bin").status, 0);
-  auto scene = load_scene_text(kScene, "scene.xml");
+  auto scene = load_scene_text(kTinyScene, "scene.xml");
   ASSERT_TRUE(scene.has_value());
   {  // Move particle 0 by 0.01 (2.56 pixels) at step 12.
     auto reader = TrajectoryReader::open(folder_ / "run.bin", scene->model.num_dofs());
@@ -116,12 +104,12 @@ TEST_F(WindowTest, GradingModeRingsTheParticleTheFileGotWrong) {
   }
   EXPECT_GE(red, 25) << "of 36 points on the ring";
   // Particle 1 agrees with the reference and has no ring.
-  EXPECT_LT(color_distance(shot.color_at(384 + 29, 192), Color{0.1, 0.1, 0.2}), 0.01);
+  EXPECT_LT(color_distance(shot.color_at(384 + 29, 192), testing::kBackground), 0.01);
 }
 
 TEST(WindowWithoutDisplay, SaysHowToRunHeadless) {
   const testing::ScratchFolder folder;
-  folder.write("scene.xml", kScene);
+  folder.write("scene.xml", kTinyScene);
   const auto result =
       testing::run_command(folder, "env -u DISPLAY " + testing::quoted(testing::fosssim_program()) +
                                        " -s scene.xml -o never.bin");
