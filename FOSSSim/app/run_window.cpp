@@ -76,9 +76,13 @@ int run_simulation_window(const Scene& scene, const Options& options) {
     std::cerr << "FOSSSim: error: " << outcome.error() << "\n";
     return kExitBadInput;
   }
-  if (outputs_open) {
-    close_outputs("the window was closed at step " + std::to_string(stepper.state().step));
+  const std::string when = " at step " + std::to_string(stepper.state().step);
+  if (interrupt_requested()) {
+    if (outputs_open) close_outputs("interrupted" + when);
+    else std::cerr << "FOSSSim: interrupted" << when << "\n";
+    return kExitInterrupted;
   }
+  if (outputs_open) close_outputs("the window was closed" + when);
   return status;
 }
 
