@@ -8,8 +8,8 @@
 namespace fosssim {
 
 int run_window(const Scene&, const Options&) {
-  std::cerr << "FOSSSim: error: this build has no interactive window (GLUT was not found when "
-               "it was built); run headless with -d 0, and see docs/viewing.md for pictures "
+  std::cerr << "FOSSSim: error: this build has no interactive window (it was built without GLUT, "
+               "or with FOSSSIM_WITH_WINDOW=OFF); run headless with -d 0, and see docs/viewing.md for pictures "
                "and movies without a display\n";
   return kExitBadInput;
 }
