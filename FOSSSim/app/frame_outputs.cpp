@@ -164,14 +164,17 @@ Expected<FrameOutputs, std::string> FrameOutputs::open(const Scene& scene, const
     if (!writer) return writer.error();
     outputs.outputs_.push_back(std::make_unique<TrajectoryOutput>(std::move(writer).value()));
   }
-  const std::pair<bool, std::pair<std::string, PictureFormat>> sequences[] = {
-      {options.png == 1, {options.png_directory, PictureFormat::kPng}},
-      {!options.svg_directory.empty(), {options.svg_directory, PictureFormat::kSvg}}};
-  for (const auto& [wanted, sequence] : sequences) {
-    if (!wanted) continue;
-    if (auto problem = make_directory(sequence.first)) return *problem;
-    outputs.outputs_.push_back(
-        std::make_unique<PictureSequenceOutput>(sequence.first, sequence.second));
+  auto add_sequence = [&](const std::string& directory,
+                          PictureFormat format) -> std::optional<std::string> {
+    if (auto problem = make_directory(directory)) return problem;
+    outputs.outputs_.push_back(std::make_unique<PictureSequenceOutput>(directory, format));
+    return std::nullopt;
+  };
+  if (options.png == 1) {
+    if (auto problem = add_sequence(options.png_directory, PictureFormat::kPng)) return *problem;
+  }
+  if (!options.svg_directory.empty()) {
+    if (auto problem = add_sequence(options.svg_directory, PictureFormat::kSvg)) return *problem;
   }
   if (!options.movie.empty()) {
     auto writer = MovieWriter::open(options.movie, movie_settings(options));

@@ -78,8 +78,10 @@ int run_simulation_window(const Scene& scene, const Options& options) {
   }
   const std::string when = " at step " + std::to_string(stepper.state().step);
   if (interrupt_requested()) {
-    if (outputs_open) close_outputs("interrupted" + when);
-    else std::cerr << "FOSSSim: interrupted" << when << "\n";
+    if (outputs_open)
+      close_outputs("interrupted" + when);
+    else
+      std::cerr << "FOSSSim: interrupted" << when << "\n";
     return kExitInterrupted;
   }
   if (outputs_open) close_outputs("the window was closed" + when);
