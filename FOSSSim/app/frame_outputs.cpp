@@ -7,11 +7,11 @@
 #include <optional>
 
 #include "core/analysis/energy.h"
+#include "io/output_file.h"
 #include "io/trajectory_file.h"
 #include "pictures/cairo_painter.h"
 #include "pictures/energy_plot.h"
 #include "pictures/movie_writer.h"
-#include "pictures/output_file.h"
 
 namespace fosssim {
 
@@ -119,9 +119,9 @@ class EnergyOutput final : public FrameOutput {
     return buffer;
   }
   void write_csv(const std::string& path) const {
-    const std::string temporary = partial_name(path);
+    const OutputFile output(path);
     {
-      std::ofstream out(temporary);
+      std::ofstream out(output.write_path());
       out << "time,kinetic,potential,total\n";
       char line[128];
       for (const EnergySample& s : samples_) {
@@ -130,9 +130,12 @@ class EnergyOutput final : public FrameOutput {
         out << line;
       }
       out.flush();
-      if (!out) throw std::runtime_error("cannot write " + temporary);
+      if (!out) {
+        output.discard();
+        throw std::runtime_error("cannot write " + output.write_path());
+      }
     }
-    move_into_place(temporary, path);
+    output.commit();
   }
 
   const Scene& scene_;

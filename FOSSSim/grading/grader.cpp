@@ -1,12 +1,12 @@
 #include "grading/grader.h"
 
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include "grading/step_grader.h"
+#include "io/output_file.h"
 
 namespace fosssim {
 
@@ -61,18 +61,19 @@ void print_grade_report(std::ostream& out, const GradeReport& report) {
 }
 
 void write_residual_file(const std::string& path, const GradeReport& report) {
-  const std::string temporary = path + ".partial";
+  const OutputFile output(path);
   {
-    std::ofstream out(temporary);
+    std::ofstream out(output.write_path());
     for (const Criterion& c : criteria_of(report)) {
       out << (c.passed ? 1 : 0) << "   " << c.value << "\n";
     }
     out.flush();
-    if (!out) throw std::runtime_error("cannot write " + temporary);
+    if (!out) {
+      output.discard();
+      throw std::runtime_error("cannot write " + output.write_path());
+    }
   }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + error.message());
+  output.commit();
 }
 
 std::string describe_failure(const GradeReport& report, int dim) {

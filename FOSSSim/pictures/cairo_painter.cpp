@@ -12,7 +12,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "pictures/output_file.h"
+#include "io/output_file.h"
 
 namespace fosssim {
 
@@ -146,9 +146,10 @@ PictureFormat picture_format_for(const std::string& path) {
 
 void write_picture(const std::string& path, PictureFormat format, int width, int height,
                    const std::function<void(cairo_t*)>& paint) {
-  const std::string temporary = partial_name(path);
+  const OutputFile output(path);
+  const std::string& target = output.write_path();
   const bool svg = format == PictureFormat::kSvg;
-  SurfacePtr surface(svg ? cairo_svg_surface_create(temporary.c_str(), width, height)
+  SurfacePtr surface(svg ? cairo_svg_surface_create(target.c_str(), width, height)
                          : cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
   cairo_status_t status = cairo_surface_status(surface.get());
   if (status == CAIRO_STATUS_SUCCESS) {
@@ -157,16 +158,16 @@ void write_picture(const std::string& path, PictureFormat format, int width, int
       ContextPtr cr(cairo_create(surface.get()));
       paint(cr.get());
     }
-    if (!svg) status = cairo_surface_write_to_png(surface.get(), temporary.c_str());
+    if (!svg) status = cairo_surface_write_to_png(surface.get(), target.c_str());
     cairo_surface_finish(surface.get());
     if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface.get());
   }
   surface.reset();
   if (status != CAIRO_STATUS_SUCCESS) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write " + temporary + ": " + cairo_status_to_string(status));
+    output.discard();
+    throw std::runtime_error("cannot write " + target + ": " + cairo_status_to_string(status));
   }
-  move_into_place(temporary, path);
+  output.commit();
 }
 
 void write_png(const Drawing& drawing, const std::string& path) {

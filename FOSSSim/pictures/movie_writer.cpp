@@ -16,7 +16,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include "pictures/output_file.h"
 
 extern char** environ;
 
@@ -139,7 +138,7 @@ Expected<MovieWriter, std::string> MovieWriter::open(const std::string& path,
   if (::pipe2(fds, O_CLOEXEC) != 0)
     return "cannot create a pipe: " + std::string(std::strerror(errno));
   std::FILE* log = std::tmpfile();
-  const auto arguments = ffmpeg_arguments(*program, settings, partial_name(path));
+  const auto arguments = ffmpeg_arguments(*program, settings, OutputFile(path).write_path());
   std::vector<char*> argv;
   for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
@@ -175,10 +174,16 @@ Expected<MovieWriter, std::string> MovieWriter::open(const std::string& path,
 
 MovieWriter::MovieWriter(std::string path, MovieSettings settings, pid_t pid, int pipe,
                          std::FILE* log)
-    : path_(std::move(path)), settings_(settings), pid_(pid), pipe_(pipe), log_(log) {}
+    : path_(std::move(path)),
+      output_(path_),
+      settings_(settings),
+      pid_(pid),
+      pipe_(pipe),
+      log_(log) {}
 
 MovieWriter::MovieWriter(MovieWriter&& other) noexcept
     : path_(std::move(other.path_)),
+      output_(std::move(other.output_)),
       settings_(other.settings_),
       pid_(other.pid_),
       pipe_(other.pipe_),
@@ -208,7 +213,7 @@ void MovieWriter::write_frame(const Image& frame) {
     if (written <= 0) {
       const auto message = finish_process();
       done_ = true;
-      std::remove(partial_name(path_).c_str());
+      output_.discard();
       throw std::runtime_error("ffmpeg stopped while writing " + path_ + ": " +
                                message.value_or("it closed its input"));
     }
@@ -237,23 +242,18 @@ std::optional<std::string> MovieWriter::finish_process() {
 void MovieWriter::commit() {
   done_ = true;
   if (auto problem = finish_process()) {
-    std::remove(partial_name(path_).c_str());
+    output_.discard();
     throw std::runtime_error("cannot write the movie " + path_ + ": " + *problem);
   }
-  move_into_place(partial_name(path_), path_);
+  output_.commit();
 }
 
 std::string MovieWriter::abandon() {
   done_ = true;
   // Closing ffmpeg's input lets it finish a playable file of the frames it has.
   const bool ok = !finish_process().has_value();
-  const std::string kept = path_ + ".incomplete";
-  std::error_code error;
-  if (ok && frames_ > 0) {
-    std::filesystem::rename(partial_name(path_), kept, error);
-    if (!error) return kept;
-  }
-  std::filesystem::remove(partial_name(path_), error);
+  if (ok && frames_ > 0) return output_.keep_unfinished();
+  output_.discard();
   return "";
 }
 

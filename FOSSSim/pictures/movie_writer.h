@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/expected.h"
+#include "io/output_file.h"
 #include "pictures/image.h"
 
 namespace fosssim {
@@ -20,8 +21,8 @@ struct MovieSettings {
 };
 
 /// Writes an MP4 movie (H.264, yuv420p, faststart) by running `ffmpeg` and piping it raw BGRA
-/// frames. The movie is written to "<path>.partial" and renamed to `path` by commit(), so a
-/// failed or interrupted run never leaves a file that looks complete. ffmpeg runs in its own
+/// frames. The movie is written to "<path>.partial" and renamed to `path` by commit() (see
+/// io/output_file.h), so a failed or interrupted run never leaves a file that looks complete. ffmpeg runs in its own
 /// process group, so Ctrl-C reaches FOSSSim, which then stops it cleanly.
 class MovieWriter {
  public:
@@ -54,6 +55,7 @@ class MovieWriter {
   std::optional<std::string> finish_process();
 
   std::string path_;
+  OutputFile output_;
   MovieSettings settings_;
   pid_t pid_ = -1;
   int pipe_ = -1;
