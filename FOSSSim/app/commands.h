@@ -3,6 +3,7 @@
 
 #include "app/options.h"
 #include "core/scene.h"
+#include "grading/grader.h"
 
 namespace fosssim {
 
@@ -11,6 +12,14 @@ int run_headless(const Scene& scene, const Options& options);
 
 /// Grades the trajectory of -i against the scene (SPEC section 5).
 int run_grading(const Scene& scene, const Options& options);
+
+/// Prints the course's report of a finished grading, writes the residual file, explains a
+/// failure; returns the exit status (0 passed, 1 failed, 4 residual file not written).
+int report_grade(const Scene& scene, const Options& options, const GradeReport& report);
+
+/// Opens the interactive window (SPEC section 6) on the scene: a run, or with -i a step-by-step
+/// grading replay that rings the particles where the file disagrees with the reference.
+int run_window(const Scene& scene, const Options& options);
 
 /// Finite-difference check of every force at the scene's initial state.
 int run_derivative_check(const Scene& scene, const Options& options);

@@ -1,5 +1,6 @@
-// FOSSSim command line: loads a scene, then runs it headless, grades a trajectory against it,
-// checks its derivatives, or opens the window. Only this file chooses exit statuses.
+// FOSSSim command line: loads a scene, then runs it headless (writing trajectories, pictures,
+// movies, energy plots), grades a trajectory against it, checks its derivatives, or opens the
+// window. Only this file chooses exit statuses.
 
 #include <iostream>
 
@@ -8,6 +9,7 @@
 #include "app/interrupt.h"
 #include "app/options.h"
 #include "io/scene_loader.h"
+#include "scripting/step_hooks.h"
 
 int main(int argc, char** argv) {
   using namespace fosssim;
@@ -27,6 +29,12 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   }
 
+  options.display_given = app.count("--display") > 0;
+  if (auto problem = check_picture_options(options)) {
+    std::cerr << "FOSSSim: error: " << *problem << "\nRun FOSSSim --help for the options.\n";
+    return kExitBadInput;
+  }
+
   auto loaded = load_scene_file(options.scene);
   if (!loaded) {
     std::cerr << loaded.error().what() << "\n";
@@ -41,11 +49,12 @@ int main(int argc, char** argv) {
   if (!scene.description.empty() && !options.quiet) std::cout << scene.description << std::endl;
 
   if (options.check_derivatives) return run_derivative_check(scene, options);
-  if (options.display == 1) {
-    std::cerr << "FOSSSim: error: this build has no interactive window; run with -d 0\n";
-    return kExitBadInput;
+  if (!scene.tag.empty() && !make_step_hook(scene) && !options.quiet) {
+    std::cerr << "FOSSSim: note: scenetag '" << scene.tag
+              << "' has no scripted behaviour in FOSSSim; the scene runs without it\n";
   }
   install_interrupt_handler();
+  if (options.display == 1) return run_window(scene, options);
   if (!options.input.empty()) return run_grading(scene, options);
   return run_headless(scene, options);
 }

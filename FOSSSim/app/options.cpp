@@ -1,10 +1,103 @@
 #include "app/options.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "core/text.h"
 
 namespace fosssim {
+
+namespace {
+
+void add_picture_options(CLI::App& app, Options& options) {
+  const char* group = "Pictures (docs/viewing.md)";
+  app.add_option("-g,--png", options.png,
+                 "1: write a PNG of every state into the PNG folder (frame_00000.png is the\n"
+                 "initial state, frame_00001.png the state after step 1, ...)")
+      ->check(CLI::IsMember({0, 1}))
+      ->group(group);
+  app.add_option("--png-dir", options.png_directory, "The PNG folder of -g 1")
+      ->capture_default_str()
+      ->group(group);
+  app.add_option("-m,--svg", options.svg_directory,
+                 "Write an SVG of every state into this folder (frame_00000.svg, ...)")
+      ->group(group);
+  app.add_option("--movie", options.movie,
+                 "Render the run headless into this MP4 movie (H.264) with the ffmpeg program;\n"
+                 "needs no display. Implies -d 0")
+      ->group(group);
+  app.add_option("--movie-stride", options.movie_stride,
+                 "A movie frame every N steps (frames 0, N, 2N, ...); default: the stride that\n"
+                 "plays the run at about real time at --fps")
+      ->check(CLI::PositiveNumber)
+      ->group(group);
+  app.add_option("--fps", options.fps, "Movie frames per second")
+      ->capture_default_str()
+      ->group(group);
+  app.add_option("--size", options.size, "Width x height in pixels of the window, pictures and movie")
+      ->capture_default_str()
+      ->group(group);
+  app.add_option("--energy-plot", options.energy_plot,
+                 "Plot kinetic, potential and total energy over the run into this PNG (or .svg)")
+      ->group(group);
+  app.add_option("--energy-csv", options.energy_csv,
+                 "Write time, kinetic, potential and total energy of every state as CSV")
+      ->group(group);
+  app.add_option("--window-screenshot", options.window_screenshot,
+                 "Testing aid: run the window to --window-screenshot-step, save its framebuffer\n"
+                 "as this PNG and close")
+      ->group(group);
+  app.add_option("--window-screenshot-step", options.window_screenshot_step,
+                 "The step of --window-screenshot")
+      ->check(CLI::NonNegativeNumber)
+      ->group(group);
+}
+
+/// Parses "WxH" into width and height (each 16..8192).
+std::optional<std::string> parse_size(const std::string& text, int& width, int& height) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
+      w < 16 || h < 16 || w > 8192 || h > 8192) {
+    return "--size must be WIDTHxHEIGHT with each between 16 and 8192 pixels (512x512, say), "
+           "found '" + text + "'";
+  }
+  width = w;
+  height = h;
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> check_picture_options(Options& options) {
+  if (auto problem = parse_size(options.size, options.width, options.height)) return problem;
+  const bool pictures = options.png == 1 || !options.svg_directory.empty() ||
+                        !options.movie.empty() || !options.energy_plot.empty() ||
+                        !options.energy_csv.empty();
+  if (pictures && !options.input.empty()) {
+    return "-g, -m, --movie, --energy-plot and --energy-csv picture a run; they cannot be "
+           "combined with grading (-i)";
+  }
+  if (!options.movie.empty()) {
+    if (auto problem = check_movie_settings(options.movie, movie_settings(options))) return problem;
+    if (options.display_given && options.display == 1) {
+      return "--movie renders headless; leave out -d 1 (the window cannot record movies)";
+    }
+    options.display = 0;
+  }
+  if (!options.window_screenshot.empty() && options.display == 0) {
+    return "--window-screenshot needs the window (-d 1)";
+  }
+  return std::nullopt;
+}
+
+MovieSettings movie_settings(const Options& options) {
+  MovieSettings settings;
+  settings.width = options.width;
+  settings.height = options.height;
+  settings.fps = options.fps;
+  return settings;
+}
 
 void add_options(CLI::App& app, Options& options) {
   app.description(
@@ -43,6 +136,7 @@ void add_options(CLI::App& app, Options& options) {
                "Check every force's gradient and Hessians against finite differences at the\n"
                "scene's initial state, print a table and exit (1 if any check fails)");
   app.add_flag("-q,--quiet", options.quiet, "No progress bar and no description");
+  add_picture_options(app, options);
   app.set_version_flag("--version", "FOSSSim 0.1.0");
   app.footer(
       "Exit status: 0 success or passed; 1 grading failed; 2 bad command line, scene or\n"
@@ -52,7 +146,10 @@ void add_options(CLI::App& app, Options& options) {
       "  FOSSSim -s assets/t1m1/springs_single.xml -d 0 -o out.bin\n"
       "  FOSSSim -s assets/t1m1/springs_single.xml -d 0 -i out.bin\n"
       "  FOSSSim -s scene.xml -d 0 --dt 0.001 --duration 2 -o fine.bin\n"
-      "  FOSSSim -s scene.xml --check-derivatives");
+      "  FOSSSim -s scene.xml --check-derivatives\n"
+      "  FOSSSim -s scene.xml                          (the window; see docs/viewing.md)\n"
+      "  FOSSSim -s scene.xml --movie scene.mp4        (no display needed)\n"
+      "  FOSSSim -s scene.xml -d 0 -g 1 --energy-plot energy.png");
 }
 
 std::optional<std::string> apply_overrides(const Options& options, Scene& scene) {

@@ -1,6 +1,7 @@
 #pragma once
 // The FOSSSim command line: the course's flags plus our own.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -8,6 +9,7 @@
 
 #include "core/expected.h"
 #include "core/scene.h"
+#include "pictures/movie_writer.h"
 
 namespace fosssim {
 
@@ -24,10 +26,32 @@ struct Options {
   std::string residual_file = "residual.txt";
   bool check_derivatives = false;
   bool quiet = false;
+
+  // Pictures (docs/viewing.md).
+  int png = 0;                    ///< -g 0|1: one PNG per state into png_directory
+  std::string png_directory = "pngs";
+  std::string svg_directory;      ///< -m DIR: one SVG per state
+  std::string movie;              ///< --movie FILE.mp4 (headless)
+  std::optional<int> movie_stride;  ///< every how many steps a movie frame; default ~real time
+  double fps = 30.0;              ///< movie frames per second
+  std::string size = "512x512";   ///< --size WxH of the window, pictures and movie
+  int width = 512, height = 512;  ///< parsed from size by check_picture_options
+  std::string energy_plot;        ///< --energy-plot FILE.png|FILE.svg
+  std::string energy_csv;         ///< --energy-csv FILE.csv
+  std::string window_screenshot;  ///< test aid: PNG of the window at window_screenshot_step
+  std::int64_t window_screenshot_step = 0;
+  bool display_given = false;     ///< -d appeared on the command line
 };
 
 /// Declares every option on `app`, writing into `options`.
 void add_options(CLI::App& app, Options& options);
+
+/// Checks the picture options against each other and the mode, parses --size, and makes
+/// --movie run headless when -d was not given. Returns a message for a bad combination.
+std::optional<std::string> check_picture_options(Options& options);
+
+/// The movie settings of --size and --fps.
+MovieSettings movie_settings(const Options& options);
 
 /// Applies the command line's overrides to a loaded scene; returns a message if one is invalid.
 std::optional<std::string> apply_overrides(const Options& options, Scene& scene);

@@ -22,15 +22,19 @@ int run_grading(const Scene& scene, const Options& options) {
     std::cerr << "FOSSSim: error: " << options.input << ": " << report.error() << "\n";
     return kExitBadInput;
   }
-  print_grade_report(std::cout, *report);
+  return report_grade(scene, options, *report);
+}
+
+int report_grade(const Scene& scene, const Options& options, const GradeReport& report) {
+  print_grade_report(std::cout, report);
   try {
-    write_residual_file(options.residual_file, *report);
+    write_residual_file(options.residual_file, report);
   } catch (const std::runtime_error& error) {
     std::cerr << "FOSSSim: error: " << error.what() << "\n";
     return kExitIoError;
   }
-  if (!report->passed()) {
-    std::cerr << describe_failure(*report, scene.model.dim);
+  if (!report.passed()) {
+    std::cerr << describe_failure(report, scene.model.dim);
     return kExitGradingFailed;
   }
   return kExitOk;

@@ -23,7 +23,8 @@ struct ParticlePath {
   Color color;
 };
 
-/// A fixed camera: centre and the size of the visible square (world units).
+/// A fixed camera: centre, and `size` = half the visible height in world units (the course's
+/// display "scale factor"; the visible width follows from the picture's aspect).
 struct Viewport {
   double cx = 0.0, cy = 0.0, size = 1.0;
 };

@@ -7,11 +7,15 @@
 
 namespace fosssim {
 
-Simulation::Simulation(const SceneModel& model, State initial)
-    : model_(model), integrator_(make_integrator(model)), state_(std::move(initial)) {}
+Simulation::Simulation(const SceneModel& model, State initial, std::unique_ptr<const StepHook> hook)
+    : model_(model),
+      integrator_(make_integrator(model)),
+      hook_(std::move(hook)),
+      state_(std::move(initial)) {}
 
 void Simulation::step() {
   integrator_->step(model_, state_);
+  if (hook_) hook_->after_step(model_, state_);
   check_state_is_finite(model_, state_);
 }
 

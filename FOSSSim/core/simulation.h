@@ -6,15 +6,17 @@
 #include "core/integrators/integrator.h"
 #include "core/scene_model.h"
 #include "core/state.h"
+#include "core/step_hook.h"
 
 namespace fosssim {
 
-/// A scene model, its integrator and the current state. Every step is followed by a health
-/// check, so a non-finite position or velocity stops the run at the step that produced it.
+/// A scene model, its integrator, an optional scripted hook and the current state. Every step
+/// is the integrator's step, then the hook, then a health check, so a non-finite position or
+/// velocity stops the run at the step that produced it.
 class Simulation {
  public:
-  /// model must outlive the simulation.
-  Simulation(const SceneModel& model, State initial);
+  /// model must outlive the simulation; hook (may be null) runs after every integrator step.
+  Simulation(const SceneModel& model, State initial, std::unique_ptr<const StepHook> hook = {});
 
   /// Takes one step. Throws StepError if it fails or leaves a non-finite state; then the state
   /// is the one the step produced, for inspection.
@@ -32,6 +34,7 @@ class Simulation {
  private:
   const SceneModel& model_;
   std::unique_ptr<Integrator> integrator_;
+  std::unique_ptr<const StepHook> hook_;
   State state_;
 };
 

@@ -1,13 +1,12 @@
 #include "grading/grader.h"
 
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#include "core/integrators/integrator.h"
-#include "core/step_error.h"
+#include "grading/step_grader.h"
+#include "io/output_file.h"
 
 namespace fosssim {
 
@@ -28,12 +27,6 @@ std::vector<Criterion> criteria_of(const GradeReport& r) {
           {"Maximum Velocity Residual", r.max_velocity, r.max_velocity_passed()}};
 }
 
-/// True when candidate should replace current as a maximum; a NaN beats every number, so that a
-/// NaN residual cannot hide behind a finite one.
-bool exceeds(double candidate, double current) {
-  return std::isnan(candidate) ? !std::isnan(current) : candidate > current;
-}
-
 }  // namespace
 
 bool GradeReport::accumulated_position_passed() const {
@@ -52,78 +45,12 @@ bool GradeReport::passed() const {
 Expected<GradeReport, std::string> grade_trajectory(const Scene& scene, TrajectoryReader& file,
                                                     const GradingCriteria& criteria,
                                                     const GradingProgress& progress) {
-  const SceneModel& model = scene.model;
-  const std::int64_t steps = model.num_steps();
-  if (file.num_frames() != steps + 1) {
-    return "the trajectory has " + std::to_string(file.num_frames()) + " frames, but the scene takes " +
-           std::to_string(steps) + " steps and so needs " + std::to_string(steps + 1) +
-           " (the initial state and one frame per step)" +
-           (file.num_frames() < steps + 1 ? "; the file was cut short" : "");
+  auto grader = StepGrader::open(scene, file, criteria);
+  if (!grader) return grader.error();
+  while (grader->grade_next_step()) {
+    if (progress) progress(grader->steps_graded(), grader->report().steps);
   }
-  GradeReport report;
-  report.criteria = criteria;
-  report.steps = steps;
-  report.per_step.reserve(static_cast<std::size_t>(steps));
-
-  const int dim = model.dim;
-  auto integrator = make_integrator(model);
-  State state;
-  Vector previous_q, previous_v, file_q, file_v;
-  file.read_frame(0, file_q, file_v);
-  for (std::int64_t k = 1; k <= steps; ++k) {
-    previous_q.swap(file_q);
-    previous_v.swap(file_v);
-    state.q = previous_q;
-    state.v = previous_v;
-    state.step = k - 1;
-    state.time = static_cast<double>(k - 1) * model.integrator.dt;
-    try {
-      integrator->step(model, state);
-    } catch (const StepError& error) {
-      report.reference_failure = std::string("the reference integrator failed at ") + error.what();
-      break;
-    }
-    file.read_frame(k, file_q, file_v);
-
-    StepResidual residual;
-    residual.step = k;
-    for (int p = 0; p < model.num_particles(); ++p) {
-      const double rx = (state.q.segment(dim * p, dim) - file_q.segment(dim * p, dim)).norm();
-      const double rv = (state.v.segment(dim * p, dim) - file_v.segment(dim * p, dim)).norm();
-      residual.sum_position += rx;
-      residual.sum_velocity += rv;
-      if (residual.max_position_particle < 0 || exceeds(rx, residual.max_position)) {
-        residual.max_position = rx;
-        residual.max_position_particle = p;
-      }
-      if (residual.max_velocity_particle < 0 || exceeds(rv, residual.max_velocity)) {
-        residual.max_velocity = rv;
-        residual.max_velocity_particle = p;
-      }
-      if (!report.first_divergence &&
-          !(below(rx, criteria.maximum_limit) && below(rv, criteria.maximum_limit))) {
-        FirstDivergence d;
-        d.step = k;
-        d.particle = p;
-        d.position_residual = rx;
-        d.velocity_residual = rv;
-        d.reference_position = state.q.segment(dim * p, dim);
-        d.reference_velocity = state.v.segment(dim * p, dim);
-        d.file_position = file_q.segment(dim * p, dim);
-        d.file_velocity = file_v.segment(dim * p, dim);
-        d.previous_position = previous_q.segment(dim * p, dim);
-        d.previous_velocity = previous_v.segment(dim * p, dim);
-        report.first_divergence = std::move(d);
-      }
-    }
-    report.accumulated_position += residual.sum_position;
-    report.accumulated_velocity += residual.sum_velocity;
-    if (exceeds(residual.max_position, report.max_position)) report.max_position = residual.max_position;
-    if (exceeds(residual.max_velocity, report.max_velocity)) report.max_velocity = residual.max_velocity;
-    report.per_step.push_back(residual);
-    if (progress) progress(k, steps);
-  }
-  return report;
+  return grader->report();
 }
 
 void print_grade_report(std::ostream& out, const GradeReport& report) {
@@ -134,18 +61,19 @@ void print_grade_report(std::ostream& out, const GradeReport& report) {
 }
 
 void write_residual_file(const std::string& path, const GradeReport& report) {
-  const std::string temporary = path + ".partial";
+  const OutputFile output(path);
   {
-    std::ofstream out(temporary);
+    std::ofstream out(output.write_path());
     for (const Criterion& c : criteria_of(report)) {
       out << (c.passed ? 1 : 0) << "   " << c.value << "\n";
     }
     out.flush();
-    if (!out) throw std::runtime_error("cannot write " + temporary);
+    if (!out) {
+      output.discard();
+      throw std::runtime_error("cannot write " + output.write_path());
+    }
   }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + error.message());
+  output.commit();
 }
 
 std::string describe_failure(const GradeReport& report, int dim) {

@@ -35,11 +35,14 @@ std::string system_reason() { return std::strerror(errno); }
 
 // ---- TrajectoryWriter -------------------------------------------------------------------------
 
-TrajectoryWriter::TrajectoryWriter(std::string path, std::FILE* file)
-    : path_(std::move(path)), file_(file) {}
+TrajectoryWriter::TrajectoryWriter(std::string path, OutputFile output, std::FILE* file)
+    : path_(std::move(path)), output_(std::move(output)), file_(file) {}
 
 TrajectoryWriter::TrajectoryWriter(TrajectoryWriter&& other) noexcept
-    : path_(std::move(other.path_)), file_(other.file_), finished_(other.finished_) {
+    : path_(std::move(other.path_)),
+      output_(std::move(other.output_)),
+      file_(other.file_),
+      finished_(other.finished_) {
   other.file_ = nullptr;
   other.finished_ = true;
 }
@@ -48,6 +51,7 @@ TrajectoryWriter& TrajectoryWriter::operator=(TrajectoryWriter&& other) noexcept
   if (this != &other) {
     if (!finished_) abandon();
     path_ = std::move(other.path_);
+    output_ = std::move(other.output_);
     file_ = other.file_;
     finished_ = other.finished_;
     other.file_ = nullptr;
@@ -61,11 +65,11 @@ TrajectoryWriter::~TrajectoryWriter() {
 }
 
 Expected<TrajectoryWriter, std::string> TrajectoryWriter::open(const std::string& path) {
-  const std::string partial = path + ".partial";
-  std::FILE* file = std::fopen(partial.c_str(), "wb");
-  if (file == nullptr) return "cannot create " + partial + ": " + system_reason();
+  OutputFile output(path);
+  std::FILE* file = std::fopen(output.write_path().c_str(), "wb");
+  if (file == nullptr) return "cannot create " + output.write_path() + ": " + system_reason();
   std::setvbuf(file, nullptr, _IOFBF, 1 << 20);
-  return TrajectoryWriter(path, file);
+  return TrajectoryWriter(path, std::move(output), file);
 }
 
 void TrajectoryWriter::write_doubles(const double* data, std::size_t count) {
@@ -76,7 +80,7 @@ void TrajectoryWriter::write_doubles(const double* data, std::size_t count) {
     data = swapped.data();
   }
   if (std::fwrite(data, sizeof(double), count, file_) != count) {
-    throw std::runtime_error("cannot write " + path_ + ".partial: " + system_reason());
+    throw std::runtime_error("cannot write " + output_.write_path() + ": " + system_reason());
   }
 }
 
@@ -93,8 +97,9 @@ void TrajectoryWriter::close_file() {
 }
 
 void TrajectoryWriter::commit() {
-  const std::string partial = path_ + ".partial";
-  if (std::fflush(file_) != 0 || ::fsync(fileno(file_)) != 0) {
+  const std::string& partial = output_.write_path();
+  // fsync makes the renamed file durable; devices such as /dev/null do not support it.
+  if (std::fflush(file_) != 0 || (!output_.in_place() && ::fsync(fileno(file_)) != 0)) {
     throw std::runtime_error("cannot write " + partial + ": " + system_reason());
   }
   if (std::fclose(file_) != 0) {
@@ -102,19 +107,15 @@ void TrajectoryWriter::commit() {
     throw std::runtime_error("cannot write " + partial + ": " + system_reason());
   }
   file_ = nullptr;
-  std::error_code error;
-  std::filesystem::rename(partial, path_, error);
-  if (error) throw std::runtime_error("cannot rename " + partial + " to " + path_ + ": " + error.message());
+  output_.commit();
   finished_ = true;
 }
 
 std::string TrajectoryWriter::abandon() {
   close_file();
   finished_ = true;
-  const std::string incomplete = path_ + ".incomplete";
-  std::error_code error;
-  std::filesystem::rename(path_ + ".partial", incomplete, error);
-  return incomplete;
+  const std::string kept = output_.keep_unfinished(".incomplete");
+  return kept.empty() ? output_.write_path() : kept;
 }
 
 // ---- TrajectoryReader -------------------------------------------------------------------------

@@ -9,13 +9,15 @@
 
 #include "core/expected.h"
 #include "core/state.h"
+#include "io/output_file.h"
 
 namespace fosssim {
 
 /// Writes a trajectory so that an interrupted or failed run never leaves a file that looks
 /// complete: frames go to "<path>.partial", which becomes <path> only on commit(). A writer
 /// destroyed without commit() keeps its frames as "<path>.incomplete" and leaves any earlier
-/// file at <path> untouched.
+/// file at <path> untouched. A path that is a device or FIFO (-o /dev/null) is written in
+/// place, never renamed over (io/output_file.h).
 class TrajectoryWriter {
  public:
   /// Creates "<path>.partial"; the error names the path and the system's reason.
@@ -35,11 +37,12 @@ class TrajectoryWriter {
   const std::string& path() const { return path_; }
 
  private:
-  TrajectoryWriter(std::string path, std::FILE* file);
+  TrajectoryWriter(std::string path, OutputFile output, std::FILE* file);
   void write_doubles(const double* data, std::size_t count);
   void close_file();
 
   std::string path_;
+  OutputFile output_;
   std::FILE* file_ = nullptr;
   bool finished_ = false;
 };

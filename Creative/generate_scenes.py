@@ -1,0 +1,218 @@
+#!/usr/bin/env python3
+"""Writes the creative scenes of this folder (see README.md).
+
+The scenes are ordinary FOSSSim scene files; this script only saves typing hundreds of
+particles by hand. Run it from anywhere: python3 Creative/generate_scenes.py
+"""
+
+import colorsys
+import math
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def rgb(h, s, v):
+    return colorsys.hsv_to_rgb(h % 1.0, s, v)
+
+
+def fmt(x):
+    return f"{x:.6g}"
+
+
+class SceneWriter:
+    def __init__(self, dim=2):
+        self.dim = dim
+        self.lines = []
+        self.particles = 0
+        self.edges = 0
+
+    def add(self, line):
+        self.lines.append("  " + line)
+
+    def particle(self, pos, vel, m, fixed=False, radius=0.1, color=None, tag=None):
+        names = ["px", "py", "pz"][: self.dim]
+        vnames = ["vx", "vy", "vz"][: self.dim]
+        attributes = f'm="{fmt(m)}" ' + " ".join(f'{n}="{fmt(p)}"' for n, p in zip(names, pos))
+        attributes += " " + " ".join(f'{n}="{fmt(v)}"' for n, v in zip(vnames, vel))
+        attributes += f' fixed="{1 if fixed else 0}" radius="{fmt(radius)}"'
+        if tag:
+            attributes += f' tag="{tag}"'
+        self.add(f"<particle {attributes}/>")
+        index = self.particles
+        self.particles += 1
+        if color is not None:
+            self.add(f'<particlecolor i="{index}" r="{fmt(color[0])}" g="{fmt(color[1])}" b="{fmt(color[2])}"/>')
+        return index
+
+    def edge(self, i, j, radius=0.015, color=None):
+        self.add(f'<edge i="{i}" j="{j}" radius="{fmt(radius)}"/>')
+        index = self.edges
+        self.edges += 1
+        if color is not None:
+            self.add(f'<edgecolor i="{index}" r="{fmt(color[0])}" g="{fmt(color[1])}" b="{fmt(color[2])}"/>')
+        return index
+
+    def spring(self, edge, k, l0, b=0.0):
+        extra = f' b="{fmt(b)}"' if b else ""
+        self.add(f'<springforce edge="{edge}" k="{fmt(k)}" l0="{fmt(l0)}"{extra}/>')
+
+    def path(self, i, duration, color):
+        self.add(f'<particlepath i="{i}" duration="{fmt(duration)}" r="{fmt(color[0])}" g="{fmt(color[1])}" b="{fmt(color[2])}"/>')
+
+    def save(self, name, header):
+        root = '<scene dim="3">' if self.dim == 3 else "<scene>"
+        text = "\n".join(["<!-- Written by Creative/generate_scenes.py; see Creative/README.md -->", root]
+                         + ["  " + h for h in header] + self.lines + ["</scene>", ""])
+        with open(os.path.join(HERE, name), "w") as f:
+            f.write(text)
+        print(f"{name}: {self.particles} particles, {self.edges} edges")
+
+
+def vortex_spiral():
+    """Six coloured spokes held by soft springs to a heavy centre and spun by vortex forces:
+    inner particles circle faster than outer ones, so the spokes wind into a spiral galaxy."""
+    s = SceneWriter()
+    centre = s.particle((0, 0), (0, 0), 1.0, fixed=True, radius=0.13, color=(1.0, 0.93, 0.75))
+    arms, per_arm = 6, 40
+    for a in range(arms):
+        hue = 0.55 + 0.45 * a / arms
+        for k in range(per_arm):
+            r = 0.32 + 2.75 * k / (per_arm - 1)
+            angle = 2 * math.pi * a / arms
+            pos = (r * math.cos(angle), r * math.sin(angle))
+            fade = 1.0 - 0.55 * k / (per_arm - 1)
+            color = rgb(hue + 0.08 * k / per_arm, 0.75, fade)
+            j = s.particle(pos, (0, 0), 0.02, radius=0.055 - 0.025 * k / per_arm, color=color)
+            e = s.edge(centre, j, radius=0.0)  # an invisible tether
+            s.spring(e, 6.0, r)
+            s.add(f'<vortexforce i="{centre}" j="{j}" kbs="1.1" kvc="0.03"/>')
+            if k % 4 == 1:
+                s.path(j, 0.45, rgb(hue + 0.08 * k / per_arm, 0.6, 0.85 * fade))
+    s.save("vortex_spiral.xml", [
+        '<description text="Vortex spiral: six spokes wound into a galaxy by vortex forces (symplectic Euler)"/>',
+        '<duration time="8.0"/>',
+        '<integrator type="symplectic-euler" dt="0.004"/>',
+        '<maxsimfreq max="250"/>',
+        '<backgroundcolor r="0.02" g="0.02" b="0.06"/>',
+        '<viewport cx="0" cy="0" size="3.3"/>',
+    ])
+
+
+def fountain():
+    """Water drops under gravity and light drag; the ParticleFountain scene tag sends every drop
+    that falls below the basin back to the spout with a random upward velocity."""
+    s = SceneWriter()
+    stone = (0.55, 0.52, 0.5)
+    water = (0.16, 0.32, 0.55)
+    # Basin, water line and column: fixed and only decorative.
+    corners = [(-1.7, -1.05), (-1.7, -1.45), (1.7, -1.45), (1.7, -1.05)]
+    ids = [s.particle(c, (0, 0), 1, fixed=True, radius=0.06, color=stone) for c in corners]
+    for a, b in zip(ids, ids[1:]):
+        s.edge(a, b, radius=0.06, color=stone)
+    shore_l = s.particle((-1.62, -1.25), (0, 0), 1, fixed=True, radius=0.0, color=water)
+    shore_r = s.particle((1.62, -1.25), (0, 0), 1, fixed=True, radius=0.0, color=water)
+    s.edge(shore_l, shore_r, radius=0.025, color=water)
+    base = s.particle((0, -1.45), (0, 0), 1, fixed=True, radius=0.05, color=stone)
+    spout = s.particle((0, -0.06), (0, 0), 1, fixed=True, radius=0.09, color=(0.75, 0.7, 0.62))
+    s.edge(base, spout, radius=0.07, color=stone)
+    # Drops already in flight at t = 0, at evenly spread phases of their flights.
+    g = 9.81
+    drops = 260
+    for k in range(drops):
+        u1 = (k * 0.618034) % 1.0
+        u2 = (k * 0.414214 + 0.3) % 1.0
+        vx, vy = 2.0 * u1 - 1.0, 4.0 + 2.0 * u2
+        flight = (vy + math.sqrt(vy * vy + 2 * g * 1.25)) / g
+        t = flight * ((k * 0.7548777) % 1.0)
+        pos = (vx * t, vy * t - 0.5 * g * t * t)
+        vel = (vx, vy - g * t)
+        color = rgb(0.52 + 0.1 * u2, 0.35 + 0.5 * u1, 0.95)
+        s.particle(pos, vel, 0.01, radius=0.022 + 0.016 * u2, color=color, tag="teleport")
+    s.add('<simplegravity fx="0" fy="-9.81"/>')
+    s.add('<dragdamping b="0.002"/>')
+    s.save("fountain.xml", [
+        '<description text="Fountain: the ParticleFountain scene tag recycles every drop (explicit Euler)"/>',
+        '<duration time="8.0"/>',
+        '<integrator type="explicit-euler" dt="0.004"/>',
+        '<maxsimfreq max="250"/>',
+        '<scenetag tag="ParticleFountain"/>',
+        '<backgroundcolor r="0.05" g="0.07" b="0.12"/>',
+        '<viewport cx="0" cy="0.25" size="1.85"/>',
+    ])
+
+
+def pendulum_wave():
+    """Fifteen pendulums seen from above, their lengths chosen so that pendulum k swings 6 + k
+    times in 24 s: they fall in and out of step in travelling waves and line up again at the
+    end. Stiff springs stand in for the strings (linearized implicit Euler, 3D)."""
+    s = SceneWriter(dim=3)
+    g, cycle, count, lead, offset = 9.81, 24.0, 15, 6, 0.15
+    k_spring, mass = 4000.0, 0.05
+    for k in range(count):
+        period = cycle / (lead + k)
+        # The length whose large-amplitude period is `period` when pulled `offset` sideways.
+        length = g * (period / (2 * math.pi)) ** 2
+        for _ in range(30):
+            theta = math.asin(offset / length)
+            correction = 1 + theta ** 2 / 16 + 11 * theta ** 4 / 3072
+            length = g * (period / (2 * math.pi * correction)) ** 2
+        x = -1.2 + 2.4 * k / (count - 1)
+        pivot = s.particle((x, 0, 0), (0, 0, 0), 1, fixed=True, radius=0.018, color=(0.35, 0.35, 0.4))
+        height = math.sqrt(length * length - offset * offset)
+        color = rgb(0.95 * k / count, 0.65, 0.95)
+        bob = s.particle((x, offset, -height), (0, 0, 0), mass, radius=0.06, color=color)
+        e = s.edge(pivot, bob, radius=0.006, color=(0.55, 0.55, 0.6))
+        # Rest length shortened by the static stretch m g / k, so that the hanging string has
+        # the computed length.
+        s.spring(e, k_spring, length - mass * g / k_spring)
+    s.add('<simplegravity fx="0" fy="0" fz="-9.81"/>')
+    s.save("pendulum_wave.xml", [
+        '<description text="Pendulum wave seen from above: 15 pendulums swing 6 to 20 times in 24 s (linearized implicit Euler, 3D)"/>',
+        '<duration time="24.0"/>',
+        '<integrator type="linearized-implicit-euler" dt="0.0005"/>',
+        '<maxsimfreq max="2000"/>',
+        '<backgroundcolor r="0.97" g="0.96" b="0.93"/>',
+        '<viewport cx="0" cy="0" size="0.45"/>',
+    ])
+
+
+def ropes():
+    """Seven ropes of stiff, damped springs hang from one pin, held out in a fan and let go:
+    they fall, whip and tangle. Stiff springs call for an implicit method (implicit Euler with
+    Newton's method), which also damps the ropes' stretching."""
+    s = SceneWriter()
+    pin = s.particle((0, 0), (0, 0), 1, fixed=True, radius=0.07, color=(0.25, 0.25, 0.3))
+    count, nodes = 7, 36
+    k_spring, damping, mass = 3000.0, 0.05, 0.01
+    for r in range(count):
+        length = 1.3 + 1.0 * r / (count - 1)
+        segment = length / nodes
+        angle = math.radians(75 - 14 * r)
+        color = rgb(0.02 + 0.62 * r / (count - 1), 0.8, 0.9)
+        previous = pin
+        for n in range(1, nodes + 1):
+            pos = (n * segment * math.cos(angle), n * segment * math.sin(angle))
+            tip = n == nodes
+            j = s.particle(pos, (0, 0), mass * (4 if tip else 1), radius=0.07 if tip else 0.0,
+                           color=color)
+            e = s.edge(previous, j, radius=0.022, color=color)
+            s.spring(e, k_spring, segment, damping)
+            previous = j
+        s.path(previous, 1.2, rgb(0.02 + 0.62 * r / (count - 1), 0.6, 0.95))
+    s.add('<simplegravity fx="0" fy="-9.81"/>')
+    s.save("ropes.xml", [
+        '<description text="Seven ropes fall from a fan, whip and tangle (implicit Euler, Newton)"/>',
+        '<duration time="8.0"/>',
+        '<integrator type="implicit-euler" dt="0.004"/>',
+        '<maxsimfreq max="250"/>',
+        '<backgroundcolor r="0.99" g="0.98" b="0.96"/>',
+        '<viewport cx="0" cy="-0.35" size="2.6"/>',
+    ])
+
+
+if __name__ == "__main__":
+    vortex_spiral()
+    fountain()
+    pendulum_wave()
+    ropes()

@@ -1,0 +1,52 @@
+#pragma once
+// Everything a run writes besides what it prints: trajectory, pictures, movie, energy.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/options.h"
+#include "core/expected.h"
+#include "core/scene.h"
+#include "render/scene_view.h"
+
+namespace fosssim {
+
+/// Receives every state of a run in order: the initial state, then one per step. Outputs
+/// appear whole or not at all: commit() makes them final, abandon() keeps what a stopped run
+/// produced under a name that says so.
+class FrameOutput {
+ public:
+  virtual ~FrameOutput() = default;
+  /// Takes the next state; `view` draws it as the run's pictures show it. Throws
+  /// std::runtime_error on an I/O error.
+  virtual void write(const State& state, const SceneView& view) = 0;
+  /// The run reached its end. Throws std::runtime_error on an I/O error.
+  virtual void commit() = 0;
+  /// The run stopped early; returns a note on what was kept ("out.bin.incomplete holds the 12
+  /// frames computed"), or "" when there is nothing to say.
+  virtual std::string abandon() = 0;
+};
+
+/// The outputs a command line asks for, fed together.
+class FrameOutputs {
+ public:
+  /// Opens every output of `options` (-o, -g, -m, --movie, --energy-plot, --energy-csv) for a
+  /// run of `scene`. Fails with a message (an unwritable folder, no ffmpeg for --movie).
+  static Expected<FrameOutputs, std::string> open(const Scene& scene, const Options& options);
+
+  bool empty() const { return outputs_.empty(); }
+  void write(const State& state, const SceneView& view);
+  void commit();
+  /// Abandons every output; returns their notes joined with "; " (may be empty).
+  std::string abandon();
+
+ private:
+  std::vector<std::unique_ptr<FrameOutput>> outputs_;
+};
+
+/// The movie stride --movie-stride gives, or the one that plays the run at about real time:
+/// max(1, round(1 / (fps · dt))).
+int movie_stride(const Options& options, double dt);
+
+}  // namespace fosssim

@@ -1,0 +1,136 @@
+// The window mode of the command line: a run with its outputs, or a grading replay.
+
+#include <filesystem>
+#include <iostream>
+
+#include "app/commands.h"
+#include "app/exit_codes.h"
+#include "app/frame_outputs.h"
+#include "app/interrupt.h"
+#include "io/trajectory_file.h"
+#include "viewer/stepper.h"
+#include "viewer/window.h"
+
+namespace fosssim {
+
+namespace {
+
+WindowSettings window_settings(const Scene& scene, const Options& options) {
+  WindowSettings settings;
+  settings.title = "FOSSSim: " + std::filesystem::path(scene.source).filename().string();
+  settings.start_paused = options.paused == 1;
+  settings.max_steps_per_second = scene.max_sim_frequency;
+  settings.screenshot_path = options.window_screenshot;
+  settings.screenshot_step = options.window_screenshot_step;
+  settings.stop_requested = [] { return interrupt_requested(); };
+  return settings;
+}
+
+/// Runs the scene in the window, feeding the outputs of -o, -g, -m and --energy-*.
+int run_simulation_window(const Scene& scene, const Options& options) {
+  auto opened = FrameOutputs::open(scene, options);
+  if (!opened) {
+    std::cerr << "FOSSSim: error: " << opened.error() << "\n";
+    return kExitIoError;
+  }
+  FrameOutputs& outputs = *opened;
+  SimulationStepper stepper(scene);
+  SceneView view(scene, stepper.state(), options.width, options.height);
+  int status = kExitOk;
+  bool outputs_open = true;
+  auto close_outputs = [&](const std::string& why) {
+    const std::string notes = outputs.abandon();
+    outputs_open = false;
+    if (!notes.empty()) std::cerr << "FOSSSim: " << why << "; " << notes << "\n";
+  };
+  auto guarded = [&](auto&& action) {
+    if (!outputs_open) return;
+    try {
+      action();
+    } catch (const std::runtime_error& error) {
+      std::cerr << "FOSSSim: error: " << error.what() << "\n";
+      close_outputs("the outputs were stopped");
+      status = kExitIoError;
+    }
+  };
+  guarded([&] { outputs.write(stepper.state(), view); });
+
+  WindowEvents events;
+  events.stepped = [&](const State& state, const SceneView& v) {
+    guarded([&] { outputs.write(state, v); });
+  };
+  events.finished = [&] {
+    guarded([&] {
+      outputs.commit();
+      outputs_open = false;
+    });
+    std::cout << "Simulation complete at time " << stepper.state().time << "." << std::endl;
+  };
+  events.failed = [&](const StepError& error) {
+    std::cerr << "FOSSSim: error: " << scene.source << ": " << error.what() << "\n";
+    if (outputs_open) close_outputs("the run failed");
+    status = kExitSimulationFailed;
+  };
+  auto outcome = run_window(stepper, view, window_settings(scene, options), events);
+  if (!outcome) {
+    std::cerr << "FOSSSim: error: " << outcome.error() << "\n";
+    return kExitBadInput;
+  }
+  const std::string when = " at step " + std::to_string(stepper.state().step);
+  if (interrupt_requested()) {
+    if (outputs_open)
+      close_outputs("interrupted" + when);
+    else
+      std::cerr << "FOSSSim: interrupted" << when << "\n";
+    return kExitInterrupted;
+  }
+  if (outputs_open) close_outputs("the window was closed" + when);
+  return status;
+}
+
+/// Replays the -i trajectory in the window, ringing the particles where it disagrees with the
+/// reference; prints the course's report when the last step has been graded.
+int run_grading_window(const Scene& scene, const Options& options) {
+  auto file = TrajectoryReader::open(options.input, scene.model.num_dofs());
+  if (!file) {
+    std::cerr << "FOSSSim: error: " << file.error() << "\n";
+    return kExitBadInput;
+  }
+  auto grader = StepGrader::open(scene, *file);
+  if (!grader) {
+    std::cerr << "FOSSSim: error: " << options.input << ": " << grader.error() << "\n";
+    return kExitBadInput;
+  }
+  GradingStepper stepper(std::move(grader).value());
+  SceneView view(scene, stepper.state(), options.width, options.height);
+  std::optional<int> status;
+  WindowEvents events;
+  events.finished = [&] { status = report_grade(scene, options, stepper.grader().report()); };
+  events.failed = [&](const StepError&) {
+    status = report_grade(scene, options, stepper.grader().report());
+  };
+  auto outcome = run_window(stepper, view, window_settings(scene, options), events);
+  if (!outcome) {
+    std::cerr << "FOSSSim: error: " << outcome.error() << "\n";
+    return kExitBadInput;
+  }
+  if (!status) {
+    std::cerr << "FOSSSim: the window was closed at step " << stepper.state().step << " of "
+              << stepper.grader().report().steps << ", before grading finished; no grade\n";
+    return kExitInterrupted;
+  }
+  return *status;
+}
+
+}  // namespace
+
+int run_window(const Scene& scene, const Options& options) {
+  if (auto problem = check_display()) {
+    std::cerr << "FOSSSim: error: " << *problem << "\n";
+    return kExitBadInput;
+  }
+  if (!options.input.empty()) return run_grading_window(scene, options);
+  return run_simulation_window(scene, options);
+}
+
+}  // namespace fosssim

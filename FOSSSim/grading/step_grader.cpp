@@ -1,0 +1,124 @@
+#include "grading/step_grader.h"
+
+#include <cmath>
+
+#include "core/step_error.h"
+#include "scripting/step_hooks.h"
+
+namespace fosssim {
+
+namespace {
+
+bool below(double value, double limit) { return value < limit; }  // false for NaN
+
+/// True when candidate should replace current as a maximum; a NaN beats every number, so that a
+/// NaN residual cannot hide behind a finite one.
+bool exceeds(double candidate, double current) {
+  return std::isnan(candidate) ? !std::isnan(current) : candidate > current;
+}
+
+}  // namespace
+
+StepGrader::StepGrader(const Scene& scene, TrajectoryReader& file, const GradingCriteria& criteria)
+    : scene_(&scene),
+      file_(&file),
+      integrator_(make_integrator(scene.model)),
+      hook_(make_step_hook(scene)) {
+  report_.criteria = criteria;
+  report_.steps = scene.model.num_steps();
+  report_.per_step.reserve(static_cast<std::size_t>(report_.steps));
+  file.read_frame(0, file_state_.q, file_state_.v);
+}
+
+Expected<StepGrader, std::string> StepGrader::open(const Scene& scene, TrajectoryReader& file,
+                                                   const GradingCriteria& criteria) {
+  const std::int64_t steps = scene.model.num_steps();
+  if (file.num_frames() != steps + 1) {
+    return "the trajectory has " + std::to_string(file.num_frames()) +
+           " frames, but the scene takes " + std::to_string(steps) + " steps and so needs " +
+           std::to_string(steps + 1) + " (the initial state and one frame per step)" +
+           (file.num_frames() < steps + 1 ? "; the file was cut short" : "");
+  }
+  return StepGrader(scene, file, criteria);
+}
+
+bool StepGrader::finished() const {
+  return report_.reference_failure || file_state_.step >= report_.steps;
+}
+
+bool StepGrader::grade_next_step() {
+  if (finished()) return false;
+  const SceneModel& model = scene_->model;
+  const std::int64_t k = file_state_.step + 1;
+  State reference;
+  reference.q = file_state_.q;
+  reference.v = file_state_.v;
+  reference.step = k - 1;
+  reference.time = static_cast<double>(k - 1) * model.integrator.dt;
+  try {
+    integrator_->step(model, reference);
+    if (hook_) hook_->after_step(model, reference);
+  } catch (const StepError& error) {
+    report_.reference_failure = std::string("the reference integrator failed at ") + error.what();
+    return false;
+  }
+  Vector previous_q = std::move(file_state_.q), previous_v = std::move(file_state_.v);
+  file_->read_frame(k, file_state_.q, file_state_.v);
+  file_state_.step = k;
+  file_state_.time = reference.time;
+  compare(reference, previous_q, previous_v);
+  return true;
+}
+
+void StepGrader::compare(const State& reference, const Vector& previous_q,
+                         const Vector& previous_v) {
+  const int dim = scene_->model.dim;
+  const int n = scene_->model.num_particles();
+  const GradingCriteria& criteria = report_.criteria;
+  const Vector& file_q = file_state_.q;
+  const Vector& file_v = file_state_.v;
+  position_residuals_.assign(n, 0.0);
+  velocity_residuals_.assign(n, 0.0);
+  StepResidual residual;
+  residual.step = file_state_.step;
+  for (int p = 0; p < n; ++p) {
+    const double rx = (reference.q.segment(dim * p, dim) - file_q.segment(dim * p, dim)).norm();
+    const double rv = (reference.v.segment(dim * p, dim) - file_v.segment(dim * p, dim)).norm();
+    position_residuals_[p] = rx;
+    velocity_residuals_[p] = rv;
+    residual.sum_position += rx;
+    residual.sum_velocity += rv;
+    if (residual.max_position_particle < 0 || exceeds(rx, residual.max_position)) {
+      residual.max_position = rx;
+      residual.max_position_particle = p;
+    }
+    if (residual.max_velocity_particle < 0 || exceeds(rv, residual.max_velocity)) {
+      residual.max_velocity = rv;
+      residual.max_velocity_particle = p;
+    }
+    if (!report_.first_divergence &&
+        !(below(rx, criteria.maximum_limit) && below(rv, criteria.maximum_limit))) {
+      FirstDivergence d;
+      d.step = residual.step;
+      d.particle = p;
+      d.position_residual = rx;
+      d.velocity_residual = rv;
+      d.reference_position = reference.q.segment(dim * p, dim);
+      d.reference_velocity = reference.v.segment(dim * p, dim);
+      d.file_position = file_q.segment(dim * p, dim);
+      d.file_velocity = file_v.segment(dim * p, dim);
+      d.previous_position = previous_q.segment(dim * p, dim);
+      d.previous_velocity = previous_v.segment(dim * p, dim);
+      report_.first_divergence = std::move(d);
+    }
+  }
+  report_.accumulated_position += residual.sum_position;
+  report_.accumulated_velocity += residual.sum_velocity;
+  if (exceeds(residual.max_position, report_.max_position))
+    report_.max_position = residual.max_position;
+  if (exceeds(residual.max_velocity, report_.max_velocity))
+    report_.max_velocity = residual.max_velocity;
+  report_.per_step.push_back(residual);
+}
+
+}  // namespace fosssim

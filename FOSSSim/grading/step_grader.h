@@ -1,0 +1,62 @@
+#pragma once
+// Grading one step at a time (SPEC section 5), for the batch grader and the window's grading mode.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/expected.h"
+#include "core/integrators/integrator.h"
+#include "core/scene.h"
+#include "core/step_hook.h"
+#include "grading/grader.h"
+#include "io/trajectory_file.h"
+
+namespace fosssim {
+
+/// Replays a trajectory file against a scene's own integrator, one step per call: for step k it
+/// restarts from the file's frame k-1, takes one reference step (then the scene tag's hook, as a
+/// run does) and compares with the file's frame k, for every particle, fixed ones included.
+/// The report accumulates over the steps graded so far.
+class StepGrader {
+ public:
+  /// Starts grading. `scene` and `file` must outlive the grader. Fails (returns the message)
+  /// when the file does not hold exactly num_steps() + 1 frames.
+  static Expected<StepGrader, std::string> open(const Scene& scene, TrajectoryReader& file,
+                                                const GradingCriteria& criteria = {});
+
+  /// Grades the next step. Returns false, grading nothing, once every step is graded or the
+  /// reference integrator has failed (report().reference_failure says why).
+  bool grade_next_step();
+
+  /// True when there is nothing left to grade.
+  bool finished() const;
+  /// Number of steps graded so far.
+  std::int64_t steps_graded() const {
+    return report_.per_step.empty() ? 0 : report_.per_step.back().step;
+  }
+
+  /// The report over the steps graded so far.
+  const GradeReport& report() const { return report_; }
+  /// The file's frame of the last graded step (frame 0 before any step): what the file says.
+  const State& file_state() const { return file_state_; }
+  /// ‖x_ref - x_file‖ per particle at the last graded step (empty before any step).
+  const std::vector<double>& position_residuals() const { return position_residuals_; }
+  /// ‖v_ref - v_file‖ per particle at the last graded step (empty before any step).
+  const std::vector<double>& velocity_residuals() const { return velocity_residuals_; }
+
+ private:
+  StepGrader(const Scene& scene, TrajectoryReader& file, const GradingCriteria& criteria);
+  void compare(const State& reference, const Vector& previous_q, const Vector& previous_v);
+
+  const Scene* scene_;
+  TrajectoryReader* file_;
+  std::unique_ptr<Integrator> integrator_;
+  std::unique_ptr<const StepHook> hook_;
+  GradeReport report_;
+  State file_state_;
+  std::vector<double> position_residuals_, velocity_residuals_;
+};
+
+}  // namespace fosssim

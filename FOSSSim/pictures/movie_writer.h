@@ -1,0 +1,75 @@
+#pragma once
+// Movies through the ffmpeg program: raw frames down a pipe, H.264 in an MP4 file out.
+
+#include <sys/types.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "core/expected.h"
+#include "io/output_file.h"
+#include "pictures/image.h"
+
+namespace fosssim {
+
+struct MovieSettings {
+  int width = 512, height = 512;  ///< pixels; both even (H.264 with 4:2:0 colour needs it)
+  double fps = 30.0;              ///< frames per second of the movie
+  int crf = 20;                   ///< x264 quality: 0 lossless .. 51 worst; 18-23 look good
+};
+
+/// Writes an MP4 movie (H.264, yuv420p, faststart) by running `ffmpeg` and piping it raw BGRA
+/// frames. The movie is written to "<path>.partial" and renamed to `path` by commit() (see
+/// io/output_file.h), so a failed or interrupted run never leaves a file that looks complete. ffmpeg runs in its own
+/// process group, so Ctrl-C reaches FOSSSim, which then stops it cleanly.
+class MovieWriter {
+ public:
+  /// Checks the settings and the file name (must end in .mp4), finds ffmpeg on PATH and starts
+  /// it. The error says what is wrong, e.g. that ffmpeg is not installed.
+  static Expected<MovieWriter, std::string> open(const std::string& path,
+                                                 const MovieSettings& settings);
+
+  MovieWriter(MovieWriter&& other) noexcept;
+  MovieWriter& operator=(MovieWriter&&) = delete;
+  /// Abandons the movie if neither commit() nor abandon() was called.
+  ~MovieWriter();
+
+  /// Sends one frame (its size must be the settings' size). Throws std::runtime_error with
+  /// ffmpeg's own message if ffmpeg has stopped.
+  void write_frame(const Image& frame);
+  /// Ends the movie: waits for ffmpeg and renames the file. Throws std::runtime_error with
+  /// ffmpeg's message if it failed.
+  void commit();
+  /// Stops ffmpeg, keeps what it wrote as "<path>.incomplete" if anything, and returns that name
+  /// (empty when nothing was kept).
+  std::string abandon();
+
+  const std::string& path() const { return path_; }
+  std::int64_t frames_written() const { return frames_; }
+
+ private:
+  MovieWriter(std::string path, MovieSettings settings, pid_t pid, int pipe, std::FILE* log);
+  /// Closes the pipe, waits for ffmpeg; returns its error message or nothing if it succeeded.
+  std::optional<std::string> finish_process();
+
+  std::string path_;
+  OutputFile output_;
+  MovieSettings settings_;
+  pid_t pid_ = -1;
+  int pipe_ = -1;
+  std::FILE* log_ = nullptr;  ///< ffmpeg's standard error
+  std::int64_t frames_ = 0;
+  bool done_ = false;
+};
+
+/// Why `path` and `settings` cannot make a movie (not *.mp4, odd size, bad frame rate), or
+/// nothing when they can.
+std::optional<std::string> check_movie_settings(const std::string& path,
+                                                const MovieSettings& settings);
+
+/// The full path of an executable `name` on PATH, or nothing.
+std::optional<std::string> find_program(const std::string& name);
+
+}  // namespace fosssim

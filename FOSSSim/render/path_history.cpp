@@ -1,0 +1,34 @@
+#include "render/path_history.h"
+
+#include <cmath>
+
+namespace fosssim {
+
+std::size_t trail_capacity(double duration, double dt) {
+  if (!(duration > 0.0) || !(dt > 0.0)) return 0;
+  return static_cast<std::size_t>(std::ceil(duration / dt));
+}
+
+PathHistory::PathHistory(const Scene& scene) {
+  for (const ParticlePath& path : scene.appearance.paths) {
+    Trail trail;
+    trail.particle = path.particle;
+    trail.color = path.color;
+    trail.capacity = trail_capacity(path.duration, scene.model.integrator.dt);
+    trails_.push_back(std::move(trail));
+  }
+}
+
+void PathHistory::record(const Vector& q, int dim) {
+  for (Trail& trail : trails_) {
+    if (trail.capacity == 0) continue;
+    if (trail.points.size() == trail.capacity) trail.points.pop_front();
+    trail.points.push_back({q[dim * trail.particle], q[dim * trail.particle + 1]});
+  }
+}
+
+void PathHistory::clear() {
+  for (Trail& trail : trails_) trail.points.clear();
+}
+
+}  // namespace fosssim

@@ -1,0 +1,43 @@
+#pragma once
+// The trails of a scene's <particlepath> elements.
+
+#include <cstddef>
+#include <deque>
+#include <vector>
+
+#include "core/scene.h"
+#include "render/camera.h"
+
+namespace fosssim {
+
+/// The last positions (x, y) of each traced particle, oldest first.
+struct Trail {
+  int particle = 0;
+  Color color;
+  std::size_t capacity = 0;  ///< ceil(path duration / dt) positions
+  std::deque<Point2> points;
+};
+
+/// Records, for every <particlepath>, the last ceil(duration/dt) positions of its particle
+/// (SPEC section 1), one per recorded state.
+class PathHistory {
+ public:
+  /// One trail per path of the scene, sized with the scene's current time step.
+  explicit PathHistory(const Scene& scene);
+
+  /// Appends the traced particles' current positions (q interleaved, `dim` per particle),
+  /// dropping the oldest beyond each trail's capacity.
+  void record(const Vector& q, int dim);
+  /// Forgets every recorded position.
+  void clear();
+
+  const std::vector<Trail>& trails() const { return trails_; }
+
+ private:
+  std::vector<Trail> trails_;
+};
+
+/// ceil(duration / dt) in double precision, 0 for a non-positive duration.
+std::size_t trail_capacity(double duration, double dt);
+
+}  // namespace fosssim

@@ -1,0 +1,20 @@
+#pragma once
+// Scene tags that select scripted behaviour (SPEC section 1, `scenetag`).
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/scene.h"
+#include "core/step_hook.h"
+
+namespace fosssim {
+
+/// The hook a scene's tag selects, or null when the scene has no tag or a tag without scripted
+/// behaviour (the course ignores such tags too; see known_scene_tags).
+std::unique_ptr<const StepHook> make_step_hook(const Scene& scene);
+
+/// The scene tags FOSSSim gives behaviour to ("ParticleFountain").
+std::vector<std::string> known_scene_tags();
+
+}  // namespace fosssim

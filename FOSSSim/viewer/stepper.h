@@ -1,0 +1,70 @@
+#pragma once
+// What the window advances: a simulation, or a grading replay of a trajectory file.
+
+#include <memory>
+#include <optional>
+
+#include "core/scene.h"
+#include "core/simulation.h"
+#include "grading/step_grader.h"
+#include "render/drawing.h"
+
+namespace fosssim {
+
+/// One step at a time, with what the window should show of it.
+class Stepper {
+ public:
+  virtual ~Stepper() = default;
+  /// The state to show.
+  virtual const State& state() const = 0;
+  /// True when there are no more steps.
+  virtual bool finished() const = 0;
+  /// Takes one step. Throws StepError when it cannot be taken.
+  virtual void step() = 0;
+  /// Marks and status lines to draw over the state.
+  virtual Overlay overlay() const { return {}; }
+};
+
+/// Runs the scene: its integrator and its tag's scripted hook, as a headless run does.
+class SimulationStepper final : public Stepper {
+ public:
+  /// The scene must outlive the stepper.
+  explicit SimulationStepper(const Scene& scene);
+  const State& state() const override { return simulation_.state(); }
+  bool finished() const override { return simulation_.finished(); }
+  void step() override { simulation_.step(); }
+
+ private:
+  Simulation simulation_;
+};
+
+/// Colours of the grading marks.
+inline constexpr Color kDisagreeColor{0.9, 0.0, 0.0};  ///< residual above kDisagreeResidual
+inline constexpr Color kFailColor{1.0, 0.6, 0.0};      ///< above the course's maximum only
+/// A particle whose position or velocity residual exceeds this is ringed in kDisagreeColor.
+inline constexpr double kDisagreeResidual = 1e-9;
+
+/// Replays a trajectory file step by step against the scene (grading mode, SPEC section 5) and
+/// shows the file's frames. Particles whose step residual (position or velocity) exceeds 1e-9
+/// get a red ring; those above the course's maximum (1e-10) but not 1e-9 an orange one.
+class GradingStepper final : public Stepper {
+ public:
+  explicit GradingStepper(StepGrader grader) : grader_(std::move(grader)) {}
+  const State& state() const override { return grader_.file_state(); }
+  bool finished() const override { return grader_.finished(); }
+  void step() override;
+  Overlay overlay() const override;
+
+  const StepGrader& grader() const { return grader_; }
+
+ private:
+  StepGrader grader_;
+};
+
+/// The marks of one graded step: for every particle with a position or velocity residual of at
+/// least `maximum_limit`, a ring coloured by how large the residual is.
+std::vector<ParticleMark> grading_marks(const std::vector<double>& position_residuals,
+                                        const std::vector<double>& velocity_residuals,
+                                        double maximum_limit);
+
+}  // namespace fosssim

@@ -1,0 +1,113 @@
+#include "pictures/movie_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "app_render/program_runner.h"
+#include "pictures/cairo_painter.h"
+#include "render/tiny_scene.h"
+
+namespace fosssim {
+namespace {
+
+/// The number of video frames ffprobe decodes in `path`, or -1.
+int count_frames(const testing::ScratchFolder& folder, const std::string& path) {
+  const auto result =
+      testing::run_command(folder,
+                           "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                           "stream=nb_read_frames -of csv=p=0 '" +
+                               path + "'");
+  if (result.status != 0) return -1;
+  return std::atoi(result.out.c_str());
+}
+
+/// Sets PATH for the life of the object.
+class ScopedPath {
+ public:
+  explicit ScopedPath(const std::string& value) : saved_(std::getenv("PATH")) {
+    ::setenv("PATH", value.c_str(), 1);
+  }
+  ~ScopedPath() { ::setenv("PATH", saved_.c_str(), 1); }
+
+ private:
+  std::string saved_;
+};
+
+TEST(MovieWriter, WritesAnMp4WithOneFramePerImage) {
+  if (!testing::on_path("ffmpeg") || !testing::on_path("ffprobe")) {
+    GTEST_SKIP() << "ffmpeg and ffprobe are not installed (tools/install-deps.sh installs them)";
+  }
+  const testing::ScratchFolder folder;
+  const Scene scene = testing::tiny_scene();
+  MovieSettings settings;
+  settings.width = 512;
+  settings.height = 512;
+  settings.fps = 24;
+  auto movie = MovieWriter::open(folder / "tiny.mp4", settings);
+  ASSERT_TRUE(movie.has_value()) << movie.error();
+  const Image frame = render_image(testing::tiny_drawing(scene));
+  for (int k = 0; k < 17; ++k) movie->write_frame(frame);
+  EXPECT_FALSE(std::filesystem::exists(folder / "tiny.mp4"));  // not before commit
+  movie->commit();
+  EXPECT_FALSE(std::filesystem::exists(folder / "tiny.mp4.partial"));
+  EXPECT_EQ(count_frames(folder, folder / "tiny.mp4"), 17);
+  const auto probe = testing::run_command(
+      folder,
+      "ffprobe -v error -select_streams v:0 -show_entries stream=codec_name,width,height,"
+      "r_frame_rate -of csv=p=0 tiny.mp4");
+  EXPECT_EQ(probe.out, "h264,512,512,24/1\n");
+}
+
+TEST(MovieWriter, AnAbandonedMovieIsKeptAsIncomplete) {
+  if (!testing::on_path("ffmpeg") || !testing::on_path("ffprobe")) {
+    GTEST_SKIP() << "ffmpeg and ffprobe are not installed (tools/install-deps.sh installs them)";
+  }
+  const testing::ScratchFolder folder;
+  const Scene scene = testing::tiny_scene();
+  auto movie = MovieWriter::open(folder / "cut.mp4", MovieSettings{});
+  ASSERT_TRUE(movie.has_value()) << movie.error();
+  const Image frame = render_image(testing::tiny_drawing(scene));
+  for (int k = 0; k < 5; ++k) movie->write_frame(frame);
+  EXPECT_EQ(movie->abandon(), folder / "cut.mp4.incomplete");
+  EXPECT_FALSE(std::filesystem::exists(folder / "cut.mp4"));
+  EXPECT_EQ(count_frames(folder, folder / "cut.mp4.incomplete"), 5);
+}
+
+TEST(MovieWriter, SaysSoWhenFfmpegIsMissing) {
+  const testing::ScratchFolder folder;
+  const ScopedPath empty_path(folder.path().string());
+  auto movie = MovieWriter::open(folder / "x.mp4", MovieSettings{});
+  ASSERT_FALSE(movie.has_value());
+  EXPECT_NE(movie.error().find("ffmpeg"), std::string::npos);
+  EXPECT_NE(movie.error().find("not on PATH"), std::string::npos);
+}
+
+TEST(CheckMovieSettings, RejectsOddSizesOtherFormatsAndBadRates) {
+  MovieSettings ok;
+  EXPECT_FALSE(check_movie_settings("a.mp4", ok).has_value());
+  EXPECT_FALSE(check_movie_settings("A.MP4", ok).has_value());
+  EXPECT_TRUE(check_movie_settings("a.avi", ok).has_value());
+  EXPECT_TRUE(check_movie_settings("a", ok).has_value());
+  MovieSettings odd = ok;
+  odd.width = 511;
+  EXPECT_NE(check_movie_settings("a.mp4", odd)->find("even"), std::string::npos);
+  MovieSettings slow = ok;
+  slow.fps = 0.0;
+  EXPECT_TRUE(check_movie_settings("a.mp4", slow).has_value());
+}
+
+TEST(FindProgram, FindsExecutablesOnPath) {
+  const testing::ScratchFolder folder;
+  const std::string tool = folder.write("tool", "#!/bin/sh\n");
+  std::filesystem::permissions(tool, std::filesystem::perms::owner_all);
+  std::filesystem::create_directory(folder / "dir");
+  const ScopedPath path("/nonexistent:" + folder.path().string());
+  EXPECT_EQ(find_program("tool"), tool);
+  EXPECT_FALSE(find_program("dir").has_value());
+  EXPECT_FALSE(find_program("no-such-tool").has_value());
+}
+
+}  // namespace
+}  // namespace fosssim

@@ -1,0 +1,107 @@
+#include "render/drawing.h"
+
+#include <gtest/gtest.h>
+
+#include "io/scene_loader.h"
+#include "render/scene_view.h"
+#include "render/tiny_scene.h"
+
+namespace fosssim {
+namespace {
+
+using testing::tiny_scene;
+
+TEST(ComposeDrawing, PlacesParticlesAndEdgesInPixels) {
+  const Scene scene = tiny_scene();
+  const PathHistory paths(scene);
+  const Camera camera{0.0, 0.0, 1.0};
+  const Drawing d = compose_drawing(scene, scene.initial, paths, camera, 512, 512);
+  EXPECT_EQ(d.width, 512);
+  EXPECT_EQ(d.background, (Color{0.1, 0.1, 0.2}));
+  ASSERT_EQ(d.particles.size(), 2u);
+  EXPECT_DOUBLE_EQ(d.particles[0].center.x, 128.0);
+  EXPECT_DOUBLE_EQ(d.particles[0].center.y, 256.0);
+  EXPECT_DOUBLE_EQ(d.particles[0].radius, 25.6);
+  EXPECT_EQ(d.particles[0].color, (Color{1, 0, 0}));
+  EXPECT_DOUBLE_EQ(d.particles[1].center.x, 384.0);
+  EXPECT_DOUBLE_EQ(d.particles[1].center.y, 192.0);
+  EXPECT_DOUBLE_EQ(d.particles[1].radius, 0.1 * 256);  // the default radius
+  EXPECT_EQ(d.particles[1].color, Appearance::kDefaultParticleColor);
+  ASSERT_EQ(d.edges.size(), 1u);
+  EXPECT_DOUBLE_EQ(d.edges[0].a.x, 128.0);
+  EXPECT_DOUBLE_EQ(d.edges[0].b.y, 192.0);
+  EXPECT_DOUBLE_EQ(d.edges[0].radius, 12.8);
+  EXPECT_EQ(d.edges[0].color, (Color{0, 1, 0}));
+  EXPECT_TRUE(d.paths.empty());  // a trail needs two points
+  ASSERT_EQ(d.text.size(), 1u);
+  EXPECT_EQ(d.text[0], "t = 0.00");
+  EXPECT_EQ(d.text_color, (Color{1, 1, 1}));  // light text on a dark background
+}
+
+TEST(ComposeDrawing, AddsMarksAndStatusAndCanHideTheTime) {
+  const Scene scene = tiny_scene();
+  Overlay overlay;
+  overlay.show_time = false;
+  overlay.status = {"paused"};
+  overlay.marks = {{1, Color{1, 0, 0}}};
+  const Drawing d =
+      compose_drawing(scene, scene.initial, PathHistory(scene), Camera{0, 0, 1}, 512, 512, overlay);
+  EXPECT_EQ(d.text, std::vector<std::string>{"paused"});
+  ASSERT_EQ(d.marks.size(), 1u);
+  EXPECT_DOUBLE_EQ(d.marks[0].center.x, 384.0);
+  EXPECT_GT(d.marks[0].radius, d.particles[1].radius);
+}
+
+TEST(SceneView, RecordsTrailsAndRecentres) {
+  const Scene scene = tiny_scene();
+  SceneView view(scene, scene.initial, 512, 512);
+  EXPECT_DOUBLE_EQ(view.camera().scale, 1.0);  // the viewport
+  State state = scene.initial;
+  for (int k = 1; k <= 60; ++k) {
+    state.q[1] = 0.01 * k;
+    state.step = k;
+    view.record(state);
+  }
+  const Drawing d = view.compose(state);
+  ASSERT_EQ(d.paths.size(), 1u);
+  EXPECT_EQ(d.paths[0].points.size(), 50u);  // ceil(0.5 / 0.01)
+  EXPECT_DOUBLE_EQ(d.paths[0].points.back().y, 256.0 - 0.6 * 256.0);
+  EXPECT_EQ(d.paths[0].color, testing::kYellow);
+  view.recenter(state);
+  EXPECT_DOUBLE_EQ(view.camera().cx, 0.0);
+  EXPECT_DOUBLE_EQ(view.camera().cy, 0.5 * (0.6 + 0.25));
+  view.restart_trails(state);
+  EXPECT_TRUE(view.compose(state).paths.empty());
+}
+
+TEST(ComposeDrawing, ProjectsThreeDimensionalScenesOntoXY) {
+  auto scene = load_scene_text(R"(<scene dim="3">
+    <duration time="1"/><integrator type="explicit-euler" dt="0.01"/>
+    <particle m="1" px="1" py="2" pz="30" vx="0" vy="0" vz="0" fixed="0"/>
+    <viewport cx="0" cy="0" size="4"/></scene>)",
+                               "three.xml");
+  ASSERT_TRUE(scene.has_value()) << scene.error().what();
+  const Drawing d =
+      compose_drawing(*scene, scene->initial, PathHistory(*scene), Camera{0, 0, 4}, 512, 512);
+  ASSERT_EQ(d.particles.size(), 1u);
+  EXPECT_DOUBLE_EQ(d.particles[0].center.x, 256.0 + 64.0);
+  EXPECT_DOUBLE_EQ(d.particles[0].center.y, 256.0 - 128.0);
+}
+
+TEST(FormatTime, ShowsEnoughDecimalsForTheTimeStep) {
+  EXPECT_EQ(format_time(1.5, 0.01), "t = 1.50");
+  EXPECT_EQ(format_time(1.5, 0.1), "t = 1.50");
+  EXPECT_EQ(format_time(0.125, 0.005), "t = 0.125");
+  EXPECT_EQ(format_time(0.0001, 1e-4), "t = 0.0001");
+  EXPECT_EQ(format_time(2.0, 1e-9), "t = 2.000000");
+}
+
+TEST(TextColorFor, ContrastsWithTheBackground) {
+  EXPECT_EQ(text_color_for({1, 1, 1}), (Color{0, 0, 0}));
+  EXPECT_EQ(text_color_for({0, 0, 0}), (Color{1, 1, 1}));
+  EXPECT_EQ(text_color_for({0.0, 0.0, 1.0}), (Color{1, 1, 1}));  // dark blue
+  EXPECT_EQ(text_color_for({1.0, 1.0, 0.0}), (Color{0, 0, 0}));  // yellow
+}
+
+}  // namespace
+}  // namespace fosssim

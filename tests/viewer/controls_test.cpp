@@ -1,0 +1,48 @@
+#include "viewer/controls.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace fosssim {
+namespace {
+
+TEST(CommandForKey, MapsTheCoursesKeys) {
+  EXPECT_EQ(command_for_key(' '), Command::kTogglePause);
+  EXPECT_EQ(command_for_key('s'), Command::kSingleStep);
+  EXPECT_EQ(command_for_key('q'), Command::kQuit);
+  EXPECT_EQ(command_for_key(27), Command::kQuit);
+  EXPECT_EQ(command_for_key('c'), Command::kRecenter);
+  EXPECT_EQ(command_for_key('-'), Command::kZoomOut);
+  EXPECT_EQ(command_for_key('='), Command::kZoomIn);
+  EXPECT_EQ(command_for_key('+'), Command::kZoomIn);
+  EXPECT_EQ(command_for_key('x'), Command::kNone);
+  EXPECT_EQ(command_for_arrow(ArrowKey::kLeft), Command::kPanLeft);
+  EXPECT_EQ(command_for_arrow(ArrowKey::kUp), Command::kPanUp);
+}
+
+TEST(ApplyCameraCommand, ZoomsAndPansInStepsOfTheView) {
+  Camera camera{1.0, 2.0, 4.0};
+  EXPECT_TRUE(apply_camera_command(Command::kZoomOut, camera));
+  EXPECT_DOUBLE_EQ(camera.scale, 4.0 * kZoomStep);
+  EXPECT_TRUE(apply_camera_command(Command::kZoomIn, camera));
+  EXPECT_DOUBLE_EQ(camera.scale, 4.0);
+  EXPECT_TRUE(apply_camera_command(Command::kPanRight, camera));
+  EXPECT_DOUBLE_EQ(camera.cx, 1.0 + kPanStep * 4.0);
+  EXPECT_TRUE(apply_camera_command(Command::kPanDown, camera));
+  EXPECT_DOUBLE_EQ(camera.cy, 2.0 - kPanStep * 4.0);
+  EXPECT_FALSE(apply_camera_command(Command::kTogglePause, camera));
+}
+
+TEST(ZoomByDrag, DraggingDownZoomsOutAndUpZoomsBackIn) {
+  Camera camera{0.0, 0.0, 1.0};
+  zoom_by_drag(camera, 0.0, 256.0, 512, 512);  // half a picture down
+  EXPECT_DOUBLE_EQ(camera.scale, std::exp(1.0));
+  zoom_by_drag(camera, 0.0, -256.0, 512, 512);
+  EXPECT_NEAR(camera.scale, 1.0, 1e-15);
+  zoom_by_drag(camera, 128.0, 10.0, 512, 512);  // mostly right: zooms in
+  EXPECT_LT(camera.scale, 1.0);
+}
+
+}  // namespace
+}  // namespace fosssim

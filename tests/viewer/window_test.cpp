@@ -1,0 +1,124 @@
+// The window under a virtual X server: it opens, shows the scene, and shows exactly what the
+// headless pictures show.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "app_render/program_runner.h"
+#include "io/scene_loader.h"
+#include "io/trajectory_file.h"
+#include "pictures/cairo_painter.h"
+#include "render/tiny_scene.h"
+#include "viewer/xvfb_server.h"
+
+namespace fosssim {
+namespace {
+
+using testing::kTinyScene;
+
+class WindowTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!testing::on_path("Xvfb")) {
+      GTEST_SKIP() << "Xvfb is not installed (tools/install-deps.sh installs it)";
+    }
+    server_ = testing::XvfbServer::start();
+    ASSERT_TRUE(server_.has_value()) << "Xvfb is installed but did not start";
+    scene_ = folder_.write("scene.xml", kTinyScene);
+  }
+
+  testing::ProgramResult fosssim(const std::string& arguments) {
+    return testing::run_command(folder_, "DISPLAY=" + server_->display() + " " +
+                                             testing::quoted(testing::fosssim_program()) + " " +
+                                             arguments);
+  }
+
+  testing::ScratchFolder folder_;
+  std::optional<testing::XvfbServer> server_;
+  std::string scene_;
+};
+
+TEST_F(WindowTest, OpensAndShowsTheScene) {
+  const auto result =
+      fosssim("-s scene.xml --window-screenshot shot.png --window-screenshot-step 10");
+  ASSERT_EQ(result.status, 0) << result.err;
+  const Image shot = read_png(folder_ / "shot.png");
+  ASSERT_EQ(shot.width, 512);
+  ASSERT_EQ(shot.height, 512);
+  std::set<std::uint32_t> colors(shot.pixels.begin(), shot.pixels.end());
+  EXPECT_GT(colors.size(), 10u) << "the screenshot is blank";
+  // Particle 1 is fixed at pixel (384, 192) and has the default colour; far corners show the
+  // background.
+  EXPECT_LT(color_distance(shot.color_at(384, 192), Appearance::kDefaultParticleColor), 0.01);
+  EXPECT_LT(color_distance(shot.color_at(500, 500), testing::kBackground), 0.01);
+}
+
+TEST_F(WindowTest, ShowsExactlyWhatTheHeadlessPicturesShow) {
+  const auto window =
+      fosssim("-s scene.xml --window-screenshot shot.png --window-screenshot-step 17");
+  ASSERT_EQ(window.status, 0) << window.err;
+  const auto headless = fosssim("-s scene.xml -d 0 -g 1");
+  ASSERT_EQ(headless.status, 0) << headless.err;
+  const Image shot = read_png(folder_ / "shot.png");
+  const Image picture = read_png(folder_ / "pngs/frame_00017.png");
+  EXPECT_EQ(shot.pixels, picture.pixels);
+  EXPECT_NE(shot.pixels, read_png(folder_ / "pngs/frame_00016.png").pixels);
+}
+
+TEST_F(WindowTest, GradingModeRingsTheParticleTheFileGotWrong) {
+  ASSERT_EQ(fosssim("-s scene.xml -d 0 -o run.bin").status, 0);
+  auto scene = load_scene_text(kTinyScene, "scene.xml");
+  ASSERT_TRUE(scene.has_value());
+  {  // Move particle 0 by 0.01 (2.56 pixels) at step 12.
+    auto reader = TrajectoryReader::open(folder_ / "run.bin", scene->model.num_dofs());
+    ASSERT_TRUE(reader.has_value());
+    auto writer = TrajectoryWriter::open(folder_ / "bad.bin");
+    ASSERT_TRUE(writer.has_value());
+    State frame;
+    for (std::int64_t k = 0; k < reader->num_frames(); ++k) {
+      reader->read_frame(k, frame.q, frame.v);
+      if (k == 12) frame.q[0] += 0.01;
+      writer->write_frame(frame);
+    }
+    writer->commit();
+  }
+  const auto result =
+      fosssim("-s scene.xml -i bad.bin --window-screenshot shot.png --window-screenshot-step 12");
+  EXPECT_EQ(result.status, 130) << result.err;  // closed by the screenshot before the end
+  const Image shot = read_png(folder_ / "shot.png");
+  // The red ring around particle 0: radius 25.6 + 3 pixels around its centre, 2 pixels wide.
+  Vector q, v;
+  auto reader = TrajectoryReader::open(folder_ / "bad.bin", scene->model.num_dofs());
+  reader->read_frame(12, q, v);
+  const PixelMapping mapping(Camera{0, 0, 1}, 512, 512);
+  const Point2 centre = mapping.to_pixel(q[0], q[1]);
+  int red = 0;
+  for (int a = 0; a < 360; a += 10) {
+    const double angle = a * 3.14159265358979 / 180.0;
+    const int x = static_cast<int>(centre.x + 28.6 * std::cos(angle));
+    const int y = static_cast<int>(centre.y + 28.6 * std::sin(angle));
+    red += color_distance(shot.color_at(x, y), Color{0.9, 0.0, 0.0}) < 0.25;
+  }
+  EXPECT_GE(red, 25) << "of 36 points on the ring";
+  // Particle 1 agrees with the reference and has no ring.
+  EXPECT_LT(color_distance(shot.color_at(384 + 29, 192), testing::kBackground), 0.01);
+}
+
+TEST(WindowWithoutDisplay, SaysHowToRunHeadless) {
+  const testing::ScratchFolder folder;
+  folder.write("scene.xml", kTinyScene);
+  const auto result =
+      testing::run_command(folder, "env -u DISPLAY " + testing::quoted(testing::fosssim_program()) +
+                                       " -s scene.xml -o never.bin");
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.err.find("no display"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("-d 0"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(folder / "never.bin"));
+  EXPECT_FALSE(std::filesystem::exists(folder / "never.bin.incomplete"));
+}
+
+}  // namespace
+}  // namespace fosssim
