@@ -64,6 +64,9 @@ int run_simulation_window(const Scene& scene, const Options& options) {
       outputs.commit();
       outputs_open = false;
     });
+    for (const std::string& note : stepper.simulation().integrator().notes()) {
+      std::cerr << "FOSSSim: note: " << note << "\n";
+    }
     std::cout << "Simulation complete at time " << stepper.state().time << "." << std::endl;
   };
   events.failed = [&](const StepError& error) {

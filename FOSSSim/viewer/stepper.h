@@ -33,6 +33,7 @@ class SimulationStepper final : public Stepper {
   const State& state() const override { return simulation_.state(); }
   bool finished() const override { return simulation_.finished(); }
   void step() override { simulation_.step(); }
+  const Simulation& simulation() const { return simulation_; }
 
  private:
   Simulation simulation_;
