@@ -113,7 +113,7 @@ int main(int argc, char** argv) {
     if (valid) generated = generate_net(o.nx, o.ny, o.width, o.depth);
   } else if (skirt->parsed()) {
     valid = o.segments >= 3 && o.rings >= 2 && positive(o.top_radius) &&
-            positive(o.bottom_radius) && positive(o.height);
+            positive(o.bottom_radius) && o.height >= 0.0;
     if (valid)
       generated =
           generate_skirt(o.segments, o.rings, o.top_radius, o.bottom_radius, o.height, !o.no_bend);

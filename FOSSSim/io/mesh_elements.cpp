@@ -67,7 +67,7 @@ GeneratedMesh generate(ElementReader& r) {
   if (type == "skirt") {
     const double top = positive_or(r, "top-radius", 0.25);
     return generate_skirt(integer_at_least(r, "segments", 3), integer_at_least(r, "rings", 2), top,
-                          positive_or(r, "bottom-radius", 2.0 * top), positive_or(r, "height", 1.0),
+                          positive_or(r, "bottom-radius", 2.0 * top), r.non_negative_or("height", 1.0),
                           flag_or(r, "bend", true));
   }
   if (type == "tetbox") {

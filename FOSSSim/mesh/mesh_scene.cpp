@@ -68,7 +68,10 @@ Expected<std::unique_ptr<Force>, std::string> append_mesh(Scene& scene, const Me
     scene.initial.v.segment(dim * p, dim) = material.velocity.head(dim);
   }
   model.fixed.resize(total, false);
-  for (int v : pinned) model.fixed[first + v] = true;
+  for (int v : pinned) {
+    model.fixed[first + v] = true;
+    scene.initial.v.segment(dim * (first + v), dim).setZero();  // pins start at rest
+  }
   scene.particle_tags.resize(total);
 
   // Edges and appearance.

@@ -18,11 +18,12 @@ struct MeshMaterial {
   double k = 0.0;  ///< stiffness of every spring, N/m
   double b = 0.0;  ///< damping of every spring, N·s/m
   MassRule mass;
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  ///< initial velocity of every vertex
+  /// Initial velocity of every vertex that is not pinned (pinned vertices start at rest).
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
 };
 
 /// Appends the mesh to the scene: its vertices become particles (masses by material.mass,
-/// fixed when listed in `pinned`, at rest unless material.velocity says otherwise), and each
+/// fixed when listed in `pinned`, moving with material.velocity unless pinned), and each
 /// of its spring pairs (compute_spring_pairs) an edge and a spring of rest length equal to its
 /// initial length. The springs are returned as one SpringSetForce, labelled `label`, for the
 /// caller to place in the force order. The appearance gets small particles and edges (scaled
