@@ -162,17 +162,11 @@ Expected<Scene, SceneError> load_json_scene_text(std::string_view text, const st
     return SceneError(name, line_of(text, error.byte == 0 ? 0 : error.byte - 1), "",
                       "not valid JSON: " + what);
   }
-  try {
-    return JsonSceneParser(name).parse(root);
-  } catch (const SceneError& error) {
-    return error;
-  }
+  return catch_scene_error<Scene>([&] { return JsonSceneParser(name).parse(root); });
 }
 
 Expected<Scene, SceneError> load_json_scene_file(const std::string& path) {
-  auto text = read_text_file(path);
-  if (!text) return text.error();
-  return load_json_scene_text(*text, path);
+  return parse_text_file<Scene>(path, load_json_scene_text);
 }
 
 }  // namespace fosssim

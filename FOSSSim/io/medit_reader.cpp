@@ -173,17 +173,11 @@ class MeditParser {
 }  // namespace
 
 Expected<Mesh, SceneError> read_medit_text(std::string_view text, const std::string& name) {
-  try {
-    return MeditParser(text, name).parse();
-  } catch (const SceneError& error) {
-    return error;
-  }
+  return catch_scene_error<Mesh>([&] { return MeditParser(text, name).parse(); });
 }
 
 Expected<Mesh, SceneError> read_medit_file(const std::string& path) {
-  auto text = read_text_file(path);
-  if (!text) return text.error();
-  return read_medit_text(*text, path);
+  return parse_text_file<Mesh>(path, read_medit_text);
 }
 
 }  // namespace fosssim

@@ -151,17 +151,11 @@ class ObjParser {
 }  // namespace
 
 Expected<Mesh, SceneError> read_obj_text(std::string_view text, const std::string& name) {
-  try {
-    return ObjParser(name).parse(text);
-  } catch (const SceneError& error) {
-    return error;
-  }
+  return catch_scene_error<Mesh>([&] { return ObjParser(name).parse(text); });
 }
 
 Expected<Mesh, SceneError> read_obj_file(const std::string& path) {
-  auto text = read_text_file(path);
-  if (!text) return text.error();
-  return read_obj_text(*text, path);
+  return parse_text_file<Mesh>(path, read_obj_text);
 }
 
 }  // namespace fosssim

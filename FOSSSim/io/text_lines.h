@@ -36,4 +36,22 @@ bool parse_int(std::string_view text, int& value);
 /// `"text"`, for messages.
 std::string quote(std::string_view text);
 
+/// Runs `parse` (which throws SceneError on bad input) and returns its result or the error.
+template <typename T, typename Parse>
+Expected<T, SceneError> catch_scene_error(Parse parse) {
+  try {
+    return parse();
+  } catch (const SceneError& error) {
+    return error;
+  }
+}
+
+/// Reads the file at `path` and returns parse_text(text, path), or the error of reading it.
+template <typename T, typename ParseText>
+Expected<T, SceneError> parse_text_file(const std::string& path, ParseText parse_text) {
+  auto text = read_text_file(path);
+  if (!text) return text.error();
+  return parse_text(text.value(), path);
+}
+
 }  // namespace fosssim

@@ -32,6 +32,7 @@ TEST(AppendMesh, AddsParticlesAfterExistingOnesWithSpringsAtRest) {
   EXPECT_TRUE(scene.model.fixed[1] && scene.model.fixed[3] && !scene.model.fixed[2]);
   EXPECT_EQ(scene.initial.q.segment<3>(3 * 9), Eigen::Vector3d(0.5, -1.0, 0.0));
   EXPECT_EQ(scene.initial.v.segment<3>(3 * 9), Eigen::Vector3d(0.0, 0.0, 1.0));
+  EXPECT_EQ(scene.initial.v.segment<3>(3 * 1), Eigen::Vector3d::Zero()) << "pins start at rest";
   EXPECT_DOUBLE_EQ(scene.model.mass.tail(27).sum() / 3.0, 2.0);  // 1 m² at 2 kg/m²
   EXPECT_EQ(scene.model.mass[0], 5.0);
   std::vector<SpringTerm> springs;
