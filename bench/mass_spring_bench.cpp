@@ -114,7 +114,7 @@ void integrator_table(const std::vector<int>& sizes) {
     const Scene lg_scene = make_cloth(nx, IntegratorKind::kLocalGlobal);
     const Scene lie_scene = make_cloth(nx, IntegratorKind::kLinearlyImplicitEuler);
     const int n = lg_scene.model.num_particles();
-    const int steps = n <= 2000 ? 30 : (n <= 20000 ? 10 : 3);
+    const int steps = n <= 2000 ? 30 : (n <= 20000 ? 10 : 2);
     LocalGlobal<3> lg(lg_scene.model);
     LinearlyImplicitEuler lie(lie_scene.model);
     LdltEveryStep baseline;
