@@ -151,6 +151,7 @@ void spring_force_table(const std::vector<int>& sizes) {
     const ForceInput in{q, v, scene.model.mass};
     const int repeats = std::max(3, 3000000 / static_cast<int>(springs.size()));
     const auto time = [&](auto&& work) {
+      work();  // warm-up: allocations and caches
       auto start = Clock::now();
       for (int r = 0; r < repeats; ++r) work();
       return milliseconds_since(start) / repeats;
@@ -167,6 +168,8 @@ void spring_force_table(const std::vector<int>& sizes) {
     HessianBuilder builder;
     const int hessian_repeats = std::max(1, repeats / 20);
     const auto time_hessian = [&](auto&& add) {
+      builder.clear();
+      add();  // warm-up: the triplet list's capacity
       auto start = Clock::now();
       for (int r = 0; r < hessian_repeats; ++r) {
         builder.clear();

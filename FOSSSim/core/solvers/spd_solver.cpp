@@ -74,16 +74,18 @@ void SpdSolver::solve_sparse(Points<C>& X) const {
     for (int c = 0; c < C; ++c) yk[c] = y[C * k + c] / diagonal;
     for (int c = 0; c < C; ++c) y[C * k + c] = yk[c];
     for (auto p = outer[k] + 1; p < outer[k + 1]; ++p) {
+      const double l = value[p];  // loaded once: row may alias value as far as the compiler knows
       double* row = y + C * inner[p];
-      for (int c = 0; c < C; ++c) row[c] -= value[p] * yk[c];
+      for (int c = 0; c < C; ++c) row[c] -= l * yk[c];
     }
   }
   for (int k = n - 1; k >= 0; --k) {  // Lᵀ x = z
     double yk[C];
     for (int c = 0; c < C; ++c) yk[c] = y[C * k + c];
     for (auto p = outer[k] + 1; p < outer[k + 1]; ++p) {
+      const double l = value[p];
       const double* row = y + C * inner[p];
-      for (int c = 0; c < C; ++c) yk[c] -= value[p] * row[c];
+      for (int c = 0; c < C; ++c) yk[c] -= l * row[c];
     }
     const double diagonal = value[outer[k]];
     for (int c = 0; c < C; ++c) y[C * k + c] = yk[c] / diagonal;
