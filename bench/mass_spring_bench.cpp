@@ -135,7 +135,7 @@ void spring_force_table(const std::vector<int>& sizes) {
   std::printf(
       "\nSpring forces: one SpringSetForce against one SpringForce object per spring (same\n"
       "math), milliseconds per gradient and per hessX (adding the triplets; building the sparse\n"
-              "matrix from them costs the same for both).\n\n");
+      "matrix from them costs the same for both).\n\n");
   std::printf("%9s %9s %12s %12s %8s %12s %12s %8s\n", "vertices", "springs", "grad set",
               "grad each", "ratio", "hessX set", "hessX each", "ratio");
   for (int nx : sizes) {

@@ -67,8 +67,8 @@ GeneratedMesh generate(ElementReader& r) {
   if (type == "skirt") {
     const double top = positive_or(r, "top-radius", 0.25);
     return generate_skirt(integer_at_least(r, "segments", 3), integer_at_least(r, "rings", 2), top,
-                          positive_or(r, "bottom-radius", 2.0 * top), r.non_negative_or("height", 1.0),
-                          flag_or(r, "bend", true));
+                          positive_or(r, "bottom-radius", 2.0 * top),
+                          r.non_negative_or("height", 1.0), flag_or(r, "bend", true));
   }
   if (type == "tetbox") {
     return generate_tet_box(integer_at_least(r, "nx", 1), integer_at_least(r, "ny", 1),

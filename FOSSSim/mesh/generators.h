@@ -43,9 +43,9 @@ GeneratedMesh generate_net(int nx, int ny, double width, double depth);
 
 /// A skirt: `rings` ≥ 2 circles of `segments` ≥ 3 vertices around the y axis, the top ring of
 /// radius top_radius at y = 0, the bottom one of radius bottom_radius at y = -height (≥ 0; 0
-/// gives a flat annulus that falls into folds), radii in between linear. Faces are the quads between rings (wrapping around); with bend, segments
-/// join every vertex to the one two steps along its ring and two rings down. Pin sets: "top"
-/// (the top ring, the default), "none".
+/// gives a flat annulus that falls into folds), radii in between linear. Faces are the quads
+/// between rings (wrapping around); with bend, segments join every vertex to the one two steps
+/// along its ring and two rings down. Pin sets: "top" (the top ring, the default), "none".
 GeneratedMesh generate_skirt(int segments, int rings, double top_radius, double bottom_radius,
                              double height, bool bend);
 
