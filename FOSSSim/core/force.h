@@ -2,8 +2,10 @@
 // The interface every force implements: energy, gradient and both Hessians.
 
 #include <string>
+#include <vector>
 
 #include "core/hessian_builder.h"
+#include "core/spring_terms.h"
 #include "core/types.h"
 
 namespace fosssim {
@@ -40,6 +42,22 @@ class Force {
   virtual bool has_symmetric_jacobians() const { return true; }
   /// A short label for messages, such as "springforce(edge 3)".
   virtual std::string label() const = 0;
+
+  /// For solvers that take springs implicitly (the local/global solver of Liu et al. 2013):
+  /// when this force is exactly a set of springs (SpringTerm, with their damping), appends them
+  /// and returns true. Otherwise returns false and appends nothing; the default. The springs
+  /// must not change while a simulation runs.
+  virtual bool append_springs(std::vector<SpringTerm>& springs) const {
+    (void)springs;
+    return false;
+  }
+  /// Likewise for zero-rest-length springs to points in space (AnchorTerm). Unlike springs,
+  /// anchors may change between steps (a particle dragged with the mouse); solvers ask again
+  /// every step. A force that returns true and appends nothing currently adds no force.
+  virtual bool append_anchors(std::vector<AnchorTerm>& anchors) const {
+    (void)anchors;
+    return false;
+  }
 };
 
 }  // namespace fosssim

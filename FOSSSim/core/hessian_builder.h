@@ -18,6 +18,12 @@ class HessianBuilder {
   void set_scale(double scale) { scale_ = scale; }
   double scale() const { return scale_; }
 
+  /// Asks forces whose per-element Hessian can be indefinite (a compressed spring's) to add its
+  /// projection onto the positive semi-definite matrices instead, so that M + h²·hessX stays
+  /// positive definite. Off by default; forces that cannot project add their exact Hessian.
+  void set_project_definite(bool on) { project_definite_ = on; }
+  bool project_definite() const { return project_definite_; }
+
   /// Adds scale·H to the block of rows of particle pi and columns of particle pj.
   template <int D>
   void add_block(int pi, int pj, const Mat<D>& H) {
@@ -53,6 +59,7 @@ class HessianBuilder {
 
  private:
   double scale_;
+  bool project_definite_ = false;
   std::vector<Triplet> triplets_;
 };
 

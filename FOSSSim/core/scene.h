@@ -1,6 +1,7 @@
 #pragma once
 // A loaded scene: its model, its initial state and how it looks.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,6 +44,9 @@ struct Appearance {
   Color background{1.0, 1.0, 1.0};
   std::vector<ParticlePath> paths;
   std::optional<Viewport> viewport;
+  /// Surface triangles to shade (particle indices): the faces of cloth meshes and the boundary
+  /// of tet meshes. Empty for particle scenes.
+  std::vector<std::array<int, 3>> triangles;
 };
 
 /// Everything a scene file declares.

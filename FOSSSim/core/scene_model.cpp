@@ -15,6 +15,10 @@ const char* integrator_name(IntegratorKind kind) {
       return "linearized-implicit-euler";
     case IntegratorKind::kImplicitEuler:
       return "implicit-euler";
+    case IntegratorKind::kLocalGlobal:
+      return "local-global";
+    case IntegratorKind::kLinearlyImplicitEuler:
+      return "linearly-implicit-euler";
   }
   return "unknown";
 }

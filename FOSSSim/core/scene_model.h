@@ -17,6 +17,13 @@ enum class IntegratorKind {
   kSymplecticEuler,
   kLinearizedImplicitEuler,
   kImplicitEuler,
+  /// The local/global solver of Liu et al. 2013 for mass-spring systems
+  /// (integrators/local_global.h).
+  kLocalGlobal,
+  /// Linearly implicit Euler linearized at (qⁿ, vⁿ) with fixed particles projected out, as in
+  /// the CSC417 mass-spring assignment (integrators/linearly_implicit_euler.h). Not the compat
+  /// kLinearizedImplicitEuler, which linearizes at the predicted position qⁿ + h vⁿ.
+  kLinearlyImplicitEuler,
 };
 
 /// Canonical XML name of an integrator kind ("explicit-euler", ...).
@@ -28,10 +35,43 @@ struct NewtonSettings {
   int max_iterations = 200;  ///< give up and report non-convergence after this many
 };
 
+/// How the local/global solver keeps fixed particles in place.
+enum class PinMethod {
+  kElimination,  ///< remove their rows and columns from the system: exact
+  kPenalty,      ///< a stiff spring w·CᵀC to their anchor, as in Liu et al. 2013
+};
+
+/// Which factorization the local/global solver uses for its constant matrix.
+enum class LinearSolverChoice {
+  kAuto,    ///< dense below LocalGlobalSettings::kDenseLimit free particles, sparse above
+  kDense,   ///< dense Cholesky (Eigen::LLT), for tiny systems
+  kSparse,  ///< sparse Cholesky (Eigen::SimplicialLLT), factored once and reused
+};
+
+/// Settings of the local/global solver (Liu et al. 2013).
+struct LocalGlobalSettings {
+  /// kAuto solves systems of at most this many free particles densely.
+  static constexpr int kDenseLimit = 64;
+  int iterations = 10;       ///< local/global iterations per step (the most, with a tolerance)
+  double tolerance = 0.0;    ///< stop once no coordinate moved more than this (m); 0: never
+  PinMethod pins = PinMethod::kElimination;
+  double penalty_weight = 1e10;  ///< w of the penalty pins, N/m
+  LinearSolverChoice solver = LinearSolverChoice::kAuto;
+};
+
+/// Settings of the linearly implicit Euler integrator.
+struct LinearlyImplicitSettings {
+  /// Project each spring's Hessian onto the positive semi-definite matrices (a compressed
+  /// spring loses its negative transverse stiffness), so the step matrix is positive definite.
+  bool project_hessian = false;
+};
+
 struct IntegratorSettings {
   IntegratorKind kind = IntegratorKind::kExplicitEuler;
   double dt = 0.01;  ///< time step h, seconds
   NewtonSettings newton;
+  LocalGlobalSettings local_global;
+  LinearlyImplicitSettings linearly_implicit;
 };
 
 /// A line segment between two particles; springs live on edges.

@@ -18,6 +18,21 @@ using Vec = Eigen::Matrix<double, D, 1>;
 template <int D>
 using Mat = Eigen::Matrix<double, D, D>;
 
+/// n particles' D-vectors as an n×D row-major matrix. Its storage is the interleaved layout of
+/// a state vector, so a Vector of size D·n maps onto it without copying (map_points).
+template <int D>
+using Points = Eigen::Matrix<double, Eigen::Dynamic, D, Eigen::RowMajor>;
+
+/// Views a state-sized vector as n×D points.
+template <int D>
+Eigen::Map<Points<D>> map_points(Vector& x) {
+  return Eigen::Map<Points<D>>(x.data(), x.size() / D, D);
+}
+template <int D>
+Eigen::Map<const Points<D>> map_points(const Vector& x) {
+  return Eigen::Map<const Points<D>>(x.data(), x.size() / D, D);
+}
+
 /// Reads particle p's D coordinates out of a state-sized vector.
 template <int D, typename Derived>
 Vec<D> particle_vec(const Eigen::MatrixBase<Derived>& x, int p) {

@@ -13,6 +13,9 @@
 
 #include "core/force_registry.h"
 #include "io/element_reader.h"
+#include "io/integrator_options.h"
+#include "io/json_scene_reader.h"
+#include "io/mesh_elements.h"
 
 namespace fosssim {
 
@@ -32,7 +35,7 @@ bool is_known_element(std::string_view name) {
   for (const char* known : kOtherElements) {
     if (name == known) return true;
   }
-  return find_force_kind(name) != nullptr;
+  return find_force_kind(name) != nullptr || is_mesh_element(name);
 }
 
 /// The element tinyxml2 names in its error text ("... XMLElement name=particle"), as "<particle>".
@@ -83,6 +86,7 @@ class SceneParser {
     read_settings(root);
     read_particles();
     read_edges();
+    mesh_forces_ = read_mesh_elements(root, scene_, file_);
     read_forces();
     read_appearance();
     return std::move(scene_);
@@ -149,10 +153,12 @@ class SceneParser {
       if (!kind) {
         r.fail("type", "names an unknown integrator \"" + type +
                            "\" (expected explicit-euler, symplectic-euler, "
-                           "linearized-implicit-euler or implicit-euler, or an alias)");
+                           "linearized-implicit-euler, implicit-euler, local-global or "
+                           "linearly-implicit-euler, or an alias)");
       }
       model.integrator.kind = *kind;
       model.integrator.dt = r.positive("dt");
+      read_integrator_options(r, model.integrator);
       keep_warnings(r);
     }
     {
@@ -238,6 +244,9 @@ class SceneParser {
         scene_.model.forces.push_back(kind.create(r, context));
         keep_warnings(r);
       }
+      if (kind.tag == "springforce") {  // mesh springs sum right after the <springforce> group
+        for (auto& force : mesh_forces_) scene_.model.forces.push_back(std::move(force));
+      }
     }
   }
 
@@ -272,6 +281,7 @@ class SceneParser {
   const std::string& file_;
   Scene scene_;
   std::map<std::string, std::vector<const XMLElement*>> elements_;
+  std::vector<std::unique_ptr<Force>> mesh_forces_;
 };
 
 }  // namespace
@@ -286,6 +296,9 @@ std::optional<IntegratorKind> parse_integrator_name(std::string_view name) {
       {"linearized-implicit", IntegratorKind::kLinearizedImplicitEuler},
       {"implicit-euler", IntegratorKind::kImplicitEuler},
       {"implicit", IntegratorKind::kImplicitEuler},
+      {"local-global", IntegratorKind::kLocalGlobal},
+      {"fast-mass-springs", IntegratorKind::kLocalGlobal},
+      {"linearly-implicit-euler", IntegratorKind::kLinearlyImplicitEuler},
   };
   const auto found = kNames.find(name);
   if (found == kNames.end()) return std::nullopt;
@@ -314,6 +327,7 @@ Expected<Scene, SceneError> load_scene_text(std::string_view text, const std::st
 }
 
 Expected<Scene, SceneError> load_scene_file(const std::string& path) {
+  if (std::filesystem::path(path).extension() == ".json") return load_json_scene_file(path);
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored)) {
     return SceneError(path, 0, "", "is a directory, not a scene file");

@@ -14,7 +14,8 @@ namespace fosssim {
 /// Loads a scene file. Every malformed input (missing file, empty file, not XML, unknown
 /// element, missing or non-numeric attribute, index out of range, non-positive mass, ...) is
 /// returned as a SceneError naming file, line, element and problem; nothing is defaulted
-/// silently. Attributes nobody reads become warnings in Scene::warnings.
+/// silently. Attributes nobody reads become warnings in Scene::warnings. A path ending in
+/// ".json" is read as a fast mass-springs JSON scene instead (load_json_scene_file).
 Expected<Scene, SceneError> load_scene_file(const std::string& path);
 
 /// Loads a scene from XML text; `name` stands for the file in messages.

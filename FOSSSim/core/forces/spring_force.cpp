@@ -1,5 +1,7 @@
 #include "core/forces/spring_force.h"
 
+#include <algorithm>
+
 #include "core/forces/make_for_dim.h"
 #include "core/scene_model.h"
 
@@ -42,7 +44,9 @@ void SpringForce<D>::add_hessian_x(const ForceInput& in, HessianBuilder& hessian
   }
   const Vec<D> n = d / l;
   const Mat<D> P = n * n.transpose();
-  Mat<D> H = k_ * (P + ((l - l0_) / l) * (I - P));
+  double transverse = (l - l0_) / l;
+  if (hessian.project_definite()) transverse = std::max(transverse, 0.0);
+  Mat<D> H = k_ * (P + transverse * (I - P));
   if (b_ != 0.0) {
     const Vec<D> dv = particle_vec<D>(in.v, j_) - particle_vec<D>(in.v, i_);
     H += (b_ / l) * (n * dv.transpose() + n.dot(dv) * I) * (I - P);
@@ -58,6 +62,12 @@ void SpringForce<D>::add_hessian_v(const ForceInput& in, HessianBuilder& hessian
   if (l == 0.0 && l0_ == 0.0) return;  // the damping direction is undefined, as in add_gradient
   const Vec<D> n = d / l;
   hessian.add_pair<D>(i_, j_, Mat<D>(b_ * n * n.transpose()));
+}
+
+template <int D>
+bool SpringForce<D>::append_springs(std::vector<SpringTerm>& springs) const {
+  springs.push_back({i_, j_, k_, l0_, b_});
+  return true;
 }
 
 template <int D>

@@ -14,7 +14,8 @@ namespace fosssim {
 ///   hessX = k [P + ((l - l0)/l)(I - P)] + (b/l)[n dvᵀ + (n·dv) I](I - P)   (pair pattern)
 ///   hessV = b P                                                           (pair pattern)
 /// The damping term's position Jacobian is not symmetric. A zero-rest-length spring
-/// (l0 = 0, b = 0) stays defined at l = 0, where F_i = k d and hessX = k I.
+/// (l0 = 0, b = 0) stays defined at l = 0, where F_i = k d and hessX = k I. When the Hessian
+/// builder asks for definite blocks, (l - l0)/l is clamped at 0 (see spring_hessian_x).
 template <int D>
 class SpringForce final : public Force {
  public:
@@ -28,6 +29,7 @@ class SpringForce final : public Force {
   bool is_conservative() const override { return b_ == 0.0; }
   bool has_symmetric_jacobians() const override { return b_ == 0.0; }
   std::string label() const override;
+  bool append_springs(std::vector<SpringTerm>& springs) const override;
 
  private:
   int i_, j_;

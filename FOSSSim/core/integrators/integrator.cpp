@@ -3,6 +3,8 @@
 #include "core/integrators/explicit_euler.h"
 #include "core/integrators/implicit_euler.h"
 #include "core/integrators/linearized_implicit_euler.h"
+#include "core/integrators/linearly_implicit_euler.h"
+#include "core/integrators/local_global.h"
 #include "core/integrators/symplectic_euler.h"
 
 namespace fosssim {
@@ -17,6 +19,11 @@ std::unique_ptr<Integrator> make_integrator(const SceneModel& model) {
       return std::make_unique<LinearizedImplicitEuler>(model);
     case IntegratorKind::kImplicitEuler:
       return std::make_unique<ImplicitEuler>(model);
+    case IntegratorKind::kLocalGlobal:
+      if (model.dim == 3) return std::make_unique<LocalGlobal<3>>(model);
+      return std::make_unique<LocalGlobal<2>>(model);
+    case IntegratorKind::kLinearlyImplicitEuler:
+      return std::make_unique<LinearlyImplicitEuler>(model);
   }
   return nullptr;
 }

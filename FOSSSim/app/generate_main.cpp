@@ -1,0 +1,164 @@
+// FOSSSim-generate: writes procedural meshes (mesh/generators.h) as OBJ or MEDIT files, and
+// optionally a JSON scene of the fast mass-springs format around an OBJ, so that demos and
+// benchmarks need no outside data. Exit status: 0 written, 2 bad command line, 4 I/O error.
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "app/exit_codes.h"
+#include "core/text.h"
+#include "io/mesh_writer.h"
+#include "mesh/generators.h"
+
+namespace {
+
+using namespace fosssim;
+
+struct GenerateOptions {
+  int nx = 21, ny = 21, nz = 4, links = 20, segments = 32, rings = 12, cells = 8;
+  double width = 1.0, height = 1.0, depth = 1.0, length = 1.0;
+  double top_radius = 0.25, bottom_radius = 0.5, sx = 1.0, sy = 1.0, sz = 1.0, radius = 1.0;
+  std::string plane = "xy";
+  bool no_bend = false;
+  std::string output;
+  std::string json;
+  double k = 1000.0;
+  std::string pins;
+};
+
+/// Writes {"obj": <mesh file relative to the JSON>, "k": k, "b": [pins, 1-based]}.
+std::optional<std::string> write_json_scene(const std::string& path, const std::string& mesh_path,
+                                            double k, const std::vector<int>& pinned) {
+  const auto relative = std::filesystem::path(mesh_path).lexically_relative(
+      std::filesystem::absolute(path).parent_path());
+  std::ofstream out(path + ".partial");
+  out << "{\n  \"obj\": \"" << relative.generic_string() << "\",\n  \"k\": " << to_text(k)
+      << ",\n  \"b\": [";
+  for (std::size_t p = 0; p < pinned.size(); ++p) out << (p ? ", " : "") << pinned[p] + 1;
+  out << "]\n}\n";
+  out.close();
+  if (!out) return "cannot write " + path + ".partial";
+  std::error_code error;
+  std::filesystem::rename(path + ".partial", path, error);
+  if (error) return "cannot rename " + path + ".partial: " + error.message();
+  return std::nullopt;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  GenerateOptions o;
+  CLI::App app{
+      "Writes a procedural mass-spring mesh: cloth, chain, net and skirt as OBJ,\n"
+      "tetbox and tetball as MEDIT .mesh (docs/scenes-3d.md).",
+      "FOSSSim-generate"};
+  app.require_subcommand(1);
+  app.add_option("-o,--output", o.output, "Mesh file to write (.obj or .mesh)")->required();
+  app.add_option("--json", o.json,
+                 "Also write a JSON scene (fast mass-springs format) around the OBJ");
+  app.add_option("--k", o.k, "Spring stiffness for --json (N/m)")->capture_default_str();
+  app.add_option("--pins", o.pins, "Pin set for --json (default: the generator's)");
+  auto* cloth = app.add_subcommand("cloth", "nx × ny cloth, hanging (plane xy) or flat (xz)");
+  cloth->add_option("--nx", o.nx)->capture_default_str();
+  cloth->add_option("--ny", o.ny)->capture_default_str();
+  cloth->add_option("--width", o.width)->capture_default_str();
+  cloth->add_option("--height", o.height)->capture_default_str();
+  cloth->add_option("--plane", o.plane)->check(CLI::IsMember({"xy", "xz"}))->capture_default_str();
+  cloth->add_flag("--no-bend", o.no_bend, "No bending springs");
+  auto* chain = app.add_subcommand("chain", "a chain of springs along +x");
+  chain->add_option("--links", o.links)->capture_default_str();
+  chain->add_option("--length", o.length)->capture_default_str();
+  auto* net = app.add_subcommand("net", "a flat net of springs along grid lines");
+  net->add_option("--nx", o.nx)->capture_default_str();
+  net->add_option("--ny", o.ny)->capture_default_str();
+  net->add_option("--width", o.width)->capture_default_str();
+  net->add_option("--depth", o.depth)->capture_default_str();
+  auto* skirt = app.add_subcommand("skirt", "rings of cloth around the y axis");
+  skirt->add_option("--segments", o.segments)->capture_default_str();
+  skirt->add_option("--rings", o.rings)->capture_default_str();
+  skirt->add_option("--top-radius", o.top_radius)->capture_default_str();
+  skirt->add_option("--bottom-radius", o.bottom_radius)->capture_default_str();
+  skirt->add_option("--height", o.height)->capture_default_str();
+  skirt->add_flag("--no-bend", o.no_bend, "No bending springs");
+  auto* box = app.add_subcommand("tetbox", "a box of nx × ny × nz cubes, six tets each");
+  box->add_option("--nx", o.nx)->capture_default_str();
+  box->add_option("--ny", o.ny)->capture_default_str();
+  box->add_option("--nz", o.nz)->capture_default_str();
+  box->add_option("--sx", o.sx)->capture_default_str();
+  box->add_option("--sy", o.sy)->capture_default_str();
+  box->add_option("--sz", o.sz)->capture_default_str();
+  auto* ball = app.add_subcommand("tetball", "a ball of tetrahedralized cubes");
+  ball->add_option("--cells", o.cells, "Cubes along the diameter")->capture_default_str();
+  ball->add_option("--radius", o.radius)->capture_default_str();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error) == 0 ? kExitOk : kExitBadInput;
+  }
+
+  const auto positive = [](double x) { return x > 0.0; };
+  GeneratedMesh generated;
+  bool valid = true;
+  if (cloth->parsed()) {
+    valid = o.nx >= 2 && o.ny >= 2 && positive(o.width) && positive(o.height);
+    if (valid)
+      generated = generate_cloth(o.nx, o.ny, o.width, o.height, o.plane == "xz", !o.no_bend);
+  } else if (chain->parsed()) {
+    valid = o.links >= 1 && positive(o.length);
+    if (valid) generated = generate_chain(o.links, o.length);
+  } else if (net->parsed()) {
+    valid = o.nx >= 2 && o.ny >= 2 && positive(o.width) && positive(o.depth);
+    if (valid) generated = generate_net(o.nx, o.ny, o.width, o.depth);
+  } else if (skirt->parsed()) {
+    valid = o.segments >= 3 && o.rings >= 2 && positive(o.top_radius) &&
+            positive(o.bottom_radius) && o.height >= 0.0;
+    if (valid)
+      generated =
+          generate_skirt(o.segments, o.rings, o.top_radius, o.bottom_radius, o.height, !o.no_bend);
+  } else if (box->parsed()) {
+    valid =
+        o.nx >= 1 && o.ny >= 1 && o.nz >= 1 && positive(o.sx) && positive(o.sy) && positive(o.sz);
+    if (valid) generated = generate_tet_box(o.nx, o.ny, o.nz, o.sx, o.sy, o.sz);
+  } else {
+    valid = o.cells >= 2 && positive(o.radius);
+    if (valid) generated = generate_tet_ball(o.cells, o.radius);
+  }
+  if (!valid) {
+    std::cerr << "FOSSSim-generate: error: counts must be at least 2 (cubes, links: 1; skirt "
+                 "segments: 3) and sizes positive\n";
+    return kExitBadInput;
+  }
+  const bool tets = !generated.mesh.tets.empty();
+  const std::string extension = std::filesystem::path(o.output).extension().string();
+  if (extension != (tets ? ".mesh" : ".obj")) {
+    std::cerr << "FOSSSim-generate: error: this mesh is written as "
+              << (tets ? "MEDIT (.mesh)" : "OBJ (.obj)") << ", but the output is " << o.output
+              << "\n";
+    return kExitBadInput;
+  }
+  const std::vector<int>* pinned =
+      generated.find_pins(o.pins.empty() ? generated.default_pins : o.pins);
+  if (!pinned) {
+    std::cerr << "FOSSSim-generate: error: --pins must be " << generated.pin_set_names() << "\n";
+    return kExitBadInput;
+  }
+  if (!o.json.empty() && tets) {
+    std::cerr << "FOSSSim-generate: error: --json scenes hold OBJ meshes, not tets\n";
+    return kExitBadInput;
+  }
+  auto error =
+      tets ? write_medit_file(o.output, generated.mesh) : write_obj_file(o.output, generated.mesh);
+  if (!error && !o.json.empty())
+    error = write_json_scene(o.json, std::filesystem::absolute(o.output).string(), o.k, *pinned);
+  if (error) {
+    std::cerr << "FOSSSim-generate: error: " << *error << "\n";
+    return kExitIoError;
+  }
+  std::cout << "wrote " << o.output << ": " << generated.mesh.num_vertices() << " vertices, "
+            << compute_spring_pairs(generated.mesh).size() << " springs";
+  if (tets) std::cout << ", " << generated.mesh.tets.size() << " tets";
+  std::cout << "\n";
+  return kExitOk;
+}

@@ -1,0 +1,57 @@
+#include "core/interaction/picking.h"
+
+#include <limits>
+#include <memory>
+
+namespace fosssim {
+
+DragSpringForce& add_drag_spring(SceneModel& model) {
+  auto force = std::make_unique<DragSpringForce>(model.dim);
+  DragSpringForce& handle = *force;
+  model.forces.push_back(std::move(force));
+  return handle;
+}
+
+DragSpringForce* find_drag_spring(const SceneModel& model) {
+  for (auto it = model.forces.rbegin(); it != model.forces.rend(); ++it) {
+    if (auto* drag = dynamic_cast<DragSpringForce*>(it->get())) return drag;
+  }
+  return nullptr;
+}
+
+std::optional<int> pick_particle(const Vector& q, int dim, const Ray& ray, double radius) {
+  const double length = ray.direction.norm();
+  if (length == 0.0) return std::nullopt;
+  const Eigen::Vector3d u = ray.direction / length;
+  std::optional<int> best;
+  double best_t = std::numeric_limits<double>::infinity();
+  const int n = static_cast<int>(q.size()) / dim;
+  for (int p = 0; p < n; ++p) {
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    x.head(dim) = q.segment(dim * p, dim);
+    const Eigen::Vector3d w = x - ray.origin;
+    const double t = w.dot(u);
+    if (t < 0.0) continue;
+    if ((w - t * u).norm() <= radius && t < best_t) {
+      best_t = t;
+      best = p;
+    }
+  }
+  return best;
+}
+
+std::optional<Eigen::Vector3d> drag_target(const Ray& ray, const Eigen::Vector3d& plane_point,
+                                           const Eigen::Vector3d& plane_normal) {
+  const double denominator = plane_normal.dot(ray.direction);
+  if (denominator == 0.0) return std::nullopt;
+  const double t = plane_normal.dot(plane_point - ray.origin) / denominator;
+  if (t < 0.0) return std::nullopt;
+  return Eigen::Vector3d(ray.origin + t * ray.direction);
+}
+
+double suggest_drag_stiffness(const SceneModel& model, int particle) {
+  const double h = model.integrator.dt;
+  return model.mass[model.dim * particle] / (h * h);
+}
+
+}  // namespace fosssim

@@ -1,0 +1,172 @@
+#include "io/json_scene_reader.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "core/forces/constant_force.h"
+#include "core/text.h"
+#include "io/obj_reader.h"
+#include "io/text_lines.h"
+#include "mesh/mesh_scene.h"
+
+namespace fosssim {
+
+namespace {
+
+using nlohmann::json;
+
+/// The 1-based line of byte `offset` of `text`.
+int line_of(std::string_view text, std::size_t offset) {
+  offset = std::min(offset, text.size());
+  return 1 +
+         static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(offset), '\n'));
+}
+
+class JsonSceneParser {
+ public:
+  explicit JsonSceneParser(const std::string& name) : name_(name) {}
+
+  Scene parse(const json& root) {
+    if (!root.is_object())
+      fail("the file must hold a JSON object such as {\"obj\": \"cloth.obj\", \"k\": 1000}");
+    for (const auto& [key, value] : root.items()) {
+      if (key != "obj" && key != "k" && key != "b" && key != "m" && key != "h" &&
+          key != "iterations" && key != "duration") {
+        scene_.warnings.push_back(name_ + ": warning: unknown key \"" + key + "\" ignored");
+      }
+    }
+    SceneModel& model = scene_.model;
+    scene_.source = name_;
+    model.dim = 3;
+    model.mass.resize(0);
+    scene_.initial.q.resize(0);
+    scene_.initial.v.resize(0);
+    model.integrator.kind = IntegratorKind::kLocalGlobal;
+    model.integrator.dt = positive(root, "h", JsonSceneDefaults::kTimeStep);
+    model.integrator.local_global.iterations = iterations(root);
+    model.integrator.local_global.pins = PinMethod::kPenalty;
+    model.integrator.local_global.penalty_weight = JsonSceneDefaults::kPenalty;
+    model.duration = non_negative(root, "duration", JsonSceneDefaults::kDuration);
+
+    const Mesh mesh = read_mesh(root);
+    MeshMaterial material;
+    material.k = non_negative(root, "k", -1.0);
+    material.mass = root.contains("m") ? MassRule{MassRule::kUniform, positive(root, "m", 0.0)}
+                                       : MassRule{MassRule::kArea, JsonSceneDefaults::kAreaDensity};
+    auto springs =
+        append_mesh(scene_, mesh, material, pinned(root, mesh.num_vertices()), "obj mesh");
+    if (!springs) fail(springs.error());
+    model.forces.push_back(std::move(springs).value());
+    model.forces.push_back(
+        std::make_unique<ConstantForce<3>>(Vec<3>(0.0, JsonSceneDefaults::kGravity, 0.0)));
+    return std::move(scene_);
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& problem) const {
+    throw SceneError(name_, 0, "", problem);
+  }
+
+  /// A number under `key`; fallback < 0 marks it required.
+  double number(const json& root, const char* key, double fallback) {
+    if (!root.contains(key)) {
+      if (fallback < 0.0) fail(std::string("the required key \"") + key + "\" is missing");
+      return fallback;
+    }
+    const json& value = root.at(key);
+    if (!value.is_number())
+      fail(std::string("\"") + key + "\" must be a number, found " + value.dump());
+    const double x = value.get<double>();
+    if (!std::isfinite(x))
+      fail(std::string("\"") + key + "\" must be finite, found " + value.dump());
+    return x;
+  }
+
+  double non_negative(const json& root, const char* key, double fallback) {
+    const double x = number(root, key, fallback);
+    if (x < 0.0) fail(std::string("\"") + key + "\" must not be negative, found " + to_text(x));
+    return x;
+  }
+
+  double positive(const json& root, const char* key, double fallback) {
+    const double x = number(root, key, fallback);
+    if (!(x > 0.0)) fail(std::string("\"") + key + "\" must be positive, found " + to_text(x));
+    return x;
+  }
+
+  int iterations(const json& root) {
+    if (!root.contains("iterations")) return JsonSceneDefaults::kIterations;
+    const json& value = root.at("iterations");
+    if (!value.is_number_integer() || value.get<long long>() < 1 ||
+        value.get<long long>() > 1000000) {
+      fail("\"iterations\" must be a whole number from 1 to 1000000, found " + value.dump());
+    }
+    return value.get<int>();
+  }
+
+  Mesh read_mesh(const json& root) {
+    if (!root.contains("obj")) fail("the required key \"obj\" (the OBJ mesh file) is missing");
+    if (!root.at("obj").is_string())
+      fail("\"obj\" must be a file name, found " + root.at("obj").dump());
+    std::filesystem::path path(root.at("obj").get<std::string>());
+    if (path.is_relative()) path = std::filesystem::path(name_).parent_path() / path;
+    auto mesh = read_obj_file(path.string());
+    if (!mesh) {
+      const SceneError& e = mesh.error();
+      throw SceneError(e.file(), e.line(), e.element(),
+                       e.problem() + " (the \"obj\" of " + name_ + ")");
+    }
+    return std::move(mesh).value();
+  }
+
+  /// The 0-based vertices of the 1-based list "b".
+  std::vector<int> pinned(const json& root, int num_vertices) {
+    std::vector<int> out;
+    if (!root.contains("b")) return out;
+    const json& list = root.at("b");
+    if (!list.is_array())
+      fail("\"b\" must be a list of 1-based vertex numbers, found " + list.dump());
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const json& entry = list[k];
+      const bool valid = entry.is_number_integer() && entry.get<long long>() >= 1 &&
+                         entry.get<long long>() <= num_vertices;
+      if (!valid) {
+        fail("\"b\"[" + std::to_string(k) + "] must be a vertex number from 1 to " +
+             std::to_string(num_vertices) + " (1-based), found " + entry.dump());
+      }
+      out.push_back(entry.get<int>() - 1);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+
+  const std::string& name_;
+  Scene scene_;
+};
+
+}  // namespace
+
+Expected<Scene, SceneError> load_json_scene_text(std::string_view text, const std::string& name) {
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+    return SceneError(name, 0, "", "the file is empty (expected a JSON object)");
+  }
+  json root;
+  try {
+    root = json::parse(text.begin(), text.end());
+  } catch (const json::parse_error& error) {
+    std::string what = error.what();
+    if (const auto colon = what.find("syntax error"); colon != std::string::npos)
+      what = what.substr(colon);
+    return SceneError(name, line_of(text, error.byte == 0 ? 0 : error.byte - 1), "",
+                      "not valid JSON: " + what);
+  }
+  return catch_scene_error<Scene>([&] { return JsonSceneParser(name).parse(root); });
+}
+
+Expected<Scene, SceneError> load_json_scene_file(const std::string& path) {
+  return parse_text_file<Scene>(path, load_json_scene_text);
+}
+
+}  // namespace fosssim

@@ -1,0 +1,40 @@
+#pragma once
+// Reads the fast mass-springs assignment's JSON scenes (SPEC section 7).
+
+#include <string>
+#include <string_view>
+
+#include "core/expected.h"
+#include "core/scene.h"
+#include "io/scene_error.h"
+
+namespace fosssim {
+
+/// The assignment's defaults, which its data files rely on.
+struct JsonSceneDefaults {
+  static constexpr double kTimeStep = 1.0 / 30.0;  ///< h, s
+  static constexpr int kIterations = 50;           ///< local/global iterations per step
+  static constexpr double kGravity = -9.8;         ///< y force on every vertex, N (not m·g)
+  static constexpr double kPenalty = 1e10;         ///< w of the pins' w·CᵀC, N/m
+  static constexpr double kAreaDensity = 1.0;      ///< kg/m², for masses from areas
+  static constexpr double kDuration = 10.0;        ///< s; the assignment ran until closed
+};
+
+/// Reads a JSON scene of the fast mass-springs assignment:
+///   { "obj": "cloth.obj", "k": 1000, "b": [1, 81], "m": 0.01 }
+/// obj: the OBJ mesh (relative to the JSON file), whose faces and "f i j" lines give the
+/// springs (rest lengths: the initial lengths); k: every spring's stiffness (N/m); b: the
+/// pinned vertices, 1-based (optional, default none); m: every vertex's mass (optional;
+/// without it each vertex gets a third of the area of its triangles at 1 kg/m²). The scene
+/// is 3D, runs the local/global integrator with the assignment's defaults (JsonSceneDefaults:
+/// h = 1/30 s, 50 iterations, pins by penalty w = 1e10) and applies a force of -9.8 N along y
+/// to every vertex (a constant force, not m·g, as in the assignment). Optional keys of ours:
+/// "h", "iterations", "duration". Other keys become warnings. Errors name the file (and, for
+/// malformed JSON, the line) and the problem.
+Expected<Scene, SceneError> load_json_scene_file(const std::string& path);
+
+/// Reads JSON text; `name` stands for the file in messages and its directory is where a
+/// relative "obj" path starts.
+Expected<Scene, SceneError> load_json_scene_text(std::string_view text, const std::string& name);
+
+}  // namespace fosssim

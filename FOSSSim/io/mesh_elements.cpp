@@ -1,0 +1,207 @@
+#include "io/mesh_elements.h"
+
+#include <tinyxml2.h>
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <map>
+
+#include "io/element_reader.h"
+#include "io/medit_reader.h"
+#include "io/obj_reader.h"
+#include "io/text_lines.h"
+#include "mesh/generators.h"
+#include "mesh/mesh_scene.h"
+
+namespace fosssim {
+
+namespace {
+
+using tinyxml2::XMLElement;
+
+constexpr std::array<std::string_view, 3> kMeshElements = {"clothmesh", "tetmesh", "generate"};
+
+/// A mesh element being read: the mesh, its pinned vertices and its label.
+struct MeshDeclaration {
+  Mesh mesh;
+  std::vector<int> pinned;
+  std::string label;
+};
+
+/// A required integer of at least `minimum`.
+int integer_at_least(ElementReader& r, const char* name, int minimum) {
+  const int value = r.integer(name);
+  if (value < minimum)
+    r.fail(name,
+           "must be at least " + std::to_string(minimum) + ", found " + std::to_string(value));
+  return value;
+}
+
+/// An optional positive number.
+double positive_or(ElementReader& r, const char* name, double fallback) {
+  return r.has(name) ? r.positive(name) : fallback;
+}
+
+/// An optional 0 or 1.
+bool flag_or(ElementReader& r, const char* name, bool fallback) {
+  return r.has(name) ? r.flag(name) : fallback;
+}
+
+GeneratedMesh generate(ElementReader& r) {
+  const std::string type = r.text("type");
+  if (type == "cloth") {
+    const std::string plane = r.has("plane") ? r.text("plane") : "xy";
+    if (plane != "xy" && plane != "xz")
+      r.fail("plane", "must be \"xy\" (hanging) or \"xz\" (flat), found \"" + plane + "\"");
+    return generate_cloth(integer_at_least(r, "nx", 2), integer_at_least(r, "ny", 2),
+                          positive_or(r, "width", 1.0), positive_or(r, "height", 1.0),
+                          plane == "xz", flag_or(r, "bend", true));
+  }
+  if (type == "chain")
+    return generate_chain(integer_at_least(r, "links", 1), positive_or(r, "length", 1.0));
+  if (type == "net") {
+    return generate_net(integer_at_least(r, "nx", 2), integer_at_least(r, "ny", 2),
+                        positive_or(r, "width", 1.0), positive_or(r, "depth", 1.0));
+  }
+  if (type == "skirt") {
+    const double top = positive_or(r, "top-radius", 0.25);
+    return generate_skirt(integer_at_least(r, "segments", 3), integer_at_least(r, "rings", 2), top,
+                          positive_or(r, "bottom-radius", 2.0 * top),
+                          r.non_negative_or("height", 1.0), flag_or(r, "bend", true));
+  }
+  if (type == "tetbox") {
+    return generate_tet_box(integer_at_least(r, "nx", 1), integer_at_least(r, "ny", 1),
+                            integer_at_least(r, "nz", 1), positive_or(r, "sx", 1.0),
+                            positive_or(r, "sy", 1.0), positive_or(r, "sz", 1.0));
+  }
+  if (type == "tetball")
+    return generate_tet_ball(integer_at_least(r, "cells", 2), positive_or(r, "radius", 1.0));
+  r.fail("type", "names an unknown generator \"" + type +
+                     "\" (expected cloth, chain, net, skirt, tetbox or tetball)");
+}
+
+/// Reads a mesh file, re-throwing its error with the element that asked for it.
+template <typename Reader>
+Mesh read_mesh_file(ElementReader& r, const std::string& file, Reader reader) {
+  const std::string name = r.text("file");
+  std::filesystem::path path(name);
+  if (path.is_relative()) path = std::filesystem::path(file).parent_path() / path;
+  auto mesh = reader(path.string());
+  if (!mesh) {
+    const SceneError& e = mesh.error();
+    throw SceneError(e.file(), e.line(), e.element(),
+                     e.problem() + " (the mesh of " + file + ":" + std::to_string(r.line()) + ")");
+  }
+  return std::move(mesh).value();
+}
+
+MassRule read_mass_rule(ElementReader& r) {
+  const std::string kind = r.has("mass") ? r.text("mass") : "uniform";
+  if (kind == "uniform") return {MassRule::kUniform, r.positive("m")};
+  if (kind == "total") return {MassRule::kTotal, r.positive("total")};
+  if (kind == "area") return {MassRule::kArea, r.positive("density")};
+  if (kind == "volume") return {MassRule::kVolume, r.positive("density")};
+  r.fail("mass",
+         "must be \"uniform\" (with m), \"total\" (with total), \"area\" or \"volume\" (with "
+         "density), found \"" +
+             kind + "\"");
+}
+
+/// Scales then translates the mesh: x ← scale·x + (tx, ty, tz).
+void read_transform(ElementReader& r, Mesh& mesh) {
+  const double scale = positive_or(r, "scale", 1.0);
+  const Eigen::Vector3d shift(r.number_or("tx", 0.0), r.number_or("ty", 0.0),
+                              r.number_or("tz", 0.0));
+  for (auto& x : mesh.vertices) x = scale * x + shift;
+}
+
+/// Adds the vertices a <pin> child selects to `pinned`.
+void read_pin(ElementReader& r, const Mesh& mesh, std::vector<int>& pinned) {
+  if (r.has("vertices")) {
+    const std::string list = r.text("vertices");
+    std::string spaced = list;
+    std::replace(spaced.begin(), spaced.end(), ',', ' ');
+    for (std::string_view word : split_line(spaced)) {
+      int v = 0;
+      if (!parse_int(word, v)) r.fail("vertices", "must be vertex indices, found " + quote(word));
+      if (v < 0 || v >= mesh.num_vertices()) {
+        r.fail("vertices", "refers to vertex " + std::to_string(v) + ", but the mesh has " +
+                               std::to_string(mesh.num_vertices()) + " (0-based)");
+      }
+      pinned.push_back(v);
+    }
+    return;
+  }
+  const std::string axis = r.text("axis");
+  if (axis != "x" && axis != "y" && axis != "z")
+    r.fail("axis", "must be x, y or z, found \"" + axis + "\"");
+  const std::string side = r.text("side");
+  if (side != "lowest" && side != "highest")
+    r.fail("side", "must be \"lowest\" or \"highest\", found \"" + side + "\"");
+  const auto selected =
+      select_extreme_vertices(mesh, axis[0] - 'x', side == "highest", r.non_negative("within"));
+  pinned.insert(pinned.end(), selected.begin(), selected.end());
+}
+
+}  // namespace
+
+bool is_mesh_element(std::string_view name) {
+  return std::find(kMeshElements.begin(), kMeshElements.end(), name) != kMeshElements.end();
+}
+
+std::vector<std::unique_ptr<Force>> read_mesh_elements(const XMLElement& root, Scene& scene,
+                                                       const std::string& file) {
+  std::vector<std::unique_ptr<Force>> forces;
+  std::map<std::string, int> count;
+  for (const XMLElement* e = root.FirstChildElement(); e; e = e->NextSiblingElement()) {
+    const std::string kind = e->Name();
+    if (!is_mesh_element(kind)) continue;
+    const int index = count[kind]++;
+    ElementReader r(*e, file, index, scene.model.num_particles(),
+                    static_cast<int>(scene.model.edges.size()));
+    MeshDeclaration mesh;
+    mesh.label = kind + " " + std::to_string(index);
+    if (kind == "clothmesh") {
+      mesh.mesh = read_mesh_file(r, file, read_obj_file);
+    } else if (kind == "tetmesh") {
+      mesh.mesh = read_mesh_file(r, file, read_medit_file);
+    } else {
+      GeneratedMesh generated = generate(r);
+      const std::string pins = r.has("pin") ? r.text("pin") : generated.default_pins;
+      const std::vector<int>* set = generated.find_pins(pins);
+      if (!set)
+        r.fail("pin", "names no pin set of this generator: \"" + pins + "\" (expected " +
+                          generated.pin_set_names() + ")");
+      mesh.pinned = *set;
+      mesh.mesh = std::move(generated.mesh);
+      mesh.label += " (" + r.text("type") + ")";
+    }
+    read_transform(r, mesh.mesh);
+    MeshMaterial material;
+    material.k = r.non_negative("k");
+    material.b = r.non_negative_or("b", 0.0);
+    material.mass = read_mass_rule(r);
+    material.velocity =
+        Eigen::Vector3d(r.number_or("vx", 0.0), r.number_or("vy", 0.0), r.number_or("vz", 0.0));
+    for (const XMLElement* child = e->FirstChildElement(); child;
+         child = child->NextSiblingElement()) {
+      if (std::string_view(child->Name()) != "pin") {
+        throw SceneError(file, child->GetLineNum(), std::string("<") + child->Name() + ">",
+                         "unknown element inside <" + kind + "> (only <pin> may appear there)");
+      }
+      ElementReader pin(*child, file, -1, 0, 0);
+      read_pin(pin, mesh.mesh, mesh.pinned);
+      for (auto& warning : pin.unknown_attribute_warnings()) scene.warnings.push_back(warning);
+    }
+    std::sort(mesh.pinned.begin(), mesh.pinned.end());
+    mesh.pinned.erase(std::unique(mesh.pinned.begin(), mesh.pinned.end()), mesh.pinned.end());
+    auto force = append_mesh(scene, mesh.mesh, material, mesh.pinned, mesh.label);
+    if (!force) r.fail(force.error());
+    forces.push_back(std::move(force).value());
+    for (auto& warning : r.unknown_attribute_warnings()) scene.warnings.push_back(warning);
+  }
+  return forces;
+}
+
+}  // namespace fosssim

@@ -1,0 +1,30 @@
+#pragma once
+// The scene-file elements that bring meshes in: <clothmesh>, <tetmesh> and <generate>.
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/force.h"
+#include "core/scene.h"
+
+namespace tinyxml2 {
+class XMLElement;
+}
+
+namespace fosssim {
+
+/// True for the root elements read by read_mesh_elements.
+bool is_mesh_element(std::string_view name);
+
+/// Reads the root's mesh elements in document order (docs/scenes-3d.md): each appends its
+/// vertices as particles (after those of <particle> elements), its springs as edges (after
+/// those of <edge> elements) and its surface to the appearance, and yields one spring force.
+/// The forces are returned for the caller to sum right after the <springforce> group.
+/// Mesh files are found relative to the directory of `file`. Throws SceneError naming the
+/// scene file, line and element, or the mesh file and its line.
+std::vector<std::unique_ptr<Force>> read_mesh_elements(const tinyxml2::XMLElement& root,
+                                                       Scene& scene, const std::string& file);
+
+}  // namespace fosssim

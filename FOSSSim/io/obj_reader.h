@@ -1,0 +1,28 @@
+#pragma once
+// Reads Wavefront OBJ files as mass-spring meshes.
+
+#include <string>
+#include <string_view>
+
+#include "core/expected.h"
+#include "io/scene_error.h"
+#include "mesh/mesh.h"
+
+namespace fosssim {
+
+/// Reads an OBJ file as a mass-spring mesh (SPEC section 7: springs from face edges).
+///   v x y z [w]        a vertex (w, a homogeneous weight, must be 1 if present);
+///                      "v x y z r g b" (vertex colours) is accepted and the colour ignored
+///   f a b c ...        a face of 3 or more corners; "f a b" (2 corners) is one spring
+///   l a b c ...        a polyline: springs between consecutive vertices
+/// Corners may be written v, v/vt, v//vn or v/vt/vn; indices start at 1, and a negative index
+/// counts back from the last vertex read so far. vt, vn, vp, o, g, s, usemtl, mtllib and
+/// comments (#) are ignored. Anything else is an error naming file, line and problem: an
+/// unknown statement, a malformed or non-finite number, an index of 0 or past the last
+/// vertex, a corner repeated within a face, a face of one corner, a file without vertices.
+Expected<Mesh, SceneError> read_obj_file(const std::string& path);
+
+/// Reads OBJ text; `name` stands for the file in messages.
+Expected<Mesh, SceneError> read_obj_text(std::string_view text, const std::string& name);
+
+}  // namespace fosssim

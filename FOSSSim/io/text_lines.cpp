@@ -1,0 +1,83 @@
+#include "io/text_lines.h"
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fosssim {
+
+namespace {
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
+}
+}  // namespace
+
+Expected<std::string, SceneError> read_text_file(const std::string& path) {
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    return SceneError(path, 0, "", "is a directory, not a file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    return SceneError(path, 0, "", std::string("cannot open the file: ") + std::strerror(errno));
+  std::ostringstream content;
+  content << in.rdbuf();
+  if (in.bad()) return SceneError(path, 0, "", "cannot read the file");
+  return content.str();
+}
+
+std::vector<Word> split_words(std::string_view text, char comment) {
+  std::vector<Word> words;
+  int line = 1;
+  std::size_t k = 0;
+  while (k < text.size()) {
+    const char c = text[k];
+    if (c == '\n') {
+      ++line;
+      ++k;
+    } else if (is_space(c)) {
+      ++k;
+    } else if (c == comment) {
+      while (k < text.size() && text[k] != '\n') ++k;
+    } else {
+      const std::size_t start = k;
+      while (k < text.size() && !is_space(text[k]) && text[k] != comment) ++k;
+      words.push_back({text.substr(start, k - start), line});
+    }
+  }
+  return words;
+}
+
+std::vector<std::string_view> split_line(std::string_view line) {
+  std::vector<std::string_view> words;
+  std::size_t k = 0;
+  while (k < line.size()) {
+    while (k < line.size() && is_space(line[k])) ++k;
+    const std::size_t start = k;
+    while (k < line.size() && !is_space(line[k])) ++k;
+    if (k > start) words.push_back(line.substr(start, k - start));
+  }
+  return words;
+}
+
+bool parse_finite(std::string_view text, double& value) {
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  if (text.empty()) return false;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return error == std::errc() && end == text.data() + text.size() && std::isfinite(value);
+}
+
+bool parse_int(std::string_view text, int& value) {
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  if (text.empty()) return false;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return error == std::errc() && end == text.data() + text.size();
+}
+
+std::string quote(std::string_view text) { return "\"" + std::string(text) + "\""; }
+
+}  // namespace fosssim

@@ -1,0 +1,57 @@
+#pragma once
+// Small helpers for line-oriented text formats (OBJ, MEDIT): whole-file reads, words with
+// their line numbers, strict number parsing.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/expected.h"
+#include "io/scene_error.h"
+
+namespace fosssim {
+
+/// The whole content of a file, or a SceneError naming it and the system's reason.
+Expected<std::string, SceneError> read_text_file(const std::string& path);
+
+/// A word of a text and the 1-based line it is on.
+struct Word {
+  std::string_view text;
+  int line = 0;
+};
+
+/// The whitespace-separated words of `text`, skipping comments from `comment` to the end of
+/// the line. The views point into `text`.
+std::vector<Word> split_words(std::string_view text, char comment = '#');
+
+/// The words of one line (no comment handling).
+std::vector<std::string_view> split_line(std::string_view line);
+
+/// Parses the whole of `text` as one finite decimal number (locale-independent).
+bool parse_finite(std::string_view text, double& value);
+
+/// Parses the whole of `text` as a decimal integer within the range of int.
+bool parse_int(std::string_view text, int& value);
+
+/// `"text"`, for messages.
+std::string quote(std::string_view text);
+
+/// Runs `parse` (which throws SceneError on bad input) and returns its result or the error.
+template <typename T, typename Parse>
+Expected<T, SceneError> catch_scene_error(Parse parse) {
+  try {
+    return parse();
+  } catch (const SceneError& error) {
+    return error;
+  }
+}
+
+/// Reads the file at `path` and returns parse_text(text, path), or the error of reading it.
+template <typename T, typename ParseText>
+Expected<T, SceneError> parse_text_file(const std::string& path, ParseText parse_text) {
+  auto text = read_text_file(path);
+  if (!text) return text.error();
+  return parse_text(text.value(), path);
+}
+
+}  // namespace fosssim

@@ -1,0 +1,96 @@
+#include "mesh/mesh_scene.h"
+
+#include "core/forces/spring_set_force.h"
+#include "core/text.h"
+
+namespace fosssim {
+
+namespace {
+
+/// Particles drawn at this fraction of the mean spring length, edges at a third of it.
+constexpr double kParticleRadiusPerLength = 0.15;
+constexpr double kEdgeRadiusPerLength = 0.05;
+
+std::unique_ptr<Force> make_spring_set(int dim, std::vector<SpringTerm> springs,
+                                       const std::string& label) {
+  if (dim == 3) return std::make_unique<SpringSetForce<3>>(std::move(springs), label);
+  return std::make_unique<SpringSetForce<2>>(std::move(springs), label);
+}
+
+}  // namespace
+
+Expected<std::unique_ptr<Force>, std::string> append_mesh(Scene& scene, const Mesh& mesh,
+                                                          const MeshMaterial& material,
+                                                          const std::vector<int>& pinned,
+                                                          const std::string& label) {
+  SceneModel& model = scene.model;
+  const int dim = model.dim;
+  const int n = mesh.num_vertices();
+  if (dim == 2) {
+    for (int v = 0; v < n; ++v) {
+      if (mesh.vertices[v].z() != 0.0 || material.velocity.z() != 0.0) {
+        return "vertex " + std::to_string(v) + " has z = " + to_text(mesh.vertices[v].z()) +
+               " (or the initial velocity has a z component), but the scene is 2D; use "
+               "<scene dim=\"3\">";
+      }
+    }
+  }
+  auto masses = compute_vertex_masses(mesh, material.mass);
+  if (!masses) return masses.error();
+  for (int v : pinned) {
+    if (v < 0 || v >= n) {
+      return "pinned vertex " + std::to_string(v) + " is out of range (the mesh has " +
+             std::to_string(n) + " vertices, 0-based)";
+    }
+  }
+  const auto pairs = compute_spring_pairs(mesh);
+  std::vector<SpringTerm> springs;
+  springs.reserve(pairs.size());
+  const int first = model.num_particles();
+  for (const auto& [a, b] : pairs) {
+    const double length = (mesh.vertices[a] - mesh.vertices[b]).norm();
+    if (length == 0.0) {
+      return "vertices " + std::to_string(a) + " and " + std::to_string(b) +
+             " (0-based) coincide, so the spring between them has no direction";
+    }
+    springs.push_back({first + a, first + b, material.k, length, material.b});
+  }
+
+  // Particles.
+  const int total = first + n;
+  model.mass.conservativeResize(dim * total);
+  scene.initial.q.conservativeResize(dim * total);
+  scene.initial.v.conservativeResize(dim * total);
+  for (int v = 0; v < n; ++v) {
+    const int p = first + v;
+    model.mass.segment(dim * p, dim).setConstant((*masses)[v]);
+    scene.initial.q.segment(dim * p, dim) = mesh.vertices[v].head(dim);
+    scene.initial.v.segment(dim * p, dim) = material.velocity.head(dim);
+  }
+  model.fixed.resize(total, false);
+  for (int v : pinned) {
+    model.fixed[first + v] = true;
+    scene.initial.v.segment(dim * (first + v), dim).setZero();  // pins start at rest
+  }
+  scene.particle_tags.resize(total);
+
+  // Edges and appearance.
+  const double length = compute_mean_spring_length(mesh);
+  Appearance& look = scene.appearance;
+  look.particle_radius.resize(total, kParticleRadiusPerLength * length);
+  look.particle_color.resize(total, Appearance::kDefaultParticleColor);
+  for (const SpringTerm& s : springs) {
+    model.edges.push_back({s.i, s.j});
+    look.edge_radius.push_back(kEdgeRadiusPerLength * length);
+    look.edge_color.push_back(Appearance::kDefaultEdgeColor);
+  }
+  auto add_triangles = [&](const std::vector<std::array<int, 3>>& triangles) {
+    for (const auto& t : triangles)
+      look.triangles.push_back({first + t[0], first + t[1], first + t[2]});
+  };
+  add_triangles(compute_face_triangles(mesh));
+  add_triangles(compute_tet_boundary(mesh));
+  return make_spring_set(dim, std::move(springs), label);
+}
+
+}  // namespace fosssim

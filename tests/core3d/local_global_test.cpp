@@ -1,0 +1,220 @@
+// The local/global solver (Liu et al. 2013) on systems with known answers.
+
+#include "core/integrators/local_global.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "core/forces/drag_spring_force.h"
+#include "core/integrators/implicit_euler.h"
+#include "core/integrators/linearly_implicit_euler.h"
+#include "core/interaction/picking.h"
+#include "core/simulation.h"
+#include "test_scenes.h"
+
+namespace fosssim {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+/// A unit mass on a spring (k = 4π², so ω = 2π; rest length 1) to a fixed particle at the
+/// origin, released 0.1 m stretched along the unit direction `axis` (in dim dimensions).
+Scene oscillator(int dim, IntegratorKind kind, double dt, const Eigen::Vector3d& axis) {
+  std::vector<double> positions(2 * dim, 0.0);
+  for (int c = 0; c < dim; ++c) positions[dim + c] = 1.1 * axis[c];
+  Scene scene = testing::particles(dim, positions, 1.0, {true, false});
+  testing::add_spring(scene, 0, 1, 4.0 * kPi * kPi, 1.0);
+  scene.model.integrator.kind = kind;
+  scene.model.integrator.dt = dt;
+  scene.model.duration = 1.0;
+  return scene;
+}
+
+/// |x(1) - x_exact(1)| of the oscillator, x_exact(t) = (1 + 0.1 cos ωt) axis, after N steps.
+double oscillator_error(int dim, IntegratorKind kind, int steps) {
+  const Eigen::Vector3d axis =
+      dim == 3 ? Eigen::Vector3d(1.0, 2.0, 2.0) / 3.0 : Eigen::Vector3d(0.6, 0.8, 0.0);
+  Scene scene = oscillator(dim, kind, 1.0 / steps, axis);
+  Simulation simulation(scene.model, scene.initial);
+  while (!simulation.finished()) simulation.step();
+  const double amplitude = 1.0 + 0.1 * std::cos(2.0 * kPi * 1.0);
+  double squared = 0.0;
+  for (int c = 0; c < dim; ++c) {
+    const double difference = simulation.state().q[dim + c] - amplitude * axis[c];
+    squared += difference * difference;
+  }
+  return std::sqrt(squared);
+}
+
+TEST(LocalGlobal, SingleSpringFollowsCosOmegaTWithFirstOrderError) {
+  for (int dim : {2, 3}) {
+    for (IntegratorKind kind :
+         {IntegratorKind::kLocalGlobal, IntegratorKind::kLinearlyImplicitEuler}) {
+      double previous = oscillator_error(dim, kind, 200);
+      for (int steps : {400, 800, 1600}) {
+        const double error = oscillator_error(dim, kind, steps);
+        const double ratio = previous / error;
+        EXPECT_GT(ratio, 1.8) << integrator_name(kind) << " " << dim << "D, " << steps << " steps";
+        EXPECT_LT(ratio, 2.2) << integrator_name(kind) << " " << dim << "D, " << steps << " steps";
+        previous = error;
+      }
+      EXPECT_LT(previous, 2e-3) << integrator_name(kind) << " " << dim << "D";
+    }
+  }
+}
+
+TEST(LocalGlobal, SingleSpringMatchesNewtonsImplicitEulerStepByStep) {
+  // Along the spring the system is linear, so one local/global iteration is exact.
+  const Eigen::Vector3d axis = Eigen::Vector3d(2.0, -1.0, 2.0) / 3.0;
+  Scene lg = oscillator(3, IntegratorKind::kLocalGlobal, 0.01, axis);
+  lg.model.integrator.local_global.iterations = 1;
+  Scene newton = oscillator(3, IntegratorKind::kImplicitEuler, 0.01, axis);
+  Simulation a(lg.model, lg.initial), b(newton.model, newton.initial);
+  for (int step = 0; step < 100; ++step) {
+    a.step();
+    b.step();
+    ASSERT_LT((a.state().q - b.state().q).norm(), 1e-12) << "step " << step;
+    ASSERT_LT((a.state().v - b.state().v).norm(), 1e-10) << "step " << step;
+  }
+}
+
+TEST(LocalGlobal, SpringDampingAlongTheSpringEqualsAxialDamping) {
+  // Laplacian damping -b(v_i - v_j) equals SpringForce's b (n·dv) n when dv is along n.
+  const Eigen::Vector3d axis = Eigen::Vector3d(1.0, 2.0, 2.0) / 3.0;
+  Scene lg = oscillator(3, IntegratorKind::kLocalGlobal, 0.01, axis);
+  Scene newton = oscillator(3, IntegratorKind::kImplicitEuler, 0.01, axis);
+  for (Scene* scene : {&lg, &newton}) {
+    scene->model.forces.clear();
+    testing::add_spring(*scene, 0, 1, 4.0 * kPi * kPi, 1.0, 1.5);
+  }
+  Simulation a(lg.model, lg.initial), b(newton.model, newton.initial);
+  for (int step = 0; step < 100; ++step) {
+    a.step();
+    b.step();
+  }
+  EXPECT_LT((a.state().q - b.state().q).norm(), 1e-10);
+  EXPECT_LT(a.state().q.segment<3>(3).norm() - 1.0, 0.1 * 0.5) << "the damping took energy out";
+}
+
+TEST(LocalGlobal, GravityAloneIsExact) {
+  Scene scene = testing::particles(2, {0.0, 0.0, 1.0, 0.0}, 2.0, {false, false});
+  scene.initial.v << 1.0, 3.0, -1.0, 0.0;
+  testing::add_gravity(scene, 9.8);
+  scene.model.integrator = {IntegratorKind::kLocalGlobal, 0.05, {}, {}, {}};
+  Simulation simulation(scene.model, scene.initial);
+  Vector q = scene.initial.q, v = scene.initial.v;
+  for (int step = 0; step < 20; ++step) {
+    simulation.step();
+    v[1] -= 0.05 * 9.8;
+    v[3] -= 0.05 * 9.8;
+    q += 0.05 * v;
+  }
+  EXPECT_LT((simulation.state().q - q).norm(), 1e-12);
+  EXPECT_LT((simulation.state().v - v).norm(), 1e-12);
+}
+
+TEST(LocalGlobal, EliminatedPinsStayExactlyAtRestAndMovingOnesMoveExactly) {
+  Scene scene = testing::cloth(6, 50.0, IntegratorKind::kLocalGlobal, 1.0 / 30.0);
+  scene.initial.v.segment<3>(0) << 0.25, 0.0, -0.125;  // pinned corner 0 moves on its own
+  Simulation simulation(scene.model, scene.initial);
+  for (int step = 0; step < 60; ++step) simulation.step();
+  const State& state = simulation.state();
+  EXPECT_EQ(state.q.segment<3>(15), scene.initial.q.segment<3>(15));  // corner 5, at rest
+  EXPECT_EQ(state.v.segment<3>(0), scene.initial.v.segment<3>(0));
+  Eigen::Vector3d expected = scene.initial.q.segment<3>(0);
+  for (int step = 0; step < 60; ++step) expected += (1.0 / 30.0) * scene.initial.v.segment<3>(0);
+  EXPECT_EQ(state.q.segment<3>(0), expected);
+  double lowest = 0.0;
+  for (int p = 0; p < 36; ++p) lowest = std::min(lowest, state.q[3 * p + 1]);
+  EXPECT_LT(lowest, -0.3) << "the free cloth fell";
+}
+
+TEST(LocalGlobal, PenaltyPinsStayWithin1e8OfRest) {
+  Scene scene = testing::cloth(8, 50.0, IntegratorKind::kLocalGlobal, 1.0 / 30.0);
+  scene.model.integrator.local_global.pins = PinMethod::kPenalty;
+  Simulation simulation(scene.model, scene.initial);
+  double worst = 0.0;
+  for (int step = 0; step < 100; ++step) {
+    simulation.step();
+    for (int p : {0, 7}) {
+      worst = std::max(
+          worst,
+          (simulation.state().q.segment<3>(3 * p) - scene.initial.q.segment<3>(3 * p)).norm());
+    }
+  }
+  EXPECT_LT(worst, 1e-8);
+  EXPECT_GT(worst, 0.0) << "a penalty holds only approximately";
+}
+
+TEST(LocalGlobal, DenseAndSparseFactorizationsAgree) {
+  std::vector<Vector> finals;
+  for (LinearSolverChoice solver :
+       {LinearSolverChoice::kDense, LinearSolverChoice::kSparse, LinearSolverChoice::kAuto}) {
+    Scene scene = testing::cloth(5, 30.0, IntegratorKind::kLocalGlobal, 1.0 / 30.0);
+    scene.model.integrator.local_global.solver = solver;
+    LocalGlobal<3> integrator(scene.model);
+    State state = scene.initial;
+    for (int step = 0; step < 30; ++step) integrator.step(scene.model, state);
+    EXPECT_EQ(integrator.solver_method(), solver == LinearSolverChoice::kSparse
+                                              ? SpdSolver::Method::kSparse
+                                              : SpdSolver::Method::kDense);
+    finals.push_back(state.q);
+  }
+  EXPECT_LT((finals[0] - finals[1]).norm(), 1e-12);
+  EXPECT_EQ(finals[0], finals[2]) << "23 free particles are solved densely under auto";
+}
+
+TEST(LocalGlobal, ToleranceEndsTheIterationsEarly) {
+  Scene scene = testing::cloth(6, 30.0, IntegratorKind::kLocalGlobal, 1.0 / 30.0);
+  scene.model.integrator.local_global.iterations = 10000;
+  scene.model.integrator.local_global.tolerance = 1e-10;
+  LocalGlobal<3> integrator(scene.model);
+  State state = scene.initial;
+  for (int step = 0; step < 5; ++step) {
+    integrator.step(scene.model, state);
+    EXPECT_LE(integrator.last_change(), 1e-10);
+    EXPECT_LT(integrator.last_iterations(), 10000);
+    EXPECT_GT(integrator.last_iterations(), 1);
+  }
+}
+
+TEST(LocalGlobal, FactorsOncePerTimeStepAndAgainOnlyWhenAnchorsChange) {
+  Scene scene = testing::cloth(6, 30.0, IntegratorKind::kLocalGlobal, 1.0 / 30.0);
+  DragSpringForce& drag = add_drag_spring(scene.model);
+  LocalGlobal<3> integrator(scene.model);
+  State state = scene.initial;
+  for (int step = 0; step < 10; ++step) integrator.step(scene.model, state);
+  EXPECT_EQ(integrator.factorizations(), 1);
+  drag.grab(20, Eigen::Vector3d(0.0, 0.5, 0.5), 40.0);
+  integrator.step(scene.model, state);
+  EXPECT_EQ(integrator.factorizations(), 2);
+  drag.move_target(Eigen::Vector3d(0.1, 0.5, 0.5));  // only the right-hand side changes
+  integrator.step(scene.model, state);
+  EXPECT_EQ(integrator.factorizations(), 2);
+  drag.release();
+  integrator.step(scene.model, state);
+  EXPECT_EQ(integrator.factorizations(), 3);
+  scene.model.integrator.dt = 0.01;
+  integrator.step(scene.model, state);
+  EXPECT_EQ(integrator.factorizations(), 4);
+}
+
+TEST(LocalGlobal, DraggingConvergesToNewtonWithTheSameDragSpring) {
+  std::vector<Vector> finals;
+  for (IntegratorKind kind : {IntegratorKind::kLocalGlobal, IntegratorKind::kImplicitEuler}) {
+    Scene scene = testing::cloth(4, 10.0, kind, 1.0 / 30.0);
+    scene.model.integrator.local_global.iterations = 20000;
+    scene.model.integrator.local_global.tolerance = 1e-13;
+    DragSpringForce& drag = add_drag_spring(scene.model);
+    drag.grab(14, Eigen::Vector3d(0.2, 0.4, 0.6), 5.0);
+    Simulation simulation(scene.model, scene.initial);
+    for (int step = 0; step < 15; ++step) simulation.step();
+    finals.push_back(simulation.state().q);
+  }
+  EXPECT_LT((finals[0] - finals[1]).lpNorm<Eigen::Infinity>(), 1e-9);
+}
+
+}  // namespace
+}  // namespace fosssim
