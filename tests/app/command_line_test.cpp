@@ -198,8 +198,8 @@ TEST_F(CommandLine, BadSceneGivesFileLineAndExitTwo) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err.substr(0, r.err.find('\n')),
             "bad.xml:3: error: <integrator>: attribute \"type\" names an unknown integrator "
-            "\"explicit\" (expected explicit-euler, symplectic-euler, linearized-implicit-euler or "
-            "implicit-euler, or an alias)");
+            "\"explicit\" (expected explicit-euler, symplectic-euler, linearized-implicit-euler, "
+            "implicit-euler, local-global or linearly-implicit-euler, or an alias)");
 }
 
 TEST_F(CommandLine, MissingSceneFileIsExitTwo) {

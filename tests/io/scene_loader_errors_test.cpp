@@ -116,8 +116,8 @@ INSTANTIATE_TEST_SUITE_P(SceneLoader, MalformedScene, testing::ValuesIn(kCases),
 TEST(SceneLoaderErrors, UnknownIntegrator) {
   EXPECT_EQ(error_of("<scene>\n<duration time=\"1\"/>\n<integrator type=\"rk4\" dt=\"0.1\"/>\n</scene>"),
             "bad.xml:3: error: <integrator>: attribute \"type\" names an unknown integrator \"rk4\" "
-            "(expected explicit-euler, symplectic-euler, linearized-implicit-euler or "
-            "implicit-euler, or an alias)");
+            "(expected explicit-euler, symplectic-euler, linearized-implicit-euler, "
+            "implicit-euler, local-global or linearly-implicit-euler, or an alias)");
 }
 
 TEST(SceneLoaderErrors, NonPositiveTimeStep) {
