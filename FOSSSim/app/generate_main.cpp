@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "app/exit_codes.h"
+#include "app/parse_command_line.h"
 #include "core/text.h"
 #include "io/mesh_writer.h"
 #include "mesh/generators.h"
@@ -92,11 +93,7 @@ int main(int argc, char** argv) {
   auto* ball = app.add_subcommand("tetball", "a ball of tetrahedralized cubes");
   ball->add_option("--cells", o.cells, "Cubes along the diameter")->capture_default_str();
   ball->add_option("--radius", o.radius)->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& error) {
-    return app.exit(error) == 0 ? kExitOk : kExitBadInput;
-  }
+  if (auto status = parse_command_line(app, argc, argv)) return *status;
 
   const auto positive = [](double x) { return x > 0.0; };
   GeneratedMesh generated;

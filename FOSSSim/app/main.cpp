@@ -8,6 +8,7 @@
 #include "app/exit_codes.h"
 #include "app/interrupt.h"
 #include "app/options.h"
+#include "app/parse_command_line.h"
 #include "io/scene_loader.h"
 #include "scripting/step_hooks.h"
 
@@ -16,18 +17,7 @@ int main(int argc, char** argv) {
   Options options;
   CLI::App app{"FOSSSim", "FOSSSim"};
   add_options(app, options);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp&) {
-    std::cout << app.help();
-    return kExitOk;
-  } catch (const CLI::CallForVersion&) {
-    std::cout << app.version() << "\n";
-    return kExitOk;
-  } catch (const CLI::ParseError& error) {
-    std::cerr << "FOSSSim: error: " << error.what() << "\nRun FOSSSim --help for the options.\n";
-    return kExitBadInput;
-  }
+  if (auto status = parse_command_line(app, argc, argv)) return *status;
 
   options.display_given = app.count("--display") > 0;
   if (auto problem = check_picture_options(options)) {

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/exit_codes.h"
+#include "app/parse_command_line.h"
 #include "atomic_file.h"
 #include "batch.h"
 #include "child_process.h"
@@ -323,22 +324,10 @@ int main(int argc, char** argv) {
       "  fosssim-oracle grade --candidate ./student --shard 3/8 --shard-result s3.json assets\n"
       "  fosssim-oracle merge s*.json --junit junit.xml --gradescope results.json\n"
       "  fosssim-oracle manifest check --candidate build/release/bin/FOSSSim assets extracreditassets");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp&) {
-    std::cout << app.help();
-    return kExitOk;
-  } catch (const CLI::CallForVersion&) {
-    std::cout << app.version() << "\n";
-    return kExitOk;
-  } catch (const CLI::ParseError& error) {
-    if (error.get_exit_code() == 0) {
-      std::cout << app.help("", CLI::AppFormatMode::All);
-      return kExitOk;
-    }
-    std::cerr << "fosssim-oracle: error: " << error.what()
-              << "\nRun fosssim-oracle --help (or fosssim-oracle COMMAND --help) for the options.\n";
-    return kExitBadInput;
+  if (auto status = parse_command_line(
+          app, argc, argv,
+          "Run fosssim-oracle --help (or fosssim-oracle COMMAND --help) for the options.")) {
+    return *status;
   }
   if (app.got_subcommand("grade")) return run_grade(grade);
   if (app.got_subcommand("merge")) return run_merge(merge);
