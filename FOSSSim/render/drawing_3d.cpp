@@ -117,7 +117,8 @@ void add_edges(const Scene3DView& view, const SceneParts3D& parts, DepthSortedSh
   }
 }
 
-void add_particles(const Scene3DView& view, const SceneParts3D& parts, DepthSortedShapes& shapes) {
+void add_particles(const Scene3DView& view, const SceneParts3D& parts, const Color& pin_color,
+                   DepthSortedShapes& shapes) {
   const Appearance& look = view.scene.appearance;
   auto add = [&](int p, bool pin) {
     const ProjectedPoint& seen = view.seen[p];
@@ -126,11 +127,11 @@ void add_particles(const Scene3DView& view, const SceneParts3D& parts, DepthSort
     const double pixels = radius * view.projection.pixels_per_unit(seen.depth);
     const double depth = seen.depth - radius;
     if (pin) {
-      shapes.add(depth, Disc{seen.pixel, std::max(0.5 * pixels, kPinMinPixels), kPinColor});
+      shapes.add(depth, Disc{seen.pixel, std::max(0.5 * pixels, kPinMinPixels), pin_color});
     } else if (view.scene.model.fixed[p]) {
       const double shown = std::max(pixels, kPinMinPixels);
       shapes.add(depth, Disc{seen.pixel, shown, look.particle_color[p]});
-      shapes.add(depth, Ring{seen.pixel, shown, kPinRingWidth, kPinColor});
+      shapes.add(depth, Ring{seen.pixel, shown, kPinRingWidth, pin_color});
     } else {
       shapes.add(depth, Disc{seen.pixel, pixels, look.particle_color[p]});
     }
@@ -212,7 +213,7 @@ Drawing compose_drawing_3d(const Scene& scene, const SceneParts3D& parts, const 
   add_trails(view, paths, shapes);
   add_triangles(view, shapes);
   add_edges(view, parts, shapes);
-  add_particles(view, parts, shapes);
+  add_particles(view, parts, drawing.text_color, shapes);
   drawing.shapes = shapes.farthest_first();
   add_overlay(view, overlay, drawing);
   drawing.text = overlay_text(overlay, state.time, scene.model.integrator.dt);

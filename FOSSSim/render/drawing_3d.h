@@ -15,10 +15,10 @@ namespace fosssim {
 /// Surfaces whose triangles' projected sides are on average at least this many pixels long are
 /// outlined (coarse meshes show their triangles; dense ones are shaded only).
 inline constexpr double kOutlineMinPixels = 16.0;
-/// Fixed particles are drawn at least this large, ringed in kPinColor; fixed particles on a
-/// surface as dots of kPinColor, half their radius.
+/// Fixed particles are drawn at least this large and ringed in the pin colour; fixed particles
+/// on a surface as dots of the pin colour, half their radius. The pin colour is the text's:
+/// black or white, whichever reads on the background (text_color_for).
 inline constexpr double kPinMinPixels = 3.0;
-inline constexpr Color kPinColor{0.1, 0.1, 0.1};
 
 /// Which parts of a 3D scene are drawn besides its surfaces (Appearance::triangles). A surface
 /// stands for its mesh: the particles on it or inside it (Appearance::interior_particles) and
@@ -38,8 +38,8 @@ SceneParts3D compute_scene_parts_3d(const Scene& scene);
 ///   shade_triangle under camera_lighting, outlined in a darker colour when the surface is coarse
 ///   (kOutlineMinPixels);
 /// - `parts.edges` as capsules and `parts.particles` as discs, their radii scaled by the
-///   perspective at their depth; fixed particles at least kPinMinPixels and ringed in
-///   kPinColor; `parts.pins` as dots;
+///   perspective at their depth; fixed particles at least kPinMinPixels and ringed in the pin
+///   colour; `parts.pins` as dots;
 /// - the trails as thin segments.
 /// Shapes with a corner behind the near plane are left out. The overlay's marks ring their
 /// particles and its drag guide is drawn over everything, as in 2D.

@@ -12,6 +12,7 @@
 #include "io/trajectory_file.h"
 #include "pictures/cairo_painter.h"
 #include "render/tiny_scene.h"
+#include "render/tiny_scene_3d.h"
 #include "viewer/xvfb_server.h"
 
 namespace fosssim {
@@ -65,6 +66,21 @@ TEST_F(WindowTest, ShowsExactlyWhatTheHeadlessPicturesShow) {
   const Image shot = read_png(folder_ / "shot.png");
   const Image picture = read_png(folder_ / "pngs/frame_00017.png");
   EXPECT_EQ(shot.pixels, picture.pixels);
+  EXPECT_NE(shot.pixels, read_png(folder_ / "pngs/frame_00016.png").pixels);
+}
+
+TEST_F(WindowTest, ShowsA3DSceneExactlyAsTheHeadlessPictures) {
+  folder_.write("cloth.xml", testing::kTinyScene3D);
+  const auto window =
+      fosssim("-s cloth.xml --window-screenshot shot.png --window-screenshot-step 17");
+  ASSERT_EQ(window.status, 0) << window.err;
+  const auto headless = fosssim("-s cloth.xml -d 0 -g 1");
+  ASSERT_EQ(headless.status, 0) << headless.err;
+  const Image shot = read_png(folder_ / "shot.png");
+  std::set<std::uint32_t> colors(shot.pixels.begin(), shot.pixels.end());
+  EXPECT_GT(colors.size(), 10u) << "the screenshot is blank";
+  // The window's run (with its idle drag spring) steps exactly as the headless one.
+  EXPECT_EQ(shot.pixels, read_png(folder_ / "pngs/frame_00017.png").pixels);
   EXPECT_NE(shot.pixels, read_png(folder_ / "pngs/frame_00016.png").pixels);
 }
 
