@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
   Drawing drawing;
   const double compose_ms = median_ms(kRepeats, [&] { drawing = view.compose(state); });
   const double paint_ms = median_ms(kRepeats, [&] { render_image(drawing); });
-  const double svg_shapes = static_cast<double>(drawing.shapes.size());
+  const std::size_t shapes = drawing.shapes.size();
 
   Overlay overlay;
   const Camera flat_camera = fit_camera(state.q, 3, 512, 512);
@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
               flat_compose_ms / step_ms);
   std::printf("%-44s %10.2f %10.2f\n", "flat along -z, every spring: paint", flat_paint_ms,
               flat_paint_ms / step_ms);
-  std::printf("\n3D picture: %.0f shapes; %.1f pictures per second\n", svg_shapes,
+  std::printf("\n3D picture: %zu shapes; %.1f pictures per second\n", shapes,
               1000.0 / (compose_ms + paint_ms));
   return 0;
 }

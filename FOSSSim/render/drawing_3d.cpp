@@ -15,7 +15,7 @@ namespace {
 constexpr double kOutlineShade = 0.7;
 constexpr double kOutlineWidth = 0.75;
 /// Capsules are at least this many pixels in radius, so that distant edges stay visible.
-constexpr double kMinCapsulePixels = 0.5;
+constexpr double kMinCapsulePixels = 0.75;
 /// Trails: segments of this radius in pixels (the 2D trails are 1.5 pixels wide).
 constexpr double kTrailRadius = 0.75;
 constexpr double kPinRingWidth = 1.5;

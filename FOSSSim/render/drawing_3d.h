@@ -14,7 +14,7 @@ namespace fosssim {
 
 /// Surfaces whose triangles' projected sides are on average at least this many pixels long are
 /// outlined (coarse meshes show their triangles; dense ones are shaded only).
-inline constexpr double kOutlineMinPixels = 16.0;
+inline constexpr double kOutlineMinPixels = 10.0;
 /// Fixed particles are drawn at least this large and ringed in the pin colour; fixed particles
 /// on a surface as dots of the pin colour, half their radius. The pin colour is the text's:
 /// black or white, whichever reads on the background (text_color_for).

@@ -10,8 +10,8 @@
 
 namespace fosssim::testing {
 
-/// A 6 × 6 cloth hanging in the plane z = 0 from its two top corners, x from 0 to 1 and y from
-/// 0 down to -1, falling for 30 steps of local/global; dark blue-grey background; the default
+/// A 6 × 6 cloth hanging in the plane z = 0 from its two top corners, x from -0.5 to 0.5 and y
+/// from 0 down to -1, falling for 30 steps of local/global; dark blue-grey background; the default
 /// three-quarter view.
 inline constexpr const char* kTinyScene3D = R"(<scene dim="3">
   <duration time="0.3"/><integrator type="local-global" dt="0.01"/>
