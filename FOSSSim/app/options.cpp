@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <vector>
 
 #include "core/text.h"
 
@@ -37,6 +39,13 @@ void add_picture_options(CLI::App& app, Options& options) {
   app.add_option("--size", options.size, "Width x height in pixels of the window, pictures and movie")
       ->capture_default_str()
       ->group(group);
+  app.add_option("--view", options.view,
+                 "3D scenes: look from YAW,PITCH degrees (0,0 looks along -z; the default is\n"
+                 "30,20), optionally from DISTANCE to the target; overrides <camera3d>")
+      ->group(group);
+  app.add_flag("--orthographic", options.orthographic,
+               "3D scenes: parallel projection instead of perspective")
+      ->group(group);
   app.add_option("--energy-plot", options.energy_plot,
                  "Plot kinetic, potential and total energy over the run into this PNG (or .svg)")
       ->group(group);
@@ -64,6 +73,33 @@ std::optional<std::string> parse_size(const std::string& text, int& width, int& 
   }
   width = w;
   height = h;
+  return std::nullopt;
+}
+
+/// Parses "YAW,PITCH[,DISTANCE]" (degrees, degrees, world units > 0) into `view`.
+std::optional<std::string> parse_view(const std::string& text, OrbitViewSettings& view) {
+  std::vector<double> values;
+  bool numbers = true;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item =
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    char* end = nullptr;
+    const double value = std::strtod(item.c_str(), &end);
+    numbers = numbers && !item.empty() && *end == '\0' && std::isfinite(value);
+    values.push_back(value);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (!numbers || values.size() < 2 || values.size() > 3 ||
+      (values.size() == 3 && !(values[2] > 0.0))) {
+    return "--view must be YAW,PITCH or YAW,PITCH,DISTANCE: angles in degrees and a distance "
+           "> 0 (30,20 or 30,20,4, say), found '" +
+           text + "'";
+  }
+  view.yaw = values[0];
+  view.pitch = values[1];
+  if (values.size() == 3) view.distance = values[2];
   return std::nullopt;
 }
 
@@ -169,6 +205,15 @@ std::optional<std::string> apply_overrides(const Options& options, Scene& scene)
       return "--newton-max-iterations must be at least 1, found " +
              std::to_string(*options.newton_max_iterations);
     model.integrator.newton.max_iterations = *options.newton_max_iterations;
+  }
+  if (!options.view.empty() || options.orthographic) {
+    if (model.dim != 3) return "--view and --orthographic apply to 3D scenes (<scene dim=\"3\">)";
+    if (!scene.appearance.camera3d) scene.appearance.camera3d.emplace();
+    OrbitViewSettings& view = *scene.appearance.camera3d;
+    if (!options.view.empty()) {
+      if (auto problem = parse_view(options.view, view)) return problem;
+    }
+    if (options.orthographic) view.orthographic = true;
   }
   if (options.newton_tolerance) {
     if (!std::isfinite(*options.newton_tolerance) || *options.newton_tolerance <= 0.0)

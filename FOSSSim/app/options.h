@@ -38,6 +38,8 @@ struct Options {
   int width = 512, height = 512;  ///< parsed from size by check_picture_options
   std::string energy_plot;        ///< --energy-plot FILE.png|FILE.svg
   std::string energy_csv;         ///< --energy-csv FILE.csv
+  std::string view;               ///< --view YAW,PITCH[,DISTANCE] of 3D scenes
+  bool orthographic = false;      ///< --orthographic: parallel projection of 3D scenes
   std::string window_screenshot;  ///< test aid: PNG of the window at window_screenshot_step
   std::int64_t window_screenshot_step = 0;
   bool display_given = false;     ///< -d appeared on the command line

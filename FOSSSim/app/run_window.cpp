@@ -7,6 +7,7 @@
 #include "app/exit_codes.h"
 #include "app/frame_outputs.h"
 #include "app/interrupt.h"
+#include "core/interaction/picking.h"
 #include "io/trajectory_file.h"
 #include "viewer/stepper.h"
 #include "viewer/window.h"
@@ -26,8 +27,10 @@ WindowSettings window_settings(const Scene& scene, const Options& options) {
   return settings;
 }
 
-/// Runs the scene in the window, feeding the outputs of -o, -g, -m and --energy-*.
-int run_simulation_window(const Scene& scene, const Options& options) {
+/// Runs the scene in the window, feeding the outputs of -o, -g, -m and --energy-*; the mouse
+/// can pull particles with a drag spring added to the model.
+int run_simulation_window(Scene& scene, const Options& options) {
+  DragSpringForce& spring = add_drag_spring(scene.model);
   auto opened = FrameOutputs::open(scene, options);
   if (!opened) {
     std::cerr << "FOSSSim: error: " << opened.error() << "\n";
@@ -36,6 +39,7 @@ int run_simulation_window(const Scene& scene, const Options& options) {
   FrameOutputs& outputs = *opened;
   SimulationStepper stepper(scene);
   SceneView view(scene, stepper.state(), options.width, options.height);
+  ParticleGrab grab(scene, spring);
   int status = kExitOk;
   bool outputs_open = true;
   auto close_outputs = [&](const std::string& why) {
@@ -74,7 +78,9 @@ int run_simulation_window(const Scene& scene, const Options& options) {
     if (outputs_open) close_outputs("the run failed");
     status = kExitSimulationFailed;
   };
-  auto outcome = run_window(stepper, view, window_settings(scene, options), events);
+  WindowSettings settings = window_settings(scene, options);
+  settings.grab = &grab;
+  auto outcome = run_window(stepper, view, settings, events);
   if (!outcome) {
     std::cerr << "FOSSSim: error: " << outcome.error() << "\n";
     return kExitBadInput;
@@ -127,7 +133,7 @@ int run_grading_window(const Scene& scene, const Options& options) {
 
 }  // namespace
 
-int run_window(const Scene& scene, const Options& options) {
+int run_window(Scene& scene, const Options& options) {
   if (auto problem = check_display()) {
     std::cerr << "FOSSSim: error: " << *problem << "\n";
     return kExitBadInput;

@@ -30,9 +30,24 @@ struct Viewport {
   double cx = 0.0, cy = 0.0, size = 1.0;
 };
 
+/// A scene's <camera3d>: how pictures of a 3D scene look at it first (docs/viewing.md). Values
+/// left unset are chosen by the picture: the default angles and field of view, and a target
+/// and distance fitted to the particles.
+struct OrbitViewSettings {
+  std::optional<double> yaw;       ///< degrees about +y; 0 looks along -z, 90 along -x
+  std::optional<double> pitch;     ///< degrees above the horizontal; positive looks down
+  std::optional<double> distance;  ///< from the eye to the target, world units (> 0)
+  std::optional<std::array<double, 3>> target;  ///< the point looked at, world units
+  std::optional<double> fov;                    ///< vertical field of view, degrees, in (0, 180)
+  bool orthographic = false;                    ///< parallel projection instead of perspective
+};
+
 /// How a scene is drawn; no physics depends on it.
 struct Appearance {
   static constexpr Color kDefaultParticleColor{0.651, 0.294, 0.0};
+  /// Vertices of meshes, and so the surfaces drawn over them (3D pictures shade a triangle in
+  /// the mean colour of its corners).
+  static constexpr Color kDefaultMeshColor{0.25, 0.5, 0.8};
   static constexpr Color kDefaultEdgeColor{0.0, 0.388, 0.388};
   static constexpr double kDefaultParticleRadius = 0.1;
   static constexpr double kDefaultEdgeRadius = 0.015;
@@ -47,6 +62,11 @@ struct Appearance {
   /// Surface triangles to shade (particle indices): the faces of cloth meshes and the boundary
   /// of tet meshes. Empty for particle scenes.
   std::vector<std::array<int, 3>> triangles;
+  /// Particles inside a closed surface of `triangles` (the interior vertices of tet meshes):
+  /// 3D pictures draw the surface and not them, nor the edges between them and the surface.
+  std::vector<int> interior_particles;
+  /// The scene's <camera3d>, or the command line's --view; 3D scenes only.
+  std::optional<OrbitViewSettings> camera3d;
 };
 
 /// Everything a scene file declares.

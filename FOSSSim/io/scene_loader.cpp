@@ -27,9 +27,10 @@ constexpr std::array<const char*, 3> kPositionNames = {"px", "py", "pz"};
 constexpr std::array<const char*, 3> kVelocityNames = {"vx", "vy", "vz"};
 
 /// Elements that are not forces, in the order they are read.
-constexpr std::array<const char*, 12> kOtherElements = {
-    "duration",  "integrator", "maxsimfreq",  "description",   "scenetag",     "particle",
-    "edge",      "particlecolor", "edgecolor", "backgroundcolor", "particlepath", "viewport"};
+constexpr std::array<const char*, 13> kOtherElements = {
+    "duration",     "integrator", "maxsimfreq",    "description", "scenetag",
+    "particle",     "edge",       "particlecolor", "edgecolor",   "backgroundcolor",
+    "particlepath", "viewport",   "camera3d"};
 
 bool is_known_element(std::string_view name) {
   for (const char* known : kOtherElements) {
@@ -191,6 +192,35 @@ class SceneParser {
       scene_.appearance.viewport = Viewport{r.number("cx"), r.number("cy"), r.positive("size")};
       keep_warnings(r);
     }
+    if (const XMLElement* e = single(root, "camera3d", false)) read_camera3d(*e);
+  }
+
+  /// <camera3d yaw pitch distance tx ty tz fov projection>, every attribute optional.
+  void read_camera3d(const XMLElement& e) {
+    ElementReader r = reader(e, -1);
+    if (scene_.model.dim != 3) r.fail("applies to 3D scenes only (<scene dim=\"3\">)");
+    OrbitViewSettings view;
+    if (r.has("yaw")) view.yaw = r.number("yaw");
+    if (r.has("pitch")) view.pitch = r.number("pitch");
+    if (r.has("distance")) view.distance = r.positive("distance");
+    if (r.has("tx") || r.has("ty") || r.has("tz")) {
+      view.target = std::array<double, 3>{r.number("tx"), r.number("ty"), r.number("tz")};
+    }
+    if (r.has("fov")) {
+      const double fov = r.number("fov");
+      if (!(fov > 0.0 && fov < 180.0)) {
+        r.fail("fov", "must be between 0 and 180 degrees, found " + std::to_string(fov));
+      }
+      view.fov = fov;
+    }
+    const std::string projection = r.text_or_empty("projection");
+    if (projection == "orthographic") {
+      view.orthographic = true;
+    } else if (!projection.empty() && projection != "perspective") {
+      r.fail("projection", "must be perspective or orthographic, found \"" + projection + "\"");
+    }
+    scene_.appearance.camera3d = view;
+    keep_warnings(r);
   }
 
   void read_particles() {
@@ -333,7 +363,8 @@ Expected<Scene, SceneError> load_scene_file(const std::string& path) {
     return SceneError(path, 0, "", "is a directory, not a scene file");
   }
   std::ifstream in(path, std::ios::binary);
-  if (!in) return SceneError(path, 0, "", std::string("cannot open the file: ") + std::strerror(errno));
+  if (!in)
+    return SceneError(path, 0, "", std::string("cannot open the file: ") + std::strerror(errno));
   std::ostringstream content;
   content << in.rdbuf();
   if (in.bad()) return SceneError(path, 0, "", "cannot read the file");

@@ -78,7 +78,7 @@ Expected<std::unique_ptr<Force>, std::string> append_mesh(Scene& scene, const Me
   const double length = compute_mean_spring_length(mesh);
   Appearance& look = scene.appearance;
   look.particle_radius.resize(total, kParticleRadiusPerLength * length);
-  look.particle_color.resize(total, Appearance::kDefaultParticleColor);
+  look.particle_color.resize(total, Appearance::kDefaultMeshColor);
   for (const SpringTerm& s : springs) {
     model.edges.push_back({s.i, s.j});
     look.edge_radius.push_back(kEdgeRadiusPerLength * length);
@@ -89,7 +89,16 @@ Expected<std::unique_ptr<Force>, std::string> append_mesh(Scene& scene, const Me
       look.triangles.push_back({first + t[0], first + t[1], first + t[2]});
   };
   add_triangles(compute_face_triangles(mesh));
-  add_triangles(compute_tet_boundary(mesh));
+  const auto boundary = compute_tet_boundary(mesh);
+  add_triangles(boundary);
+  // Tet vertices off the boundary are inside the closed surface: pictures do not draw them.
+  std::vector<bool> inside(n, false);
+  for (const auto& tet : mesh.tets)
+    for (int v : tet) inside[v] = true;
+  for (const auto& face : boundary)
+    for (int v : face) inside[v] = false;
+  for (int v = 0; v < n; ++v)
+    if (inside[v]) look.interior_particles.push_back(first + v);
   return make_spring_set(dim, std::move(springs), label);
 }
 

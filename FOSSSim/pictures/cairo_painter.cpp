@@ -11,6 +11,7 @@
 #include <memory>
 #include <numbers>
 #include <stdexcept>
+#include <variant>
 
 #include "io/output_file.h"
 
@@ -20,6 +21,9 @@ namespace {
 
 constexpr double kTextMargin = 6.0;   // pixels from the top-left corner
 constexpr double kLineSpacing = 1.3;  // line height / font size
+/// Surface triangles are painted grown by this many pixels, at most kSeamMiter at a corner.
+constexpr double kSeamPixels = 0.5;
+constexpr double kSeamMiter = 1.5;
 
 struct SurfaceDeleter {
   void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
@@ -45,6 +49,72 @@ void paint_text(cairo_t* cr, const Drawing& drawing) {
     cairo_show_text(cr, line.c_str());
     baseline += kLineSpacing * drawing.font_size;
   }
+}
+
+void paint_polyline(cairo_t* cr, const Polyline& line) {
+  cairo_new_path(cr);
+  for (const Point2& p : line.points) cairo_line_to(cr, p.x, p.y);
+  cairo_set_line_width(cr, line.width);
+  set_color(cr, line.color);
+  cairo_stroke(cr);
+}
+
+void paint_shape(cairo_t* cr, const Capsule& edge) {
+  cairo_move_to(cr, edge.a.x, edge.a.y);
+  cairo_line_to(cr, edge.b.x, edge.b.y);
+  cairo_set_line_width(cr, 2.0 * edge.radius);
+  set_color(cr, edge.color);
+  cairo_stroke(cr);
+}
+
+void paint_shape(cairo_t* cr, const Disc& disc) {
+  cairo_new_path(cr);
+  cairo_arc(cr, disc.center.x, disc.center.y, disc.radius, 0.0, 2.0 * std::numbers::pi);
+  set_color(cr, disc.color);
+  cairo_fill(cr);
+}
+
+void paint_shape(cairo_t* cr, const Ring& ring) {
+  cairo_new_path(cr);
+  cairo_arc(cr, ring.center.x, ring.center.y, ring.radius, 0.0, 2.0 * std::numbers::pi);
+  cairo_set_line_width(cr, ring.width);
+  set_color(cr, ring.color);
+  cairo_stroke(cr);
+}
+
+/// Corner `a` of a triangle moved outward so that both its sides move out by kSeamPixels
+/// (along the bisector by kSeamPixels / sin(half angle)), but never farther than kSeamMiter.
+Point2 grown_corner(const Point2& a, const Point2& b, const Point2& c) {
+  const double lb = std::hypot(b.x - a.x, b.y - a.y), lc = std::hypot(c.x - a.x, c.y - a.y);
+  if (lb == 0.0 || lc == 0.0) return a;
+  const double ux = (b.x - a.x) / lb, uy = (b.y - a.y) / lb;
+  const double wx = (c.x - a.x) / lc, wy = (c.y - a.y) / lc;
+  const double bx = ux + wx, by = uy + wy, length = std::hypot(bx, by);
+  if (length == 0.0) return a;
+  const double sin_half = 0.5 * std::hypot(ux - wx, uy - wy);
+  const double offset = sin_half > 0.0 ? std::min(kSeamPixels / sin_half, kSeamMiter) : 0.0;
+  return {a.x - offset * bx / length, a.y - offset * by / length};
+}
+
+/// A surface triangle, filled grown by kSeamPixels so that anti-aliased neighbours overlap
+/// instead of letting the background show through their shared side; then its outline.
+void paint_shape(cairo_t* cr, const Triangle& triangle) {
+  const auto& [a, b, c] = triangle.corners;
+  const Point2 ga = grown_corner(a, b, c), gb = grown_corner(b, c, a), gc = grown_corner(c, a, b);
+  cairo_move_to(cr, ga.x, ga.y);
+  cairo_line_to(cr, gb.x, gb.y);
+  cairo_line_to(cr, gc.x, gc.y);
+  cairo_close_path(cr);
+  set_color(cr, triangle.color);
+  cairo_fill(cr);
+  if (triangle.outline_width <= 0.0) return;
+  cairo_move_to(cr, a.x, a.y);
+  cairo_line_to(cr, b.x, b.y);
+  cairo_line_to(cr, c.x, c.y);
+  cairo_close_path(cr);
+  cairo_set_line_width(cr, triangle.outline_width);
+  set_color(cr, triangle.outline_color);
+  cairo_stroke(cr);
 }
 
 void check_status(cairo_status_t status, const std::string& what) {
@@ -77,33 +147,14 @@ void paint_drawing(cairo_t* cr, const Drawing& drawing) {
 
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-  for (const Polyline& line : drawing.paths) {
-    cairo_new_path(cr);
-    for (const Point2& p : line.points) cairo_line_to(cr, p.x, p.y);
-    cairo_set_line_width(cr, line.width);
-    set_color(cr, line.color);
-    cairo_stroke(cr);
+  for (const Polyline& line : drawing.paths) paint_polyline(cr, line);
+  for (const Shape& shape : drawing.shapes) {
+    std::visit([cr](const auto& s) { paint_shape(cr, s); }, shape);
   }
-  for (const Capsule& edge : drawing.edges) {
-    cairo_move_to(cr, edge.a.x, edge.a.y);
-    cairo_line_to(cr, edge.b.x, edge.b.y);
-    cairo_set_line_width(cr, 2.0 * edge.radius);
-    set_color(cr, edge.color);
-    cairo_stroke(cr);
-  }
-  for (const Disc& disc : drawing.particles) {
-    cairo_new_path(cr);
-    cairo_arc(cr, disc.center.x, disc.center.y, disc.radius, 0.0, 2.0 * std::numbers::pi);
-    set_color(cr, disc.color);
-    cairo_fill(cr);
-  }
-  for (const Ring& ring : drawing.marks) {
-    cairo_new_path(cr);
-    cairo_arc(cr, ring.center.x, ring.center.y, ring.radius, 0.0, 2.0 * std::numbers::pi);
-    cairo_set_line_width(cr, ring.width);
-    set_color(cr, ring.color);
-    cairo_stroke(cr);
-  }
+  for (const Capsule& edge : drawing.edges) paint_shape(cr, edge);
+  for (const Disc& disc : drawing.particles) paint_shape(cr, disc);
+  for (const Ring& ring : drawing.marks) paint_shape(cr, ring);
+  for (const Polyline& line : drawing.guides) paint_polyline(cr, line);
   paint_text(cr, drawing);
 }
 

@@ -12,8 +12,9 @@ typedef struct _cairo cairo_t;
 namespace fosssim {
 
 /// Paints `drawing` on `cr`, whose user space must be the drawing's pixels (origin top-left,
-/// y down): background, paths, edges as round-capped strokes, particles as filled circles,
-/// marks, then the text lines. Anti-aliased as the target surface allows.
+/// y down): background, paths, the 3D shapes in their order (triangles filled and outlined,
+/// capsules, discs, rings), edges as round-capped strokes, particles as filled circles,
+/// marks, guides, then the text lines. Anti-aliased as the target surface allows.
 void paint_drawing(cairo_t* cr, const Drawing& drawing);
 
 /// `drawing` painted into a new image of its size.

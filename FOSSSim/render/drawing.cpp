@@ -11,9 +11,9 @@ namespace {
 /// Width of trails in pixels; the course drew one-pixel GL lines, a little more reads better
 /// once anti-aliased.
 constexpr double kTrailWidth = 1.5;
-/// Rings are drawn this many pixels outside the particle's edge.
-constexpr double kRingGap = 3.0;
-constexpr double kRingWidth = 2.0;
+/// The mouse's drag line and the ring at its end.
+constexpr double kGuideWidth = 1.5;
+constexpr double kGuideRingRadius = 4.0;
 
 Point2 position(const State& state, int dim, const PixelMapping& mapping, int p) {
   return mapping.to_pixel(state.q[dim * p], state.q[dim * p + 1]);
@@ -55,7 +55,7 @@ Drawing compose_drawing(const Scene& scene, const State& state, const PathHistor
     line.width = kTrailWidth;
     line.color = trail.color;
     line.points.reserve(trail.points.size());
-    for (const Point2& p : trail.points) line.points.push_back(mapping.to_pixel(p.x, p.y));
+    for (const Point3& p : trail.points) line.points.push_back(mapping.to_pixel(p.x, p.y));
     drawing.paths.push_back(std::move(line));
   }
   const auto& edges = scene.model.edges;
@@ -73,11 +73,28 @@ Drawing compose_drawing(const Scene& scene, const State& state, const PathHistor
   }
   for (const ParticleMark& mark : overlay.marks) {
     const Disc& disc = drawing.particles.at(mark.particle);
-    drawing.marks.push_back({disc.center, disc.radius + kRingGap, kRingWidth, mark.color});
+    drawing.marks.push_back({disc.center, disc.radius + kMarkGap, kMarkWidth, mark.color});
   }
-  if (overlay.show_time) drawing.text.push_back(format_time(state.time, scene.model.integrator.dt));
-  drawing.text.insert(drawing.text.end(), overlay.status.begin(), overlay.status.end());
+  if (overlay.drag) {
+    add_drag_guide(drawing, drawing.particles.at(overlay.drag->particle).center,
+                   mapping.to_pixel(overlay.drag->target.x(), overlay.drag->target.y()),
+                   drawing.text_color);
+  }
+  drawing.text = overlay_text(overlay, state.time, scene.model.integrator.dt);
   return drawing;
+}
+
+std::vector<std::string> overlay_text(const Overlay& overlay, double time, double dt) {
+  std::vector<std::string> text;
+  if (overlay.show_time) text.push_back(format_time(time, dt));
+  text.insert(text.end(), overlay.status.begin(), overlay.status.end());
+  return text;
+}
+
+void add_drag_guide(Drawing& drawing, const Point2& particle, const Point2& target,
+                    const Color& color) {
+  drawing.guides.push_back({{particle, target}, kGuideWidth, color});
+  drawing.marks.push_back({target, kGuideRingRadius, kGuideWidth, color});
 }
 
 }  // namespace fosssim

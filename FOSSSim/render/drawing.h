@@ -2,7 +2,10 @@
 // What to draw, in pixels: the one description that the window, the PNG and SVG pictures and
 // the movies all paint, so that they show the same thing.
 
+#include <array>
+#include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "core/scene.h"
@@ -40,19 +43,38 @@ struct Ring {
   Color color;
 };
 
-/// One picture, painted in this order (SPEC section 6): background, paths, edges, particles,
-/// marks, then the text lines at the top-left corner.
+/// A filled triangle: a face of a shaded surface in a 3D picture.
+struct Triangle {
+  std::array<Point2, 3> corners;
+  Color color;
+  double outline_width = 0.0;  ///< pixels; 0: no outline
+  Color outline_color;
+};
+
+/// One shape of a 3D picture.
+using Shape = std::variant<Triangle, Capsule, Disc, Ring>;
+
+/// One picture, painted in this order (SPEC section 6): background, paths, the 3D shapes,
+/// edges, particles, marks, guides, then the text lines at the top-left corner. 2D pictures
+/// have no shapes; 3D pictures have only shapes, depth-sorted, instead of paths, edges and
+/// particles.
 struct Drawing {
   int width = 512, height = 512;  ///< pixels
   Color background{1.0, 1.0, 1.0};
   std::vector<Polyline> paths;
+  std::vector<Shape> shapes;  ///< 3D: farthest first
   std::vector<Capsule> edges;
   std::vector<Disc> particles;
   std::vector<Ring> marks;
+  std::vector<Polyline> guides;   ///< over everything but the text: the mouse's drag line
   std::vector<std::string> text;  ///< top-left, one line each
   Color text_color;
   double font_size = 14.0;  ///< pixels
 };
+
+/// Marks ring their particle this many pixels outside its edge, with this stroke width.
+inline constexpr double kMarkGap = 3.0;
+inline constexpr double kMarkWidth = 2.0;
 
 /// A ring around a particle (the window's grading mode marks disagreeing particles).
 struct ParticleMark {
@@ -60,11 +82,18 @@ struct ParticleMark {
   Color color;
 };
 
+/// A particle pulled toward a point with the mouse: drawn as a line from it to the point.
+struct DragGuide {
+  int particle = 0;
+  Eigen::Vector3d target = Eigen::Vector3d::Zero();  ///< world units (z ignored in 2D)
+};
+
 /// What a viewer adds to a scene's own appearance.
 struct Overlay {
   bool show_time = true;            ///< "t = 1.23" as the first text line
   std::vector<std::string> status;  ///< more text lines below the time
   std::vector<ParticleMark> marks;
+  std::optional<DragGuide> drag;
 };
 
 /// The drawing of `state` seen through `camera` on a width × height picture: trails from
@@ -72,6 +101,14 @@ struct Overlay {
 /// the overlay. 3D scenes are projected onto the x-y plane.
 Drawing compose_drawing(const Scene& scene, const State& state, const PathHistory& paths,
                         const Camera& camera, int width, int height, const Overlay& overlay = {});
+
+/// The overlay's text lines: the time (if shown) and the status lines.
+std::vector<std::string> overlay_text(const Overlay& overlay, double time, double dt);
+
+/// The drag guide of the overlay between two pixels: a thin line in `color` and a small ring
+/// at the target, added to the drawing's guides and marks.
+void add_drag_guide(Drawing& drawing, const Point2& particle, const Point2& target,
+                    const Color& color);
 
 /// "t = 1.230": the time with as many decimals as the time step needs (at least 2, at most 6).
 std::string format_time(double time, double dt);

@@ -23,7 +23,8 @@ void PathHistory::record(const Vector& q, int dim) {
   for (Trail& trail : trails_) {
     if (trail.capacity == 0) continue;
     if (trail.points.size() == trail.capacity) trail.points.pop_front();
-    trail.points.push_back({q[dim * trail.particle], q[dim * trail.particle + 1]});
+    const int i = dim * trail.particle;
+    trail.points.push_back({q[i], q[i + 1], dim == 3 ? q[i + 2] : 0.0});
   }
 }
 

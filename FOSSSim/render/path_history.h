@@ -10,12 +10,17 @@
 
 namespace fosssim {
 
-/// The last positions (x, y) of each traced particle, oldest first.
+/// A point in world units (z = 0 in 2D scenes).
+struct Point3 {
+  double x = 0.0, y = 0.0, z = 0.0;
+};
+
+/// The last positions of each traced particle, oldest first.
 struct Trail {
   int particle = 0;
   Color color;
   std::size_t capacity = 0;  ///< ceil(path duration / dt) positions
-  std::deque<Point2> points;
+  std::deque<Point3> points;
 };
 
 /// Records, for every <particlepath>, the last ceil(duration/dt) positions of its particle

@@ -69,10 +69,55 @@ bool apply_camera_command(Command command, Camera& camera) {
   }
 }
 
-void zoom_by_drag(Camera& camera, double dx, double dy, int width, int height) {
+double zoom_factor_for_drag(double dx, double dy, int width, int height) {
   const double across = -dx / width, down = dy / height;
   const double amount = std::abs(across) > std::abs(down) ? across : down;
-  zoom_camera(camera, std::exp(2.0 * amount));
+  return std::exp(2.0 * amount);
+}
+
+void zoom_by_drag(Camera& camera, double dx, double dy, int width, int height) {
+  zoom_camera(camera, zoom_factor_for_drag(dx, dy, width, height));
+}
+
+bool apply_view_command(Command command, SceneView& view) {
+  if (!view.is_3d()) return apply_camera_command(command, view.camera());
+  const double step = kPanStep * 0.5 * view.height();  // pixels
+  switch (command) {
+    case Command::kZoomOut:
+      view.zoom(kZoomStep);
+      return true;
+    case Command::kZoomIn:
+      view.zoom(1.0 / kZoomStep);
+      return true;
+    case Command::kPanLeft:  // the view moves left: the picture moves right
+      view.pan(step, 0.0);
+      return true;
+    case Command::kPanRight:
+      view.pan(-step, 0.0);
+      return true;
+    case Command::kPanUp:
+      view.pan(0.0, step);
+      return true;
+    case Command::kPanDown:
+      view.pan(0.0, -step);
+      return true;
+    default:
+      return false;
+  }
+}
+
+MouseAction mouse_action(MouseButton button, KeyModifiers modifiers, bool three_d) {
+  switch (button) {
+    case MouseButton::kLeft:
+      if (modifiers.ctrl) return MouseAction::kGrab;
+      if (three_d && !modifiers.shift) return MouseAction::kOrbit;
+      return MouseAction::kPan;
+    case MouseButton::kMiddle:
+      return MouseAction::kPan;
+    case MouseButton::kRight:
+      return MouseAction::kZoom;
+  }
+  return MouseAction::kNone;
 }
 
 }  // namespace fosssim

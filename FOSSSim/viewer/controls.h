@@ -2,6 +2,7 @@
 // The window's keys and mouse (SPEC section 6), as plain functions the window calls.
 
 #include "render/camera.h"
+#include "render/scene_view.h"
 
 namespace fosssim {
 
@@ -39,5 +40,28 @@ bool apply_camera_command(Command command, Camera& camera);
 /// zooms out by e² ≈ 7.4; up or right zooms in. The larger relative movement wins, as in the
 /// course's window. dx, dy in pixels (y down).
 void zoom_by_drag(Camera& camera, double dx, double dy, int width, int height);
+/// The factor zoom_by_drag scales the visible height by.
+double zoom_factor_for_drag(double dx, double dy, int width, int height);
+
+/// Applies a zoom or pan command to a view, 2D (exactly as apply_camera_command) or 3D (zoom
+/// keys move the orbit camera nearer or farther by kZoomStep, arrows pan by kPanStep of the
+/// half height); returns false for other commands.
+bool apply_view_command(Command command, SceneView& view);
+
+enum class MouseButton { kLeft, kMiddle, kRight };
+
+/// Keys held while a mouse button goes down.
+struct KeyModifiers {
+  bool shift = false;
+  bool ctrl = false;
+};
+
+/// What a drag with a mouse button does.
+enum class MouseAction { kNone, kPan, kZoom, kOrbit, kGrab };
+
+/// The mouse bindings (docs/viewing.md). 2D, as the course's window: left drag pans, right
+/// drag zooms; middle drag pans too. 3D: left drag orbits, shift + left or middle drag pans,
+/// right drag zooms. In both, ctrl + left drag grabs the particle under the cursor.
+MouseAction mouse_action(MouseButton button, KeyModifiers modifiers, bool three_d);
 
 }  // namespace fosssim

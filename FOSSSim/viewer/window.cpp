@@ -12,6 +12,7 @@
 
 #include "pictures/cairo_painter.h"
 #include "viewer/controls.h"
+#include "viewer/mouse_control.h"
 #include "viewer/throttle.h"
 
 namespace fosssim {
@@ -37,6 +38,7 @@ class Window {
         settings_(settings),
         events_(events),
         throttle_(settings.max_steps_per_second),
+        mouse_(view, settings.grab),
         paused_(settings.screenshot_path.empty() && settings.start_paused) {
     throttle_.restart(wall_seconds());
   }
@@ -64,9 +66,9 @@ class Window {
   const WindowSettings& settings_;
   const WindowEvents& events_;
   Throttle throttle_;
+  MouseControl mouse_;
   bool paused_;
   bool finished_ = false, failed_ = false;
-  int drag_button_ = -1, last_x_ = 0, last_y_ = 0;
 };
 
 Window* g_window = nullptr;
@@ -129,6 +131,7 @@ bool Window::screenshot_due() const {
 void Window::display() {
   Overlay overlay = stepper_.overlay();
   for (std::string& line : status()) overlay.status.push_back(std::move(line));
+  if (settings_.grab) overlay.drag = settings_.grab->guide();
   const Image image = render_image(view_.compose(stepper_.state(), overlay));
   // Cairo's rows run top to bottom, OpenGL's bottom to top.
   std::vector<std::uint32_t> flipped(image.pixels.size());
@@ -191,45 +194,48 @@ void Window::key(unsigned char key) {
       view_.recenter(stepper_.state());
       break;
     default:
-      if (!apply_camera_command(command, view_.camera())) return;
+      if (!apply_view_command(command, view_)) return;
   }
   glutPostRedisplay();
 }
 
 void Window::arrow(ArrowKey key) {
-  apply_camera_command(command_for_arrow(key), view_.camera());
+  apply_view_command(command_for_arrow(key), view_);
   glutPostRedisplay();
 }
 
 void Window::mouse(int button, int state, int x, int y) {
   constexpr int kWheelUp = 3, kWheelDown = 4;  // freeglut reports the wheel as buttons
-  if (state == GLUT_DOWN && (button == kWheelUp || button == kWheelDown)) {
-    zoom_camera(view_.camera(), button == kWheelUp ? 1.0 / kZoomStep : kZoomStep);
-    glutPostRedisplay();
+  if (button == kWheelUp || button == kWheelDown) {
+    if (state == GLUT_DOWN) {
+      mouse_.wheel(button == kWheelUp);
+      glutPostRedisplay();
+    }
     return;
   }
-  if (state == GLUT_DOWN && drag_button_ < 0 &&
-      (button == GLUT_LEFT_BUTTON || button == GLUT_RIGHT_BUTTON)) {
-    drag_button_ = button;
-    last_x_ = x;
-    last_y_ = y;
-  } else if (state == GLUT_UP && button == drag_button_) {
-    drag_button_ = -1;
+  MouseButton which;
+  switch (button) {
+    case GLUT_LEFT_BUTTON:
+      which = MouseButton::kLeft;
+      break;
+    case GLUT_MIDDLE_BUTTON:
+      which = MouseButton::kMiddle;
+      break;
+    case GLUT_RIGHT_BUTTON:
+      which = MouseButton::kRight;
+      break;
+    default:
+      return;
   }
+  const int held = glutGetModifiers();
+  const KeyModifiers modifiers{(held & GLUT_ACTIVE_SHIFT) != 0, (held & GLUT_ACTIVE_CTRL) != 0};
+  const bool changed = state == GLUT_DOWN ? mouse_.press(which, modifiers, x, y, stepper_.state())
+                                          : mouse_.release(which);
+  if (changed) glutPostRedisplay();
 }
 
 void Window::motion(int x, int y) {
-  const double dx = x - last_x_, dy = y - last_y_;
-  last_x_ = x;
-  last_y_ = y;
-  if (drag_button_ == GLUT_LEFT_BUTTON) {
-    drag_camera(view_.camera(), dx, dy, view_.height());
-  } else if (drag_button_ == GLUT_RIGHT_BUTTON) {
-    zoom_by_drag(view_.camera(), dx, dy, view_.width(), view_.height());
-  } else {
-    return;
-  }
-  glutPostRedisplay();
+  if (mouse_.move(x, y)) glutPostRedisplay();
 }
 
 void Window::reshape(int width, int height) {

@@ -9,6 +9,7 @@
 #include "core/expected.h"
 #include "core/step_error.h"
 #include "render/scene_view.h"
+#include "viewer/particle_grab.h"
 #include "viewer/stepper.h"
 
 namespace fosssim {
@@ -23,6 +24,8 @@ struct WindowSettings {
   std::int64_t screenshot_step = 0;
   /// Polled between steps; true closes the window (Ctrl-C in the terminal, say).
   std::function<bool()> stop_requested;
+  /// Pulls particles for the mouse's ctrl + left drag; null: particles cannot be pulled.
+  ParticleGrab* grab = nullptr;
 };
 
 /// What the window reports to its owner while it runs.
@@ -45,7 +48,8 @@ struct WindowOutcome {
 std::optional<std::string> check_display();
 
 /// Opens a window of view.width() × view.height() pixels showing `stepper`'s state through
-/// `view`, and handles keys and mouse until the user quits (q, Esc or closing the window).
+/// `view`, and handles keys and mouse (controls.h, mouse_control.h; docs/viewing.md) until the
+/// user quits (q, Esc or closing the window).
 /// Steps at most settings.max_steps_per_second per wall second while running. Each picture is
 /// the view's drawing painted by Cairo (pictures/cairo_painter.h) and copied to the window, so
 /// the window shows exactly what the PNG, SVG and movie outputs show. Fails (returns the

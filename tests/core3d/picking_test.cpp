@@ -31,6 +31,16 @@ TEST(PickParticle, WorksFor2DScenesSeenFromAbove) {
   EXPECT_EQ(pick_particle(q, 2, mouse, 0.05), 1);
 }
 
+TEST(PickParticle, BreaksTiesAlongTheRayByTheDistanceToIt) {
+  // Seen from above, every particle of a 2D scene is equally far along the ray.
+  Vector q(6);
+  q << 0.0, 0.0, 0.2, 0.0, 0.1, 0.05;
+  const Ray mouse{Eigen::Vector3d(0.17, 0.0, 1.0), -Eigen::Vector3d::UnitZ()};
+  EXPECT_EQ(pick_particle(q, 2, mouse, 0.5), 1);
+  const Ray other{Eigen::Vector3d(0.09, 0.06, 1.0), -Eigen::Vector3d::UnitZ()};
+  EXPECT_EQ(pick_particle(q, 2, other, 0.5), 2);
+}
+
 TEST(DragTarget, IntersectsTheRayWithThePlaneThroughTheGrabbedParticle) {
   const Ray ray{Eigen::Vector3d(1.0, 2.0, 10.0), Eigen::Vector3d(0.0, 0.0, -1.0)};
   const auto target =

@@ -67,6 +67,35 @@ TEST(AppendMesh, TetMeshesGetTheirBoundaryToDraw) {
   EXPECT_DOUBLE_EQ(scene.model.mass.sum() / 3.0, 2000.0);
 }
 
+TEST(AppendMesh, ListsTheTetMeshesInteriorVerticesAndGivesVerticesTheMeshColour) {
+  Scene scene;
+  scene.model.dim = 3;
+  scene.model.mass = Vector::Ones(3);
+  scene.model.fixed = {false};
+  scene.initial.q = Vector::Zero(3);
+  scene.initial.v = Vector::Zero(3);
+  scene.appearance.particle_radius = {0.1};
+  scene.appearance.particle_color = {Appearance::kDefaultParticleColor};
+  MeshMaterial material;
+  material.k = 1.0;
+  // 3 × 3 × 3 vertices centred on the origin; only the centre is inside.
+  auto force =
+      append_mesh(scene, generate_tet_box(2, 2, 2, 1.0, 1.0, 1.0).mesh, material, {}, "box");
+  ASSERT_TRUE(force.has_value());
+  ASSERT_EQ(scene.appearance.interior_particles.size(), 1u);
+  const int centre = scene.appearance.interior_particles[0];
+  EXPECT_GE(centre, 1) << "numbered after particle 0";
+  EXPECT_EQ(scene.initial.q.segment<3>(3 * centre), Eigen::Vector3d::Zero());
+  EXPECT_EQ(scene.appearance.particle_color[0], Appearance::kDefaultParticleColor);
+  EXPECT_EQ(scene.appearance.particle_color[centre], Appearance::kDefaultMeshColor);
+  Scene cloth;
+  cloth.model.dim = 3;
+  ASSERT_TRUE(
+      append_mesh(cloth, generate_cloth(3, 3, 1.0, 1.0, true, false).mesh, material, {}, "cloth")
+          .has_value());
+  EXPECT_TRUE(cloth.appearance.interior_particles.empty());
+}
+
 TEST(AppendMesh, RefusesBadMeshesWithoutChangingTheScene) {
   MeshMaterial material;
   material.k = 1.0;

@@ -4,6 +4,9 @@
 
 #include <cmath>
 
+#include "render/tiny_scene.h"
+#include "render/tiny_scene_3d.h"
+
 namespace fosssim {
 namespace {
 
@@ -42,6 +45,35 @@ TEST(ZoomByDrag, DraggingDownZoomsOutAndUpZoomsBackIn) {
   EXPECT_NEAR(camera.scale, 1.0, 1e-15);
   zoom_by_drag(camera, 128.0, 10.0, 512, 512);  // mostly right: zooms in
   EXPECT_LT(camera.scale, 1.0);
+}
+
+TEST(ApplyViewCommand, MovesA2DViewExactlyAsTheCameraCommand) {
+  const Scene scene = testing::tiny_scene();
+  SceneView view(scene, scene.initial, 512, 512);
+  Camera expected = view.camera();
+  for (Command command : {Command::kZoomOut, Command::kPanLeft, Command::kPanUp}) {
+    EXPECT_TRUE(apply_view_command(command, view));
+    apply_camera_command(command, expected);
+  }
+  EXPECT_DOUBLE_EQ(view.camera().cx, expected.cx);
+  EXPECT_DOUBLE_EQ(view.camera().cy, expected.cy);
+  EXPECT_DOUBLE_EQ(view.camera().scale, expected.scale);
+  EXPECT_FALSE(apply_view_command(Command::kRecenter, view));
+}
+
+TEST(ApplyViewCommand, ZoomsAndPansA3DView) {
+  const Scene scene = testing::particles_at({{0, 0, 0}, {1, 1, 1}});
+  SceneView view(scene, scene.initial, 512, 512);
+  const OrbitCamera start = view.orbit_camera();
+  EXPECT_TRUE(apply_view_command(Command::kZoomIn, view));
+  EXPECT_DOUBLE_EQ(view.orbit_camera().distance, start.distance / kZoomStep);
+  // Panning left by a tenth of the half height moves the target to the left of the view: its
+  // pixel moves right by 25.6 pixels.
+  EXPECT_TRUE(apply_view_command(Command::kPanLeft, view));
+  const Point2 pixel = OrbitProjection(view.orbit_camera(), 512, 512).project(start.target).pixel;
+  EXPECT_NEAR(pixel.x, 256.0 + 25.6, 1e-9);
+  EXPECT_NEAR(pixel.y, 256.0, 1e-9);
+  EXPECT_FALSE(apply_view_command(Command::kTogglePause, view));
 }
 
 }  // namespace

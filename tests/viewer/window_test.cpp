@@ -12,6 +12,7 @@
 #include "io/trajectory_file.h"
 #include "pictures/cairo_painter.h"
 #include "render/tiny_scene.h"
+#include "render/tiny_scene_3d.h"
 #include "viewer/xvfb_server.h"
 
 namespace fosssim {
@@ -65,6 +66,26 @@ TEST_F(WindowTest, ShowsExactlyWhatTheHeadlessPicturesShow) {
   const Image shot = read_png(folder_ / "shot.png");
   const Image picture = read_png(folder_ / "pngs/frame_00017.png");
   EXPECT_EQ(shot.pixels, picture.pixels);
+  EXPECT_NE(shot.pixels, read_png(folder_ / "pngs/frame_00016.png").pixels);
+}
+
+TEST_F(WindowTest, ShowsA3DSceneExactlyAsTheHeadlessPictures) {
+  folder_.write("cloth.xml", testing::kTinyScene3D);
+  const auto window = fosssim(
+      "-s cloth.xml -o window.bin --window-screenshot shot.png --window-screenshot-step 17");
+  ASSERT_EQ(window.status, 0) << window.err;
+  const auto headless = fosssim("-s cloth.xml -d 0 -g 1 -o headless.bin");
+  ASSERT_EQ(headless.status, 0) << headless.err;
+  const Image shot = read_png(folder_ / "shot.png");
+  std::set<std::uint32_t> colors(shot.pixels.begin(), shot.pixels.end());
+  EXPECT_GT(colors.size(), 10u) << "the screenshot is blank";
+  EXPECT_EQ(shot.pixels, read_png(folder_ / "pngs/frame_00017.png").pixels);
+  // The window's run, with its idle drag spring, steps exactly as the headless one: its 18
+  // frames (kept as .incomplete, since the screenshot closed the window) are the same bytes.
+  const std::string kept = testing::read_text(folder_ / "window.bin.incomplete");
+  const std::string full = testing::read_text(folder_ / "headless.bin");
+  ASSERT_EQ(kept.size(), 18u * 2u * 36u * 3u * 8u);
+  EXPECT_EQ(kept, full.substr(0, kept.size()));
   EXPECT_NE(shot.pixels, read_png(folder_ / "pngs/frame_00016.png").pixels);
 }
 

@@ -25,6 +25,7 @@ std::optional<int> pick_particle(const Vector& q, int dim, const Ray& ray, doubl
   const Eigen::Vector3d u = ray.direction / length;
   std::optional<int> best;
   double best_t = std::numeric_limits<double>::infinity();
+  double best_off = best_t;
   const int n = static_cast<int>(q.size()) / dim;
   for (int p = 0; p < n; ++p) {
     Eigen::Vector3d x = Eigen::Vector3d::Zero();
@@ -32,8 +33,10 @@ std::optional<int> pick_particle(const Vector& q, int dim, const Ray& ray, doubl
     const Eigen::Vector3d w = x - ray.origin;
     const double t = w.dot(u);
     if (t < 0.0) continue;
-    if ((w - t * u).norm() <= radius && t < best_t) {
+    const double off = (w - t * u).norm();
+    if (off <= radius && (t < best_t || (t == best_t && off < best_off))) {
       best_t = t;
+      best_off = off;
       best = p;
     }
   }

@@ -26,7 +26,8 @@ DragSpringForce& add_drag_spring(SceneModel& model);
 DragSpringForce* find_drag_spring(const SceneModel& model);
 
 /// The particle to grab under a ray: among particles whose distance to the ray is at most
-/// `radius` (world units), the one nearest the ray's origin along it. Positions q are
+/// `radius` (world units), the one nearest the ray's origin along it; of those equally near
+/// (all of them in a 2D scene seen from above), the one nearest the ray. Positions q are
 /// interleaved in dimension dim (2D particles lie in the plane z = 0). nullopt when none.
 std::optional<int> pick_particle(const Vector& q, int dim, const Ray& ray, double radius);
 

@@ -1,0 +1,50 @@
+#pragma once
+// What to draw of a 3D scene: shaded surfaces, edges, particles and trails, seen through an
+// orbit camera and sorted by depth (the painter's algorithm).
+
+#include <vector>
+
+#include "core/scene.h"
+#include "core/state.h"
+#include "render/drawing.h"
+#include "render/orbit_camera.h"
+#include "render/path_history.h"
+
+namespace fosssim {
+
+/// Surfaces whose triangles' projected sides are on average at least this many pixels long are
+/// outlined (coarse meshes show their triangles; dense ones are shaded only).
+inline constexpr double kOutlineMinPixels = 10.0;
+/// Fixed particles are drawn at least this large and ringed in the pin colour; fixed particles
+/// on a surface as dots of the pin colour, half their radius. The pin colour is the text's:
+/// black or white, whichever reads on the background (text_color_for).
+inline constexpr double kPinMinPixels = 3.0;
+
+/// Which parts of a 3D scene are drawn besides its surfaces (Appearance::triangles). A surface
+/// stands for its mesh: the particles on it or inside it (Appearance::interior_particles) and
+/// the edges between them are not drawn; the fixed ones on it are marked as pins.
+struct SceneParts3D {
+  std::vector<int> particles;  ///< drawn as discs: on no surface and inside none
+  std::vector<int> pins;       ///< fixed particles on a surface: drawn as dots
+  std::vector<int> edges;      ///< drawn as capsules: with an end on no surface and inside none
+};
+
+/// Works out SceneParts3D once for a scene (its topology does not change while it runs).
+SceneParts3D compute_scene_parts_3d(const Scene& scene);
+
+/// The drawing of `state` of a 3D scene seen through `camera` on a width × height picture,
+/// every shape sorted farthest first by the depth of its point nearest the eye:
+/// - each surface triangle filled with the mean colour of its corners' particles, shaded by
+///   shade_triangle under camera_lighting, outlined in a darker colour when the surface is coarse
+///   (kOutlineMinPixels);
+/// - `parts.edges` as capsules and `parts.particles` as discs, their radii scaled by the
+///   perspective at their depth; fixed particles at least kPinMinPixels and ringed in the pin
+///   colour; `parts.pins` as dots;
+/// - the trails as thin segments.
+/// Shapes with a corner behind the near plane are left out. The overlay's marks ring their
+/// particles and its drag guide is drawn over everything, as in 2D.
+Drawing compose_drawing_3d(const Scene& scene, const SceneParts3D& parts, const State& state,
+                           const PathHistory& paths, const OrbitCamera& camera, int width,
+                           int height, const Overlay& overlay = {});
+
+}  // namespace fosssim

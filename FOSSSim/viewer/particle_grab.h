@@ -1,0 +1,59 @@
+#pragma once
+// Picking a particle with the mouse and pulling it with the model's drag spring: the window's
+// ctrl + left drag, without window code.
+
+#include <Eigen/Core>
+#include <optional>
+
+#include "core/forces/drag_spring_force.h"
+#include "core/scene.h"
+#include "core/state.h"
+#include "render/drawing.h"
+#include "render/scene_view.h"
+
+namespace fosssim {
+
+/// A particle is picked when the cursor's ray passes within this many pixels of its centre (or
+/// within its radius, if that is larger).
+inline constexpr double kPickPixels = 8.0;
+
+/// The drag spring's stiffness for `particle`, N/m: k = M / h², with M the particle's mass for
+/// explicit and symplectic Euler (suggest_drag_stiffness: stable, h²k/m = 1) and the total mass
+/// of the free particles for the implicit integrators, which are stable at any stiffness: one
+/// implicit step then takes a whole body half way to the cursor, as it would a lone particle.
+double drag_stiffness(const SceneModel& model, int particle);
+
+/// Grabs the particle under the cursor and pulls it with `spring` (a zero-rest-length spring,
+/// core/forces/drag_spring_force.h) toward the point under the cursor on the drag plane: the
+/// plane through the particle, where it was grabbed, facing the camera (in 2D the plane z = 0).
+/// The pull starts at the particle itself and keeps the offset between the cursor and the
+/// particle, so grabbing does not jerk it. The simulation sees each change at its next step.
+class ParticleGrab {
+ public:
+  /// scene: the running scene, whose model holds `spring` (add_drag_spring); both outlive this.
+  ParticleGrab(const Scene& scene, DragSpringForce& spring);
+
+  /// Picks the particle under pixel (px, py) of `view`, which shows `state`
+  /// (pick_particle: the nearest along the ray within the pick distance) and grabs it with
+  /// drag_stiffness. Fixed particles cannot be pulled: picking one grabs nothing. Returns true
+  /// when a particle was grabbed.
+  bool press(const SceneView& view, const State& state, double px, double py);
+  /// Pulls toward the point under (px, py) on the drag plane (unchanged when the ray misses it).
+  void move(const SceneView& view, double px, double py);
+  /// Lets go.
+  void release() { spring_.release(); }
+
+  bool active() const { return spring_.active(); }
+  /// The line to draw while a particle is pulled.
+  std::optional<DragGuide> guide() const;
+
+ private:
+  const SceneModel& model_;
+  DragSpringForce& spring_;
+  double largest_radius_ = 0.0;  ///< of the scene's particles, world units
+  Eigen::Vector3d plane_point_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d plane_normal_ = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d offset_ = Eigen::Vector3d::Zero();  ///< particle minus the cursor's point
+};
+
+}  // namespace fosssim

@@ -1,0 +1,206 @@
+#include "render/drawing_3d.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "io/scene_loader.h"
+#include "render/scene_view.h"
+#include "render/shading.h"
+#include "render/tiny_scene_3d.h"
+
+namespace fosssim {
+namespace {
+
+using testing::add_edge;
+using testing::front_camera;
+using testing::particles_at;
+
+Drawing draw(const Scene& scene, const OrbitCamera& camera, const Overlay& overlay = {}) {
+  return compose_drawing_3d(scene, compute_scene_parts_3d(scene), scene.initial, PathHistory(scene),
+                            camera, 512, 512, overlay);
+}
+
+TEST(ComposeDrawing3D, SortsShapesFarthestFirstAndScalesThemByDepth) {
+  // Listed near, far, middle: drawn far, middle, near.
+  const Scene scene = particles_at({{0.5, 0, 1}, {-0.5, 0, -1}, {0, 0.5, 0}});
+  const Drawing d = draw(scene, front_camera());
+  ASSERT_EQ(d.shapes.size(), 3u);
+  const Disc& far = std::get<Disc>(d.shapes[0]);
+  const Disc& middle = std::get<Disc>(d.shapes[1]);
+  const Disc& near = std::get<Disc>(d.shapes[2]);
+  EXPECT_NEAR(far.center.x, 256.0 - 0.5 * 256.0 / 6.0, 1e-9);
+  EXPECT_NEAR(middle.center.y, 256.0 - 0.5 * 256.0 / 5.0, 1e-9);
+  EXPECT_NEAR(near.center.x, 256.0 + 0.5 * 256.0 / 4.0, 1e-9);
+  EXPECT_NEAR(far.radius, 0.05 * 256.0 / 6.0, 1e-9);
+  EXPECT_NEAR(near.radius, 0.05 * 256.0 / 4.0, 1e-9);
+  EXPECT_TRUE(d.edges.empty());
+  EXPECT_TRUE(d.particles.empty());
+  EXPECT_TRUE(d.paths.empty());
+}
+
+TEST(ComposeDrawing3D, ShadesTrianglesAndSortsThemByTheirCentres) {
+  Scene scene = particles_at({{0, 0, -1},
+                              {1, 0, -1},
+                              {0, 1, -1},  // far, facing the eye
+                              {0, 0, 1},
+                              {1, 0, 1},
+                              {0, 1, 1}});  // near
+  scene.appearance.triangles = {{3, 4, 5}, {0, 1, 2}};
+  scene.appearance.particle_color.assign(6, Color{0.2, 0.4, 0.6});
+  const Drawing d = draw(scene, front_camera());
+  ASSERT_EQ(d.shapes.size(), 2u) << "surface particles are not drawn";
+  const Triangle& far = std::get<Triangle>(d.shapes[0]);
+  const Triangle& near = std::get<Triangle>(d.shapes[1]);
+  EXPECT_NEAR(far.corners[1].x, 256.0 + 256.0 / 6.0, 1e-9);
+  EXPECT_NEAR(near.corners[1].x, 256.0 + 256.0 / 4.0, 1e-9);
+  const OrbitProjection view(front_camera(), 512, 512);
+  const Lighting light = camera_lighting(view.right(), view.up(), view.forward());
+  const Eigen::Vector3d a(0, 0, 1), b(1, 0, 1), c(0, 1, 1);
+  const Color expected =
+      shade_triangle({0.2, 0.4, 0.6}, a, b, c, (a + b + c) / 3.0 - view.eye(), light);
+  EXPECT_NEAR(near.color.r, expected.r, 1e-12);
+  EXPECT_NEAR(near.color.g, expected.g, 1e-12);
+  EXPECT_NEAR(near.color.b, expected.b, 1e-12);
+  // Sides of 43 to 85 pixels: a coarse surface, outlined in a darker colour.
+  EXPECT_GT(near.outline_width, 0.0);
+  EXPECT_LT(near.outline_color.b, near.color.b);
+}
+
+TEST(ComposeDrawing3D, OutlinesOnlyCoarseSurfaces) {
+  Scene scene = particles_at({{0, 0, 0}, {0.01, 0, 0}, {0, 0.01, 0}});
+  scene.appearance.triangles = {{0, 1, 2}};
+  const Drawing d = draw(scene, front_camera());
+  ASSERT_EQ(d.shapes.size(), 1u);
+  EXPECT_EQ(std::get<Triangle>(d.shapes[0]).outline_width, 0.0);
+}
+
+TEST(ComposeDrawing3D, LeavesOutShapesBehindTheEye) {
+  Scene scene = particles_at({{0, 0, 0}, {0, 0, 7}, {1, 0, 7}, {0, 1, 7}});
+  scene.appearance.triangles = {{1, 2, 3}};
+  add_edge(scene, 0, 1);
+  const Drawing d = draw(scene, front_camera());
+  ASSERT_EQ(d.shapes.size(), 1u);
+  EXPECT_TRUE(std::holds_alternative<Disc>(d.shapes[0]));
+}
+
+TEST(SceneParts3D, SurfacesStandForTheirMeshesAndPinsAreMarked) {
+  auto scene = load_scene_text(R"(<scene dim="3">
+    <duration time="1"/><integrator type="local-global" dt="0.01"/>
+    <particle m="1" px="0" py="3" pz="0" vx="0" vy="0" vz="0" fixed="1"/>
+    <particle m="1" px="0" py="2" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
+    <edge i="0" j="1"/>
+    <generate type="tetbox" nx="2" ny="2" nz="2" pin="bottom" k="10" m="0.1"/>
+  </scene>)",
+                               "parts.xml");
+  ASSERT_TRUE(scene.has_value()) << scene.error().what();
+  add_edge(*scene, 1, 2);  // from a loose particle to the box's first vertex
+  ASSERT_EQ(scene->appearance.interior_particles.size(), 1u);  // the box's centre
+  const SceneParts3D parts = compute_scene_parts_3d(*scene);
+  EXPECT_EQ(parts.particles, (std::vector<int>{0, 1}));
+  // The box's bottom vertices (9 of its 27) are pinned and all on its surface.
+  ASSERT_EQ(parts.pins.size(), 9u);
+  for (int p : parts.pins) EXPECT_TRUE(scene->model.fixed[p]);
+  // Edges: 0-1 and 1-2 (to a surface vertex) are drawn; the box's springs are not.
+  ASSERT_EQ(parts.edges.size(), 2u);
+  for (int e : parts.edges) {
+    const Edge& edge = scene->model.edges[e];
+    EXPECT_TRUE(edge.i <= 1 || edge.j <= 1);
+  }
+}
+
+TEST(ComposeDrawing3D, RingsFixedParticlesAndDrawsPinsAsDots) {
+  Scene scene = particles_at({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, -1, 0}});
+  scene.appearance.triangles = {{0, 1, 2}};
+  scene.model.fixed = {true, false, false, true};
+  scene.appearance.particle_radius[3] = 1e-4;  // tiny: drawn at kPinMinPixels
+  const Drawing d = draw(scene, front_camera());
+  int rings = 0, dots = 0;
+  for (const Shape& shape : d.shapes) {
+    if (const auto* ring = std::get_if<Ring>(&shape)) {
+      ++rings;
+      EXPECT_EQ(ring->color, d.text_color);
+      EXPECT_DOUBLE_EQ(ring->radius, kPinMinPixels);
+    }
+    if (const auto* disc = std::get_if<Disc>(&shape); disc && disc->color == d.text_color) ++dots;
+  }
+  EXPECT_EQ(d.text_color, (Color{0, 0, 0}));  // on white
+  EXPECT_EQ(rings, 1);                        // the loose fixed particle 3
+  EXPECT_EQ(dots, 1);                         // the pin on the surface, particle 0
+}
+
+TEST(ComposeDrawing3D, AddsMarksTheDragGuideAndTheTime) {
+  Scene scene = particles_at({{1, 0, 0}});
+  Overlay overlay;
+  overlay.marks = {{0, Color{1, 0, 0}}};
+  overlay.drag = DragGuide{0, Eigen::Vector3d(0, 1, 0)};
+  overlay.status = {"paused"};
+  const Drawing d = draw(scene, front_camera(), overlay);
+  ASSERT_EQ(d.marks.size(), 2u);  // the mark and the guide's ring
+  EXPECT_NEAR(d.marks[0].center.x, 256.0 + 256.0 / 5.0, 1e-9);
+  EXPECT_NEAR(d.marks[0].radius, 0.05 * 256.0 / 5.0 + kMarkGap, 1e-9);
+  ASSERT_EQ(d.guides.size(), 1u);
+  ASSERT_EQ(d.guides[0].points.size(), 2u);
+  EXPECT_NEAR(d.guides[0].points[1].y, 256.0 - 256.0 / 5.0, 1e-9);
+  EXPECT_EQ(d.text, (std::vector<std::string>{"t = 0.00", "paused"}));
+}
+
+TEST(ComposeDrawing3D, DrawsTrailsAsSegmentsAmongTheShapes) {
+  Scene scene = particles_at({{0, 0, 0}});
+  scene.appearance.paths = {{0, 1.0, Color{1, 1, 0}}};
+  PathHistory paths(scene);
+  State state = scene.initial;
+  for (int k = 0; k < 3; ++k) {
+    state.q[2] = -1.0 * k;  // moving away
+    paths.record(state.q, 3);
+  }
+  const Drawing d = compose_drawing_3d(scene, compute_scene_parts_3d(scene), scene.initial, paths,
+                                       front_camera(), 512, 512);
+  ASSERT_EQ(d.shapes.size(), 3u);
+  EXPECT_TRUE(std::holds_alternative<Capsule>(d.shapes[0]));  // z from -2 to -1: farthest
+  EXPECT_TRUE(std::holds_alternative<Capsule>(d.shapes[1]));
+  EXPECT_TRUE(std::holds_alternative<Disc>(d.shapes[2]));
+}
+
+TEST(SceneView, UsesTheOrbitCameraForThreeDimensionalScenes) {
+  Scene scene = particles_at({{0, 0, 0}, {2, 1, -1}});
+  SceneView view(scene, scene.initial, 512, 512);
+  ASSERT_TRUE(view.is_3d());
+  EXPECT_EQ(view.compose(scene.initial).shapes.size(), 2u);
+  State moved = scene.initial;
+  moved.q.segment<3>(3) = Eigen::Vector3d(4, 1, -1);
+  view.recenter(moved);
+  EXPECT_TRUE(view.orbit_camera().target.isApprox(Eigen::Vector3d(2.0, 0.5, -0.5)));
+  // The ray through the target's pixel runs along the view direction.
+  const Ray ray = view.ray_through(256.0, 256.0);
+  EXPECT_TRUE(ray.direction.normalized().isApprox(view.view_direction()));
+  const double before = view.orbit_camera().distance;
+  view.zoom(2.0);
+  EXPECT_DOUBLE_EQ(view.orbit_camera().distance, 2.0 * before);
+  const double yaw = view.orbit_camera().yaw;
+  view.orbit(10.0, 0.0);
+  EXPECT_LT(view.orbit_camera().yaw, yaw);
+}
+
+TEST(SceneView, KeepsTheTwoDimensionalCameraFor2DScenes) {
+  auto scene = load_scene_text(R"(<scene>
+    <duration time="1"/><integrator type="explicit-euler" dt="0.01"/>
+    <particle m="1" px="0" py="0" vx="0" vy="0" fixed="0"/>
+    <viewport cx="0" cy="0" size="1"/></scene>)",
+                               "flat.xml");
+  ASSERT_TRUE(scene.has_value());
+  SceneView view(*scene, scene->initial, 512, 512);
+  EXPECT_FALSE(view.is_3d());
+  EXPECT_TRUE(view.compose(scene->initial).shapes.empty());
+  const Ray ray = view.ray_through(384.0, 128.0);  // world (0.5, 0.5)
+  EXPECT_EQ(ray.origin, Eigen::Vector3d(0.5, 0.5, 1.0));
+  EXPECT_EQ(ray.direction, -Eigen::Vector3d::UnitZ());
+  EXPECT_DOUBLE_EQ(view.units_per_pixel_at(Eigen::Vector3d::Zero()), 1.0 / 256.0);
+  view.pan(256.0, 0.0);
+  EXPECT_DOUBLE_EQ(view.camera().cx, -1.0);
+  view.orbit(100.0, 100.0);  // nothing in 2D
+  EXPECT_DOUBLE_EQ(view.camera().cx, -1.0);
+}
+
+}  // namespace
+}  // namespace fosssim
