@@ -140,7 +140,7 @@ void add_options(CLI::App& app, Options& options) {
       "FOSSSim: a physically based particle and mass-spring simulator.\n"
       "Runs a scene in the course's XML format, writes its trajectory (-o), or grades a\n"
       "trajectory against the scene's integrator with the course's criteria (-i).");
-  app.add_option("-s,--scene", options.scene, "Scene file (XML) to load")->required();
+  app.add_option("-s,--scene", options.scene, "Scene file: the course's XML, or the fast mass-springs JSON format")->required();
   app.add_option("-d,--display", options.display,
                  "1: open the interactive window; 0: run headless to the scene's end")
       ->check(CLI::IsMember({0, 1}))

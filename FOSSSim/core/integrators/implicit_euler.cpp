@@ -58,12 +58,13 @@ ImplicitEuler::NewtonResult ImplicitEuler::solve(const SceneModel& model, const 
     }
     if (!line_search) {
       dv += *delta;
+      rhs = residual(model, state, dv);
     } else if (minimize) {
       dv += descent_step(model, state, dv, rhs, *delta);
+      rhs = residual(model, state, dv);
     } else {
-      dv += residual_step(model, state, dv, rhs, *delta);
+      dv += residual_step(model, state, dv, rhs, *delta);  // updates rhs
     }
-    rhs = residual(model, state, dv);
   }
   return result;
 }
@@ -91,15 +92,16 @@ Vector ImplicitEuler::descent_step(const SceneModel& model, const State& state, 
 }
 
 Vector ImplicitEuler::residual_step(const SceneModel& model, const State& state, const Vector& dv,
-                                    const Vector& rhs, const Vector& newton_step) const {
+                                    Vector& rhs, const Vector& newton_step) const {
   // The Newton step is a descent direction for ½‖rhs‖², whose slope along it is -‖rhs‖².
   const double merit = rhs.squaredNorm();
   double alpha = 1.0;
-  while (residual(model, state, dv + alpha * newton_step).squaredNorm() >
-             (1.0 - 2.0 * kArmijo * alpha) * merit &&
-         alpha > kSmallestStep) {
+  Vector trial = residual(model, state, dv + newton_step);
+  while (trial.squaredNorm() > (1.0 - 2.0 * kArmijo * alpha) * merit && alpha > kSmallestStep) {
     alpha *= 0.5;
+    trial = residual(model, state, dv + alpha * newton_step);
   }
+  rhs = std::move(trial);
   return alpha * newton_step;
 }
 

@@ -54,9 +54,10 @@ class ImplicitEuler final : public Integrator {
   /// A step that decreases Φ enough (Armijo), along the Newton step or, failing descent, M⁻¹rhs.
   Vector descent_step(const SceneModel& model, const State& state, const Vector& dv,
                       const Vector& rhs, const Vector& newton_step) const;
-  /// A fraction of the Newton step that decreases ‖rhs‖² enough (Armijo).
+  /// A fraction of the Newton step that decreases ‖rhs‖² enough (Armijo); rhs becomes the
+  /// residual at dv plus that step.
   Vector residual_step(const SceneModel& model, const State& state, const Vector& dv,
-                       const Vector& rhs, const Vector& newton_step) const;
+                       Vector& rhs, const Vector& newton_step) const;
 
   StepSolver solver_;
   HessianBuilder scratch_;
