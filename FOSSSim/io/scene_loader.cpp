@@ -3,12 +3,9 @@
 #include <tinyxml2.h>
 
 #include <array>
-#include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <vector>
 
 #include "core/force_registry.h"
@@ -16,6 +13,7 @@
 #include "io/integrator_options.h"
 #include "io/json_scene_reader.h"
 #include "io/mesh_elements.h"
+#include "io/text_lines.h"
 
 namespace fosssim {
 
@@ -358,17 +356,9 @@ Expected<Scene, SceneError> load_scene_text(std::string_view text, const std::st
 
 Expected<Scene, SceneError> load_scene_file(const std::string& path) {
   if (std::filesystem::path(path).extension() == ".json") return load_json_scene_file(path);
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored)) {
-    return SceneError(path, 0, "", "is a directory, not a scene file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    return SceneError(path, 0, "", std::string("cannot open the file: ") + std::strerror(errno));
-  std::ostringstream content;
-  content << in.rdbuf();
-  if (in.bad()) return SceneError(path, 0, "", "cannot read the file");
-  return load_scene_text(content.str(), path);
+  auto text = read_text_file(path);
+  if (!text) return text.error();
+  return load_scene_text(*text, path);
 }
 
 }  // namespace fosssim

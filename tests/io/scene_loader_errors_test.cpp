@@ -179,7 +179,7 @@ TEST(SceneLoaderErrors, MissingFileAndDirectory) {
                "/nonexistent/scene.xml: error: cannot open the file: No such file or directory");
   const auto directory = load_scene_file(std::filesystem::temp_directory_path().string());
   ASSERT_FALSE(directory);
-  EXPECT_EQ(directory.error().problem(), "is a directory, not a scene file");
+  EXPECT_EQ(directory.error().problem(), "is a directory, not a file");
 }
 
 TEST(SceneLoaderErrors, EmptyFileOnDisk) {
