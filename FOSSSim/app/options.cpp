@@ -36,7 +36,8 @@ void add_picture_options(CLI::App& app, Options& options) {
   app.add_option("--fps", options.fps, "Movie frames per second")
       ->capture_default_str()
       ->group(group);
-  app.add_option("--size", options.size, "Width x height in pixels of the window, pictures and movie")
+  app.add_option("--size", options.size,
+                 "Width x height in pixels of the window, pictures and movie")
       ->capture_default_str()
       ->group(group);
   app.add_option("--view", options.view,
@@ -69,7 +70,8 @@ std::optional<std::string> parse_size(const std::string& text, int& width, int& 
   if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
       w < 16 || h < 16 || w > 8192 || h > 8192) {
     return "--size must be WIDTHxHEIGHT with each between 16 and 8192 pixels (512x512, say), "
-           "found '" + text + "'";
+           "found '" +
+           text + "'";
   }
   width = w;
   height = h;
@@ -140,7 +142,9 @@ void add_options(CLI::App& app, Options& options) {
       "FOSSSim: a physically based particle and mass-spring simulator.\n"
       "Runs a scene in the course's XML format, writes its trajectory (-o), or grades a\n"
       "trajectory against the scene's integrator with the course's criteria (-i).");
-  app.add_option("-s,--scene", options.scene, "Scene file: the course's XML, or the fast mass-springs JSON format")->required();
+  app.add_option("-s,--scene", options.scene,
+                 "Scene file: the course's XML, or the fast mass-springs JSON format")
+      ->required();
   app.add_option("-d,--display", options.display,
                  "1: open the interactive window; 0: run headless to the scene's end")
       ->check(CLI::IsMember({0, 1}))
@@ -160,8 +164,9 @@ void add_options(CLI::App& app, Options& options) {
   input->excludes(output);
   app.add_option("--duration", options.duration, "Override the scene's duration (seconds, >= 0)");
   app.add_option("--dt", options.dt, "Override the scene's time step (seconds, > 0)");
-  app.add_option("--newton-max-iterations", options.newton_max_iterations,
-                 "Implicit Euler: give up on a step after this many Newton iterations (default 200)");
+  app.add_option(
+      "--newton-max-iterations", options.newton_max_iterations,
+      "Implicit Euler: give up on a step after this many Newton iterations (default 200)");
   app.add_option("--newton-tolerance", options.newton_tolerance,
                  "Implicit Euler: stop when the Newton correction's L2 norm is below this "
                  "(default 1e-9, the course's value)");

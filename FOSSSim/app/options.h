@@ -1,11 +1,10 @@
 #pragma once
 // The FOSSSim command line: the course's flags plus our own.
 
+#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <optional>
 #include <string>
-
-#include <CLI/CLI.hpp>
 
 #include "core/expected.h"
 #include "core/scene.h"
@@ -14,11 +13,11 @@
 namespace fosssim {
 
 struct Options {
-  std::string scene;        ///< -s
-  int display = 1;          ///< -d 0|1
-  int paused = 1;           ///< -p 0|1
-  std::string output;       ///< -o trajectory to write
-  std::string input;        ///< -i trajectory to grade
+  std::string scene;               ///< -s
+  int display = 1;                 ///< -d 0|1
+  int paused = 1;                  ///< -p 0|1
+  std::string output;              ///< -o trajectory to write
+  std::string input;               ///< -i trajectory to grade
   std::optional<double> duration;  ///< --duration override, seconds
   std::optional<double> dt;        ///< --dt override, seconds
   std::optional<int> newton_max_iterations;
@@ -28,21 +27,21 @@ struct Options {
   bool quiet = false;
 
   // Pictures (docs/viewing.md).
-  int png = 0;                    ///< -g 0|1: one PNG per state into png_directory
+  int png = 0;  ///< -g 0|1: one PNG per state into png_directory
   std::string png_directory = "pngs";
-  std::string svg_directory;      ///< -m DIR: one SVG per state
-  std::string movie;              ///< --movie FILE.mp4 (headless)
+  std::string svg_directory;        ///< -m DIR: one SVG per state
+  std::string movie;                ///< --movie FILE.mp4 (headless)
   std::optional<int> movie_stride;  ///< every how many steps a movie frame; default ~real time
-  double fps = 30.0;              ///< movie frames per second
-  std::string size = "512x512";   ///< --size WxH of the window, pictures and movie
-  int width = 512, height = 512;  ///< parsed from size by check_picture_options
-  std::string energy_plot;        ///< --energy-plot FILE.png|FILE.svg
-  std::string energy_csv;         ///< --energy-csv FILE.csv
-  std::string view;               ///< --view YAW,PITCH[,DISTANCE] of 3D scenes
-  bool orthographic = false;      ///< --orthographic: parallel projection of 3D scenes
-  std::string window_screenshot;  ///< test aid: PNG of the window at window_screenshot_step
+  double fps = 30.0;                ///< movie frames per second
+  std::string size = "512x512";     ///< --size WxH of the window, pictures and movie
+  int width = 512, height = 512;    ///< parsed from size by check_picture_options
+  std::string energy_plot;          ///< --energy-plot FILE.png|FILE.svg
+  std::string energy_csv;           ///< --energy-csv FILE.csv
+  std::string view;                 ///< --view YAW,PITCH[,DISTANCE] of 3D scenes
+  bool orthographic = false;        ///< --orthographic: parallel projection of 3D scenes
+  std::string window_screenshot;    ///< test aid: PNG of the window at window_screenshot_step
   std::int64_t window_screenshot_step = 0;
-  bool display_given = false;     ///< -d appeared on the command line
+  bool display_given = false;  ///< -d appeared on the command line
 };
 
 /// Declares every option on `app`, writing into `options`.

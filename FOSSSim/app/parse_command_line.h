@@ -1,11 +1,10 @@
 #pragma once
 // The one way FOSSSim's programs parse their command lines and report usage errors.
 
+#include <CLI/CLI.hpp>
 #include <iostream>
 #include <optional>
 #include <string>
-
-#include <CLI/CLI.hpp>
 
 #include "app/exit_codes.h"
 

@@ -45,8 +45,8 @@ void ProgressBar::draw(std::int64_t done) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double remaining = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
   std::fprintf(stderr, "\r%s [%s] %3.0f%%  %lld/%lld  %.1fs elapsed, %.1fs left ", label_.c_str(),
-               bar, 100.0 * fraction, static_cast<long long>(done),
-               static_cast<long long>(total_), elapsed, remaining);
+               bar, 100.0 * fraction, static_cast<long long>(done), static_cast<long long>(total_),
+               elapsed, remaining);
   std::fflush(stderr);
   drawn_ = true;
 }

@@ -15,8 +15,9 @@ int run_grading(const Scene& scene, const Options& options) {
     return kExitBadInput;
   }
   ProgressBar progress("grading", scene.model.num_steps(), !options.quiet && stderr_is_terminal());
-  auto report = grade_trajectory(scene, *file, GradingCriteria{},
-                                 [&progress](std::int64_t done, std::int64_t) { progress.update(done); });
+  auto report =
+      grade_trajectory(scene, *file, GradingCriteria{},
+                       [&progress](std::int64_t done, std::int64_t) { progress.update(done); });
   progress.finish();
   if (!report) {
     std::cerr << "FOSSSim: error: " << options.input << ": " << report.error() << "\n";

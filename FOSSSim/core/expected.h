@@ -16,14 +16,26 @@ class Expected {
   bool has_value() const { return content_.index() == 0; }
   explicit operator bool() const { return has_value(); }
 
-  T& value() & { assert(has_value()); return std::get<0>(content_); }
-  const T& value() const& { assert(has_value()); return std::get<0>(content_); }
-  T&& value() && { assert(has_value()); return std::get<0>(std::move(content_)); }
+  T& value() & {
+    assert(has_value());
+    return std::get<0>(content_);
+  }
+  const T& value() const& {
+    assert(has_value());
+    return std::get<0>(content_);
+  }
+  T&& value() && {
+    assert(has_value());
+    return std::get<0>(std::move(content_));
+  }
   T* operator->() { return &value(); }
   const T* operator->() const { return &value(); }
   T& operator*() & { return value(); }
 
-  const E& error() const { assert(!has_value()); return std::get<1>(content_); }
+  const E& error() const {
+    assert(!has_value());
+    return std::get<1>(content_);
+  }
 
  private:
   std::variant<T, E> content_;

@@ -42,8 +42,8 @@ class ForceParameters {
 
 /// What a force factory may consult when it validates its parameters.
 struct ForceContext {
-  const SceneModel& model;   ///< particles, edges and dimension declared so far
-  const Vector& positions;   ///< initial positions, to reject degenerate geometry
+  const SceneModel& model;  ///< particles, edges and dimension declared so far
+  const Vector& positions;  ///< initial positions, to reject degenerate geometry
 };
 
 /// Creates a force of dimension model.dim from its parameters.

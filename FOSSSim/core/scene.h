@@ -76,10 +76,10 @@ struct Scene {
   State initial;
   Appearance appearance;
   std::string description;
-  std::string tag;                          ///< scenetag, selects scripted behaviour
-  std::vector<std::string> particle_tags;   ///< per particle, empty when untagged
-  double max_sim_frequency = 100.0;         ///< window throttle, steps per wall second
-  std::vector<std::string> warnings;        ///< things that were accepted but look wrong
+  std::string tag;                         ///< scenetag, selects scripted behaviour
+  std::vector<std::string> particle_tags;  ///< per particle, empty when untagged
+  double max_sim_frequency = 100.0;        ///< window throttle, steps per wall second
+  std::vector<std::string> warnings;       ///< things that were accepted but look wrong
 };
 
 }  // namespace fosssim

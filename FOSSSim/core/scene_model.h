@@ -31,7 +31,7 @@ const char* integrator_name(IntegratorKind kind);
 
 /// Settings of Newton's method in implicit Euler.
 struct NewtonSettings {
-  double tolerance = 1e-9;  ///< stop when the L2 norm of a correction is below this (compat)
+  double tolerance = 1e-9;   ///< stop when the L2 norm of a correction is below this (compat)
   int max_iterations = 200;  ///< give up and report non-convergence after this many
 };
 
@@ -52,8 +52,8 @@ enum class LinearSolverChoice {
 struct LocalGlobalSettings {
   /// kAuto solves systems of at most this many free particles densely.
   static constexpr int kDenseLimit = 64;
-  int iterations = 10;       ///< local/global iterations per step (the most, with a tolerance)
-  double tolerance = 0.0;    ///< stop once no coordinate moved more than this (m); 0: never
+  int iterations = 10;     ///< local/global iterations per step (the most, with a tolerance)
+  double tolerance = 0.0;  ///< stop once no coordinate moved more than this (m); 0: never
   PinMethod pins = PinMethod::kElimination;
   double penalty_weight = 1e10;  ///< w of the penalty pins, N/m
   LinearSolverChoice solver = LinearSolverChoice::kAuto;
@@ -83,9 +83,9 @@ struct Edge {
 /// The fixed part of a scene: particles' masses and fixed flags, topology, forces in the compat
 /// summation order, and how to step. Positions and velocities live in State.
 struct SceneModel {
-  int dim = 2;                  ///< 2 or 3
-  Vector mass;                  ///< per degree of freedom: [m0, m0, m1, m1, ...], size dim*n
-  std::vector<bool> fixed;      ///< per particle; fixed particles receive no force
+  int dim = 2;              ///< 2 or 3
+  Vector mass;              ///< per degree of freedom: [m0, m0, m1, m1, ...], size dim*n
+  std::vector<bool> fixed;  ///< per particle; fixed particles receive no force
   std::vector<Edge> edges;
   std::vector<std::unique_ptr<Force>> forces;  ///< summed in this order
   IntegratorSettings integrator;
@@ -95,7 +95,8 @@ struct SceneModel {
   int num_dofs() const { return dim * num_particles(); }
   bool is_fixed_dof(int dof) const { return fixed[dof / dim]; }
   bool has_fixed_particles() const;
-  /// ceil(duration / dt) in double precision (4.0 / 0.01 gives 400), the number of steps a run takes.
+  /// ceil(duration / dt) in double precision (4.0 / 0.01 gives 400), the number of steps a run
+  /// takes.
   std::int64_t num_steps() const;
   /// True when every force's Jacobians are symmetric, so the step matrix is symmetric.
   bool has_symmetric_jacobians() const;

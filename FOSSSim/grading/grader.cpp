@@ -21,10 +21,11 @@ struct Criterion {
 };
 
 std::vector<Criterion> criteria_of(const GradeReport& r) {
-  return {{"Accumulated Position Residual", r.accumulated_position, r.accumulated_position_passed()},
-          {"Accumulated Velocity Residual", r.accumulated_velocity, r.accumulated_velocity_passed()},
-          {"Maximum Position Residual", r.max_position, r.max_position_passed()},
-          {"Maximum Velocity Residual", r.max_velocity, r.max_velocity_passed()}};
+  return {
+      {"Accumulated Position Residual", r.accumulated_position, r.accumulated_position_passed()},
+      {"Accumulated Velocity Residual", r.accumulated_velocity, r.accumulated_velocity_passed()},
+      {"Maximum Position Residual", r.max_position, r.max_position_passed()},
+      {"Maximum Velocity Residual", r.max_velocity, r.max_velocity_passed()}};
 }
 
 }  // namespace
@@ -35,8 +36,12 @@ bool GradeReport::accumulated_position_passed() const {
 bool GradeReport::accumulated_velocity_passed() const {
   return below(accumulated_velocity, criteria.accumulated_limit);
 }
-bool GradeReport::max_position_passed() const { return below(max_position, criteria.maximum_limit); }
-bool GradeReport::max_velocity_passed() const { return below(max_velocity, criteria.maximum_limit); }
+bool GradeReport::max_position_passed() const {
+  return below(max_position, criteria.maximum_limit);
+}
+bool GradeReport::max_velocity_passed() const {
+  return below(max_velocity, criteria.maximum_limit);
+}
 bool GradeReport::passed() const {
   return !reference_failure && accumulated_position_passed() && accumulated_velocity_passed() &&
          max_position_passed() && max_velocity_passed();
@@ -90,9 +95,9 @@ std::string describe_failure(const GradeReport& report, int dim) {
   };
   if (report.reference_failure) out << *report.reference_failure << "\n";
   if (const auto& d = report.first_divergence) {
-    out << "First divergence at step " << d->step << ", particle "
-        << d->particle << ": position residual " << d->position_residual
-        << ", velocity residual " << d->velocity_residual << "\n"
+    out << "First divergence at step " << d->step << ", particle " << d->particle
+        << ": position residual " << d->position_residual << ", velocity residual "
+        << d->velocity_residual << "\n"
         << "  start (file frame " << d->step - 1 << "):  x = " << vec(d->previous_position)
         << "  v = " << vec(d->previous_velocity) << "\n"
         << "  reference step:          x = " << vec(d->reference_position)

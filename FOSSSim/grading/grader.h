@@ -51,7 +51,7 @@ struct GradeReport {
   double accumulated_velocity = 0.0;
   double max_position = 0.0;
   double max_velocity = 0.0;
-  std::vector<StepResidual> per_step;           ///< one entry per step, in order
+  std::vector<StepResidual> per_step;  ///< one entry per step, in order
   std::optional<FirstDivergence> first_divergence;
   /// Set when the reference integrator could not take a step from the file's state; the
   /// comparison stops there and the grade is a failure.

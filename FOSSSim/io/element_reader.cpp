@@ -117,9 +117,8 @@ int ElementReader::particle_index(const char* name) {
   const int value = integer(name);
   if (value < 0 || value >= num_particles_) {
     fail(name, "refers to particle " + std::to_string(value) + ", but the scene has " +
-                   std::to_string(num_particles_) + " particle" +
-                   (num_particles_ == 1 ? "" : "s") + " (valid indices are 0 to " +
-                   std::to_string(num_particles_ - 1) + ")");
+                   std::to_string(num_particles_) + " particle" + (num_particles_ == 1 ? "" : "s") +
+                   " (valid indices are 0 to " + std::to_string(num_particles_ - 1) + ")");
   }
   return value;
 }
@@ -127,11 +126,11 @@ int ElementReader::particle_index(const char* name) {
 int ElementReader::edge_index(const char* name) {
   const int value = integer(name);
   if (value < 0 || value >= num_edges_) {
-    fail(name, "refers to edge " + std::to_string(value) + ", but the scene has " +
-                   std::to_string(num_edges_) + " edge" + (num_edges_ == 1 ? "" : "s") +
-                   (num_edges_ > 0 ? " (valid indices are 0 to " +
-                                         std::to_string(num_edges_ - 1) + ")"
-                                   : ""));
+    fail(name,
+         "refers to edge " + std::to_string(value) + ", but the scene has " +
+             std::to_string(num_edges_) + " edge" + (num_edges_ == 1 ? "" : "s") +
+             (num_edges_ > 0 ? " (valid indices are 0 to " + std::to_string(num_edges_ - 1) + ")"
+                             : ""));
   }
   return value;
 }

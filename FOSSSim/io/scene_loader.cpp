@@ -136,9 +136,9 @@ class SceneParser {
                        std::string("the required element <") + name + "> is missing");
     }
     if (found.size() > 1) {
-      throw SceneError(file_, found[1]->GetLineNum(), std::string("<") + name + ">",
-                       "may appear only once (first at line " +
-                           std::to_string(found[0]->GetLineNum()) + ")");
+      throw SceneError(
+          file_, found[1]->GetLineNum(), std::string("<") + name + ">",
+          "may appear only once (first at line " + std::to_string(found[0]->GetLineNum()) + ")");
     }
     return found[0];
   }

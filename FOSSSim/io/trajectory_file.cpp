@@ -120,8 +120,7 @@ std::string TrajectoryWriter::abandon() {
 
 // ---- TrajectoryReader -------------------------------------------------------------------------
 
-TrajectoryReader::TrajectoryReader(std::string path, std::FILE* file, int dofs,
-                                   std::int64_t frames)
+TrajectoryReader::TrajectoryReader(std::string path, std::FILE* file, int dofs, std::int64_t frames)
     : path_(std::move(path)), file_(file), dofs_(dofs), num_frames_(frames) {}
 
 Expected<TrajectoryReader, std::string> TrajectoryReader::open(const std::string& path, int dofs) {

@@ -16,7 +16,6 @@
 #include <stdexcept>
 #include <vector>
 
-
 extern char** environ;
 
 namespace fosssim {

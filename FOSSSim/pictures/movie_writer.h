@@ -22,8 +22,8 @@ struct MovieSettings {
 
 /// Writes an MP4 movie (H.264, yuv420p, faststart) by running `ffmpeg` and piping it raw BGRA
 /// frames. The movie is written to "<path>.partial" and renamed to `path` by commit() (see
-/// io/output_file.h), so a failed or interrupted run never leaves a file that looks complete. ffmpeg runs in its own
-/// process group, so Ctrl-C reaches FOSSSim, which then stops it cleanly.
+/// io/output_file.h), so a failed or interrupted run never leaves a file that looks complete.
+/// ffmpeg runs in its own process group, so Ctrl-C reaches FOSSSim, which then stops it cleanly.
 class MovieWriter {
  public:
   /// Checks the settings and the file name (must end in .mp4), finds ffmpeg on PATH and starts

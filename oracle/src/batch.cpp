@@ -9,12 +9,14 @@
 
 namespace fosssim {
 
-void for_each_in_parallel(std::size_t count, int jobs, const std::function<void(std::size_t)>& work) {
+void for_each_in_parallel(std::size_t count, int jobs,
+                          const std::function<void(std::size_t)>& work) {
   std::atomic<std::size_t> next{0};
   const auto worker = [&]() {
     for (std::size_t i = next++; i < count; i = next++) work(i);
   };
-  const std::size_t threads = std::min<std::size_t>(std::max(jobs, 1), std::max<std::size_t>(count, 1));
+  const std::size_t threads =
+      std::min<std::size_t>(std::max(jobs, 1), std::max<std::size_t>(count, 1));
   std::vector<std::thread> pool;
   for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
   worker();

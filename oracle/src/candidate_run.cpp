@@ -57,8 +57,9 @@ std::string cannot_start_reason(const ChildOutcome& outcome, const std::string& 
 }
 
 /// The verdict for a run that did not end with exit status 0, or nothing.
-std::optional<Verdict> classify_ending(const ChildOutcome& outcome, const CandidateRunOptions& options,
-                                       std::int64_t limit, std::string& reason) {
+std::optional<Verdict> classify_ending(const ChildOutcome& outcome,
+                                       const CandidateRunOptions& options, std::int64_t limit,
+                                       std::string& reason) {
   switch (outcome.ending) {
     case ChildEnding::kCannotStart:
       reason = cannot_start_reason(outcome, options.candidate);
@@ -98,7 +99,8 @@ std::optional<Verdict> classify_file(const std::string& path, std::int64_t expec
   if (!fs::exists(path, error)) {
     reason = "the candidate exited with status 0 but wrote no trajectory file";
     if (fs::exists(path + ".incomplete", error) || fs::exists(path + ".partial", error)) {
-      reason += " (only an unfinished " + fs::path(path).filename().string() + ".incomplete or .partial)";
+      reason +=
+          " (only an unfinished " + fs::path(path).filename().string() + ".incomplete or .partial)";
     }
     return Verdict::kNoOutput;
   }
@@ -161,9 +163,9 @@ CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_
     return "the candidate wrote " + std::to_string(bytes) + " bytes into its folder, more than " +
            "the limit of " + std::to_string(limit) + ", and was stopped";
   };
-  const ChildOutcome outcome = run_child(
-      {options.candidate, "-s", scene_path, "-d", "0", "-o", run.trajectory_path}, work.path(),
-      limits);
+  const ChildOutcome outcome =
+      run_child({options.candidate, "-s", scene_path, "-d", "0", "-o", run.trajectory_path},
+                work.path(), limits);
   run.seconds = outcome.seconds;
   run.exit_status = outcome.exit_status;
   run.stderr_tail = last_lines(printable_text(outcome.stderr_tail), 20);

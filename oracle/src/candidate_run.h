@@ -31,7 +31,7 @@ class WorkFolder {
 };
 
 struct CandidateRunOptions {
-  std::string candidate;         ///< the executable (a path; see resolve_executable)
+  std::string candidate;  ///< the executable (a path; see resolve_executable)
   double timeout_seconds = 600.0;
 };
 
@@ -40,9 +40,9 @@ struct CandidateRun {
   /// Set when the run or its file cannot be graded: crash, timeout, exit status, no file, short
   /// or oversized file. Unset: `trajectory_path` holds exactly `expected_bytes` bytes.
   std::optional<Verdict> problem;
-  std::string reason;            ///< one line, when `problem` is set
-  std::string trajectory_path;   ///< "<work folder>/out.bin"
-  std::string stderr_tail;       ///< the last lines of the candidate's standard error, printable
+  std::string reason;           ///< one line, when `problem` is set
+  std::string trajectory_path;  ///< "<work folder>/out.bin"
+  std::string stderr_tail;      ///< the last lines of the candidate's standard error, printable
   int exit_status = 0;
   double seconds = 0.0;
 };

@@ -145,11 +145,16 @@ struct ExecPlan {
 
 const char* start_step_name(int step) {
   switch (step) {
-    case 0: return "exec";
-    case 1: return "chdir";
-    case 2: return "redirect";
-    case 3: return "setrlimit";
-    default: return "start";
+    case 0:
+      return "exec";
+    case 1:
+      return "chdir";
+    case 2:
+      return "redirect";
+    case 3:
+      return "setrlimit";
+    default:
+      return "start";
   }
 }
 
@@ -292,8 +297,7 @@ std::string resolve_executable(const std::string& name) {
     std::size_t end = directories.find(':', begin);
     if (end == std::string::npos) end = directories.size();
     std::string directory = directories.substr(begin, end - begin);
-    const std::string candidate =
-        (fs::path(directory.empty() ? "." : directory) / name).string();
+    const std::string candidate = (fs::path(directory.empty() ? "." : directory) / name).string();
     struct stat info;
     if (::stat(candidate.c_str(), &info) == 0 && S_ISREG(info.st_mode) &&
         ::access(candidate.c_str(), X_OK) == 0) {
@@ -309,7 +313,8 @@ std::string resolve_executable(const std::string& name) {
 std::string describe_signal(int signal) {
   const char* abbreviation = ::sigabbrev_np(signal);
   const char* description = ::sigdescr_np(signal);
-  std::string text = abbreviation ? std::string("SIG") + abbreviation : "signal " + std::to_string(signal);
+  std::string text =
+      abbreviation ? std::string("SIG") + abbreviation : "signal " + std::to_string(signal);
   if (description) text += std::string(" (") + description + ")";
   return text;
 }

@@ -13,12 +13,12 @@ namespace fosssim {
 
 /// How a child process ended.
 enum class ChildEnding {
-  kExited,         ///< returned from main or called exit(); see exit_status
-  kSignaled,       ///< killed by a signal it did not handle (a crash); see signal
-  kTimedOut,       ///< still running at the deadline; its process group was killed
-  kStoppedByWatch, ///< the watch callback asked to stop it; its process group was killed
-  kInterrupted,    ///< stop_all_children() was called; its process group was killed
-  kCannotStart,    ///< fork, chdir or exec failed; see start_error
+  kExited,          ///< returned from main or called exit(); see exit_status
+  kSignaled,        ///< killed by a signal it did not handle (a crash); see signal
+  kTimedOut,        ///< still running at the deadline; its process group was killed
+  kStoppedByWatch,  ///< the watch callback asked to stop it; its process group was killed
+  kInterrupted,     ///< stop_all_children() was called; its process group was killed
+  kCannotStart,     ///< fork, chdir or exec failed; see start_error
 };
 
 struct ChildLimits {

@@ -13,8 +13,8 @@ std::string diagnosis_text(const SceneResult& result) {
   std::ostringstream out;
   out << result.name << ": " << verdict_label(result.verdict);
   if (!result.integrator.empty()) {
-    out << " (" << result.integrator << ", " << result.particles << " particles in "
-        << result.dim << "D, " << result.steps << " steps of " << to_text(result.dt) << " s)";
+    out << " (" << result.integrator << ", " << result.particles << " particles in " << result.dim
+        << "D, " << result.steps << " steps of " << to_text(result.dt) << " s)";
   }
   out << "\n";
   if (!result.reason.empty()) out << result.reason << "\n";
@@ -26,7 +26,8 @@ std::string diagnosis_text(const SceneResult& result) {
   }
   if (!result.details.empty()) out << result.details;
   if (!result.stderr_tail.empty()) {
-    out << "The candidate's standard error (last lines):\n" << indent_lines(result.stderr_tail, "  ");
+    out << "The candidate's standard error (last lines):\n"
+        << indent_lines(result.stderr_tail, "  ");
   }
   return out.str();
 }
@@ -46,7 +47,8 @@ std::string residual_table_tsv(const GradeReport& report, double dt) {
 
 std::string diagnosis_stem(const std::string& folder, const std::string& scene_name) {
   std::string stem = scene_name;
-  if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".xml") == 0) stem.resize(stem.size() - 4);
+  if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".xml") == 0)
+    stem.resize(stem.size() - 4);
   return folder + "/" + stem;
 }
 
@@ -57,7 +59,8 @@ std::optional<std::string> write_diagnosis(const std::string& folder, const Scen
     return problem;
   }
   if (report == nullptr) return std::nullopt;
-  if (auto problem = write_file_atomically(stem + ".residuals.tsv", residual_table_tsv(*report, result.dt))) {
+  if (auto problem =
+          write_file_atomically(stem + ".residuals.tsv", residual_table_tsv(*report, result.dt))) {
     return problem;
   }
   ResidualPlotOptions plot;

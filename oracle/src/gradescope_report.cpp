@@ -66,7 +66,8 @@ std::string gradescope_json(const GradingRun& run, const GradescopeOptions& opti
                  {"status", r.passed() ? "passed" : "failed"},
                  {"output", test_output(r)},
                  {"output_format", "text"},
-                 {"tags", json::array({r.extra_credit ? "extra-credit" : "regular", printable_text(r.suite())})},
+                 {"tags", json::array({r.extra_credit ? "extra-credit" : "regular",
+                                       printable_text(r.suite())})},
                  {"visibility", options.visibility},
                  {"extra_data", extra_data(r)}};
     tests.push_back(std::move(test));
@@ -77,8 +78,9 @@ std::string gradescope_json(const GradingRun& run, const GradescopeOptions& opti
                        plural_points(t.regular_passed * options.points_per_scene) + " of " +
                        to_text(t.regular * options.points_per_scene) + ").";
   if (t.extra > 0) {
-    output += "\nExtra credit: " + std::to_string(t.extra_passed) + " of " + std::to_string(t.extra) +
-              " passed (+" + plural_points(t.extra_passed * options.points_per_scene) + ").";
+    output += "\nExtra credit: " + std::to_string(t.extra_passed) + " of " +
+              std::to_string(t.extra) + " passed (+" +
+              plural_points(t.extra_passed * options.points_per_scene) + ").";
   }
   const json document = {{"score", score},
                          {"execution_time", static_cast<long long>(std::llround(run.wall_seconds))},

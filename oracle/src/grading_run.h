@@ -17,11 +17,11 @@ struct SceneListing {
 };
 
 struct GradingRun {
-  std::string candidate;              ///< as given on the command line
-  Shard shard;                        ///< 1/1 for a whole run and for merged shards
-  std::vector<SceneListing> scenes;   ///< every scene of the whole run, in order
-  std::vector<SceneResult> results;   ///< the graded scenes of this shard, in the same order
-  double wall_seconds = 0.0;          ///< a merge adds up its shards' wall times
+  std::string candidate;             ///< as given on the command line
+  Shard shard;                       ///< 1/1 for a whole run and for merged shards
+  std::vector<SceneListing> scenes;  ///< every scene of the whole run, in order
+  std::vector<SceneResult> results;  ///< the graded scenes of this shard, in the same order
+  double wall_seconds = 0.0;         ///< a merge adds up its shards' wall times
 };
 
 /// Counts of scenes and passes, regular and extra credit apart.

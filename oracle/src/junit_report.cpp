@@ -25,7 +25,8 @@ bool is_error(const SceneResult& r) {
 
 std::string summary_line(const SceneResult& r) {
   std::string line = std::string(verdict_label(r.verdict));
-  if (!r.integrator.empty()) line += ": " + r.integrator + ", " + std::to_string(r.steps) + " steps";
+  if (!r.integrator.empty())
+    line += ": " + r.integrator + ", " + std::to_string(r.steps) + " steps";
   if (r.residuals) {
     line += "; maximum position residual " + to_text(r.residuals->max_position) +
             ", maximum velocity residual " + to_text(r.residuals->max_velocity);
@@ -59,7 +60,8 @@ void print_testcase(tinyxml2::XMLPrinter& xml, const SceneResult& r) {
     if (c == '/') c = '.';
   }
   xml.OpenElement("testcase");
-  xml.PushAttribute("name", printable_text(r.name.substr(suite == "." ? 0 : suite.size() + 1)).c_str());
+  xml.PushAttribute("name",
+                    printable_text(r.name.substr(suite == "." ? 0 : suite.size() + 1)).c_str());
   xml.PushAttribute("classname", printable_text(classname).c_str());
   xml.PushAttribute("time", seconds_text(r.run_seconds + r.grade_seconds).c_str());
   if (!r.passed()) {

@@ -2,12 +2,11 @@
 // of a suite, writes the reports autograders read, merges shards of large runs, and keeps the
 // regression manifest of FOSSSim's own trajectories. Only this file chooses exit statuses.
 
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <csignal>
 #include <cstring>
 #include <iostream>
-
-#include <CLI/CLI.hpp>
 
 #include "app/exit_codes.h"
 #include "app/parse_command_line.h"
@@ -23,7 +22,8 @@
 namespace fosssim {
 namespace {
 
-constexpr const char* kRegenerateCommand = "cmake --build --preset release --target oracle-manifest";
+constexpr const char* kRegenerateCommand =
+    "cmake --build --preset release --target oracle-manifest";
 
 /// Where the reports of a run go, and how Gradescope scores it.
 struct ReportOptions {
@@ -74,13 +74,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 void add_report_options(CLI::App& command, ReportOptions& reports) {
   command.add_option("--junit", reports.junit, "Write the JUnit XML report here");
   command.add_option("--gradescope", reports.gradescope, "Write Gradescope's results.json here");
-  command.add_option("--points-per-scene", reports.scoring.points_per_scene,
-                     "Gradescope points for each passing scene")
+  command
+      .add_option("--points-per-scene", reports.scoring.points_per_scene,
+                  "Gradescope points for each passing scene")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  command.add_option("--visibility", reports.scoring.visibility,
-                     "Gradescope visibility of every test: visible, hidden, after_due_date or "
-                     "after_published")
+  command
+      .add_option("--visibility", reports.scoring.visibility,
+                  "Gradescope visibility of every test: visible, hidden, after_due_date or "
+                  "after_published")
       ->check(CLI::IsMember({"visible", "hidden", "after_due_date", "after_published"}))
       ->capture_default_str();
   command.add_flag("-q,--quiet", reports.quiet, "No progress lines on standard error");
@@ -90,7 +92,8 @@ void add_report_options(CLI::App& command, ReportOptions& reports) {
 int report(const GradingRun& run, const ReportOptions& options) {
   print_result_table(std::cout, run);
   int status = tally(run.results).all_passed() ? kExitOk : kExitGradingFailed;
-  const auto write = [&status](const std::string& path, const std::string& content, const char* what) {
+  const auto write = [&status](const std::string& path, const std::string& content,
+                               const char* what) {
     if (path.empty()) return;
     if (auto problem = write_file_atomically(path, content)) {
       std::cerr << "fosssim-oracle: error: " << *problem << "\n";
@@ -235,7 +238,8 @@ int run_manifest_check(const ManifestCommand& command) {
   const auto& entries = std::get<std::vector<ManifestEntry>>(computed);
   const auto problems = compare_manifest(*golden, entries, kRegenerateCommand);
   if (problems.empty()) {
-    std::cout << "All " << entries.size() << " scenes match the manifest " << command.folder << "\n";
+    std::cout << "All " << entries.size() << " scenes match the manifest " << command.folder
+              << "\n";
     return kExitOk;
   }
   for (const std::string& problem : problems) std::cout << problem << "\n";
@@ -245,30 +249,38 @@ int run_manifest_check(const ManifestCommand& command) {
 void add_grade_command(CLI::App& app, GradeCommand& c) {
   CLI::App* grade = app.add_subcommand(
       "grade", "Run a candidate simulator on every scene and grade its trajectories");
-  grade->add_option("--candidate", c.candidate,
-                    "The simulator to grade: a path, or a name found in $PATH; it is run as\n"
-                    "CANDIDATE -s SCENE -d 0 -o FILE in a temporary folder of its own")
+  grade
+      ->add_option("--candidate", c.candidate,
+                   "The simulator to grade: a path, or a name found in $PATH; it is run as\n"
+                   "CANDIDATE -s SCENE -d 0 -o FILE in a temporary folder of its own")
       ->required();
   grade->add_option("folders", c.folders, "Scene folders (searched for *.xml) or scene files")
       ->required();
-  grade->add_option("--extra-credit", c.extra_credit,
-                    "An extra-credit scene folder, scored apart (repeat for several)")
+  grade
+      ->add_option("--extra-credit", c.extra_credit,
+                   "An extra-credit scene folder, scored apart (repeat for several)")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  grade->add_option("-j,--jobs", c.jobs, "Scenes graded at once")->check(CLI::PositiveNumber)->capture_default_str();
-  grade->add_option("--shard", c.shard,
-                    "Grade only shard K of N: the scenes at positions i (0-based, in sorted order)\n"
-                    "with i mod N = K - 1")
+  grade->add_option("-j,--jobs", c.jobs, "Scenes graded at once")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  grade
+      ->add_option("--shard", c.shard,
+                   "Grade only shard K of N: the scenes at positions i (0-based, in sorted order)\n"
+                   "with i mod N = K - 1")
       ->capture_default_str();
   grade->add_option("--timeout", c.timeout, "Seconds a candidate may run on one scene")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   grade->add_option("--shard-result", c.shard_result,
                     "Write this run's results as JSON, for `fosssim-oracle merge`");
-  grade->add_option("--diagnose-dir", c.diagnose_dir,
-                    "Write each failing scene's diagnosis (text, per-step residual table, SVG plot)");
-  grade->add_option("--work-dir", c.work_dir, "Where the per-scene temporary folders go (default $TMPDIR)");
-  grade->add_flag("--keep-work", c.keep_work, "Keep the per-scene folders with the candidate's files");
+  grade->add_option(
+      "--diagnose-dir", c.diagnose_dir,
+      "Write each failing scene's diagnosis (text, per-step residual table, SVG plot)");
+  grade->add_option("--work-dir", c.work_dir,
+                    "Where the per-scene temporary folders go (default $TMPDIR)");
+  grade->add_flag("--keep-work", c.keep_work,
+                  "Keep the per-scene folders with the candidate's files");
   add_report_options(*grade, c.reports);
 }
 
@@ -282,10 +294,13 @@ void add_merge_command(CLI::App& app, MergeCommand& c) {
 void add_manifest_options(CLI::App& command, ManifestCommand& c) {
   command.add_option("--candidate", c.candidate, "The FOSSSim executable")->capture_default_str();
   command.add_option("--manifest", c.folder, "The manifest folder")->capture_default_str();
-  command.add_option("folders", c.scene_folders,
-                     "Scene folders (a folder that does not exist counts as empty)")
+  command
+      .add_option("folders", c.scene_folders,
+                  "Scene folders (a folder that does not exist counts as empty)")
       ->required();
-  command.add_option("-j,--jobs", c.jobs, "Scenes run at once")->check(CLI::PositiveNumber)->capture_default_str();
+  command.add_option("-j,--jobs", c.jobs, "Scenes run at once")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   command.add_option("--timeout", c.timeout, "Seconds FOSSSim may run on one scene")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
@@ -297,9 +312,10 @@ void add_manifest_options(CLI::App& command, ManifestCommand& c) {
 
 int main(int argc, char** argv) {
   using namespace fosssim;
-  CLI::App app{"fosssim-oracle: grades any simulator that speaks the course's command line\n"
-               "(CANDIDATE -s SCENE -d 0 -o FILE) with the course's exact criteria",
-               "fosssim-oracle"};
+  CLI::App app{
+      "fosssim-oracle: grades any simulator that speaks the course's command line\n"
+      "(CANDIDATE -s SCENE -d 0 -o FILE) with the course's exact criteria",
+      "fosssim-oracle"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "fosssim-oracle 0.1.0");
   GradeCommand grade;
@@ -310,8 +326,10 @@ int main(int argc, char** argv) {
   CLI::App* manifest_command = app.add_subcommand(
       "manifest", "The regression store of FOSSSim's own trajectories (oracle/manifest)");
   manifest_command->require_subcommand(1);
-  CLI::App* update = manifest_command->add_subcommand("update", "Run FOSSSim on every scene and rewrite the manifest");
-  CLI::App* check = manifest_command->add_subcommand("check", "Run FOSSSim on every scene and compare with the manifest");
+  CLI::App* update = manifest_command->add_subcommand(
+      "update", "Run FOSSSim on every scene and rewrite the manifest");
+  CLI::App* check = manifest_command->add_subcommand(
+      "check", "Run FOSSSim on every scene and compare with the manifest");
   add_manifest_options(*update, manifest);
   add_manifest_options(*check, manifest);
   app.footer(
@@ -323,7 +341,8 @@ int main(int argc, char** argv) {
       "      --extra-credit extracreditassets --junit junit.xml --gradescope results.json\n"
       "  fosssim-oracle grade --candidate ./student --shard 3/8 --shard-result s3.json assets\n"
       "  fosssim-oracle merge s*.json --junit junit.xml --gradescope results.json\n"
-      "  fosssim-oracle manifest check --candidate build/release/bin/FOSSSim assets extracreditassets");
+      "  fosssim-oracle manifest check --candidate build/release/bin/FOSSSim assets "
+      "extracreditassets");
   if (auto status = parse_command_line(
           app, argc, argv,
           "Run fosssim-oracle --help (or fosssim-oracle COMMAND --help) for the options.")) {

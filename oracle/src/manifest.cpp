@@ -42,7 +42,8 @@ ManifestEntry compute_entry(const SceneEntry& scene, const CandidateRunOptions& 
     const CandidateRun run = run_candidate(scene.path, expected, options, work);
     if (run.problem) {
       entry.status = verdict_id(*run.problem);
-      if (*run.problem == Verdict::kExitStatus) entry.status += ":" + std::to_string(run.exit_status);
+      if (*run.problem == Verdict::kExitStatus)
+        entry.status += ":" + std::to_string(run.exit_status);
       return entry;
     }
     auto file = TrajectoryReader::open(run.trajectory_path, model.num_dofs());
@@ -162,7 +163,9 @@ Expected<std::vector<ManifestEntry>, std::string> read_manifest(const std::strin
       auto text = read_whole_file(path);
       if (!text) return "the manifest lists " + e.scene + " but " + path + " is missing";
       const std::size_t header_end = text->find('\n');
-      e.final_state = (*text)[0] == '#' && header_end != std::string::npos ? text->substr(header_end + 1) : *text;
+      e.final_state = (*text)[0] == '#' && header_end != std::string::npos
+                          ? text->substr(header_end + 1)
+                          : *text;
     }
     entries.push_back(std::move(e));
   }

@@ -12,15 +12,16 @@
 #include <vector>
 
 #include "candidate_run.h"
-#include "core/types.h"
 #include "core/expected.h"
+#include "core/types.h"
 #include "scene_list.h"
 
 namespace fosssim {
 
 struct ManifestEntry {
-  std::string scene;        ///< SceneEntry::name
-  std::string status = "ok";  ///< "ok", or why there is no trajectory ("exit-status:3", "crashed", ...)
+  std::string scene;  ///< SceneEntry::name
+  std::string status =
+      "ok";  ///< "ok", or why there is no trajectory ("exit-status:3", "crashed", ...)
   std::int64_t frames = 0;
   std::int64_t bytes = 0;
   std::string sha256;       ///< of the trajectory's bytes; empty unless status is "ok"

@@ -78,12 +78,23 @@ std::string escape_xml(const std::string& text) {
   out.reserve(text.size());
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -104,7 +115,8 @@ std::string residual_plot_svg(const std::vector<StepResidual>& per_step,
   // Zeros get the bottom line of their own, one decade below the smallest residual.
   const int low = decades.first - (has_zero ? 1 : 0), high = decades.second;
   const double end_time =
-      per_step.empty() ? options.dt : std::max(static_cast<double>(per_step.back().step) * options.dt, 1e-300);
+      per_step.empty() ? options.dt
+                       : std::max(static_cast<double>(per_step.back().step) * options.dt, 1e-300);
   const auto x_of = [&](double t) { return kLeft + (kRight - kLeft) * t / end_time; };
   const auto y_of = [&](double v) {
     if (!std::isfinite(v)) return kTop;
@@ -116,7 +128,8 @@ std::string residual_plot_svg(const std::vector<StepResidual>& per_step,
   std::ostringstream svg;
   svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
-      << "\" viewBox=\"0 0 " << kWidth << " " << kHeight << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+      << "\" viewBox=\"0 0 " << kWidth << " " << kHeight
+      << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
       << "<text x=\"" << kWidth / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"14\">"
       << escape_xml(options.title) << "</text>\n";
@@ -127,10 +140,11 @@ std::string residual_plot_svg(const std::vector<StepResidual>& per_step,
     svg << "<line x1=\"" << kLeft << "\" y1=\"" << number(y) << "\" x2=\"" << kRight << "\" y2=\""
         << number(y) << "\" stroke=\"#e4e4e4\"/>\n";
     if (e == low && has_zero) {
-      svg << "<text x=\"" << kLeft - 6 << "\" y=\"" << number(y + 4) << "\" text-anchor=\"end\">0</text>\n";
-    } else if ((high - e) % label_every == 0) {
       svg << "<text x=\"" << kLeft - 6 << "\" y=\"" << number(y + 4)
-          << "\" text-anchor=\"end\">1e" << e << "</text>\n";
+          << "\" text-anchor=\"end\">0</text>\n";
+    } else if ((high - e) % label_every == 0) {
+      svg << "<text x=\"" << kLeft - 6 << "\" y=\"" << number(y + 4) << "\" text-anchor=\"end\">1e"
+          << e << "</text>\n";
     }
   }
   for (int k = 0; k <= 5; ++k) {
@@ -153,14 +167,15 @@ std::string residual_plot_svg(const std::vector<StepResidual>& per_step,
       << "</text>\n";
   if (options.marked_step) {
     const double x = x_of(static_cast<double>(*options.marked_step) * options.dt);
-    svg << "<line x1=\"" << number(x) << "\" y1=\"" << kTop << "\" x2=\"" << number(x)
-        << "\" y2=\"" << kBottom << "\" stroke=\"#555555\" stroke-dasharray=\"2 3\"/>\n"
-        << "<text x=\"" << number(x + 4) << "\" y=\"" << kTop + 14 << "\" fill=\"#555555\">first divergence: step "
-        << *options.marked_step << "</text>\n";
+    svg << "<line x1=\"" << number(x) << "\" y1=\"" << kTop << "\" x2=\"" << number(x) << "\" y2=\""
+        << kBottom << "\" stroke=\"#555555\" stroke-dasharray=\"2 3\"/>\n"
+        << "<text x=\"" << number(x + 4) << "\" y=\"" << kTop + 14
+        << "\" fill=\"#555555\">first divergence: step " << *options.marked_step << "</text>\n";
   }
   const auto polyline = [&](double Column::*series, const char* color) {
     svg << "<polyline fill=\"none\" stroke=\"" << color << "\" stroke-width=\"1.5\" points=\"";
-    for (const Column& c : columns) svg << number(x_of(c.time)) << "," << number(y_of(c.*series)) << " ";
+    for (const Column& c : columns)
+      svg << number(x_of(c.time)) << "," << number(y_of(c.*series)) << " ";
     svg << "\"/>\n";
   };
   polyline(&Column::position, "#1f77b4");

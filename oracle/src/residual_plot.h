@@ -13,11 +13,11 @@ namespace fosssim {
 
 struct ResidualPlotOptions {
   std::string title;
-  double dt = 0.01;                     ///< seconds per step, for the time axis
-  double limit = 1e-10;                 ///< the maximum limit, drawn as a dashed line
+  double dt = 0.01;                         ///< seconds per step, for the time axis
+  double limit = 1e-10;                     ///< the maximum limit, drawn as a dashed line
   std::optional<std::int64_t> marked_step;  ///< the first divergence, drawn as a vertical line
-  int max_points = 1500;                ///< longer runs are reduced to this many columns, each
-                                        ///< keeping its largest residual
+  int max_points = 1500;                    ///< longer runs are reduced to this many columns, each
+                                            ///< keeping its largest residual
 };
 
 /// The SVG document (UTF-8 text): max over particles of the position and of the velocity

@@ -58,8 +58,8 @@ void print_row(std::ostream& out, const std::vector<std::string>& cells,
 }  // namespace
 
 void print_result_table(std::ostream& out, const GradingRun& run) {
-  const std::vector<std::string> header = {"scene",         "integrator",    "verdict", "max pos res",
-                                           "max vel res",   "first failure", "time s"};
+  const std::vector<std::string> header = {"scene",       "integrator",    "verdict", "max pos res",
+                                           "max vel res", "first failure", "time s"};
   std::vector<std::vector<std::string>> rows;
   for (const SceneResult& r : run.results) rows.push_back(row_of(r));
   std::vector<std::size_t> widths;

@@ -87,8 +87,8 @@ std::string failure_reason(const GradeReport& report) {
   std::string reason;
   const auto add = [&reason](bool passed, const char* name, double value, double limit) {
     if (passed) return;
-    reason += (reason.empty() ? "" : ", ") + std::string(name) + " " + to_text(value) +
-              " (limit " + to_text(limit) + ")";
+    reason += (reason.empty() ? "" : ", ") + std::string(name) + " " + to_text(value) + " (limit " +
+              to_text(limit) + ")";
   };
   const GradingCriteria& c = report.criteria;
   add(report.accumulated_position_passed(), "Accumulated Position Residual",
@@ -171,7 +171,8 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
       grade_file(scene, run.trajectory_path, result, report);
       result.grade_seconds = seconds_since(start);
     }
-    if (options.keep_work) result.details += "The candidate's folder was kept: " + work.path() + "\n";
+    if (options.keep_work)
+      result.details += "The candidate's folder was kept: " + work.path() + "\n";
   } catch (const std::exception& error) {
     result.verdict = Verdict::kCannotRun;
     result.reason = std::string("the oracle could not run this scene: ") + error.what();

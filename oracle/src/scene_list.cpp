@@ -38,8 +38,8 @@ std::optional<std::string> collect(const std::string& argument, bool extra_credi
     return "the scene folder " + argument + " does not exist";
   }
   if (fs::is_regular_file(status)) {
-    out.push_back({printable_text(folder.filename().string()), fs::absolute(folder).lexically_normal().string(),
-                   extra_credit});
+    out.push_back({printable_text(folder.filename().string()),
+                   fs::absolute(folder).lexically_normal().string(), extra_credit});
     return std::nullopt;
   }
   if (!fs::is_directory(status)) return argument + " is neither a folder nor a scene file";

@@ -21,7 +21,8 @@ enum class Verdict {
   kOversized,    ///< more bytes than steps + 1 frames (or it kept on writing)
   kGarbage,      ///< the right size, but holds NaN or infinite values
   kCannotRun,    ///< the candidate does not exist or cannot be executed
-  kSceneError,   ///< the scene file itself cannot be loaded: a problem of the suite, not the candidate
+  kSceneError,   ///< the scene file itself cannot be loaded: a problem of the suite, not the
+                 ///< candidate
   kInterrupted,  ///< the oracle was stopped (Ctrl-C) while this scene ran
 };
 
@@ -49,18 +50,18 @@ struct DivergencePoint {
 };
 
 struct SceneResult {
-  std::string name;           ///< SceneEntry::name, "assets/t1m1/springs_single.xml"
+  std::string name;  ///< SceneEntry::name, "assets/t1m1/springs_single.xml"
   bool extra_credit = false;
-  std::string integrator;     ///< canonical name; empty when the scene could not be loaded
+  std::string integrator;  ///< canonical name; empty when the scene could not be loaded
   int dim = 0;
   int particles = 0;
   std::int64_t steps = 0;
   double dt = 0.0;
   Verdict verdict = Verdict::kFailed;
-  std::string reason;       ///< one line: why it failed (empty when passed)
-  std::string details;      ///< several lines: the diagnosis (first divergence, states)
-  std::string stderr_tail;  ///< the candidate's last lines of standard error, printable
-  std::optional<Residuals> residuals;             ///< when the trajectory was graded
+  std::string reason;                  ///< one line: why it failed (empty when passed)
+  std::string details;                 ///< several lines: the diagnosis (first divergence, states)
+  std::string stderr_tail;             ///< the candidate's last lines of standard error, printable
+  std::optional<Residuals> residuals;  ///< when the trajectory was graded
   std::optional<DivergencePoint> first_divergence;
   double run_seconds = 0.0;    ///< the candidate's wall time
   double grade_seconds = 0.0;  ///< the oracle's grading time

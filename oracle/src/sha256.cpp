@@ -23,9 +23,8 @@ constexpr std::array<std::uint32_t, 64> kRoundConstants = {
 
 // FIPS 180-4 section 5.3.3: the first 32 bits of the fractional parts of the square roots of the
 // first 8 primes.
-constexpr std::array<std::uint32_t, 8> kInitialHash = {0x6a09e667, 0xbb67ae85, 0x3c6ef372,
-                                                       0xa54ff53a, 0x510e527f, 0x9b05688c,
-                                                       0x1f83d9ab, 0x5be0cd19};
+constexpr std::array<std::uint32_t, 8> kInitialHash = {
+    0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
 
 constexpr std::uint32_t rotr(std::uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
 

@@ -52,10 +52,11 @@ json result_json(const SceneResult& r) {
                       {"max_velocity", number_json(r.residuals->max_velocity)}};
   }
   if (r.first_divergence) {
-    j["first_divergence"] = {{"step", r.first_divergence->step},
-                             {"particle", r.first_divergence->particle},
-                             {"position_residual", number_json(r.first_divergence->position_residual)},
-                             {"velocity_residual", number_json(r.first_divergence->velocity_residual)}};
+    j["first_divergence"] = {
+        {"step", r.first_divergence->step},
+        {"particle", r.first_divergence->particle},
+        {"position_residual", number_json(r.first_divergence->position_residual)},
+        {"velocity_residual", number_json(r.first_divergence->velocity_residual)}};
   }
   return j;
 }
@@ -86,9 +87,9 @@ SceneResult result_from(const json& j) {
   }
   if (j.contains("first_divergence")) {
     const json& d = j.at("first_divergence");
-    r.first_divergence = DivergencePoint{d.at("step").get<std::int64_t>(), d.at("particle").get<int>(),
-                                         number_from(d.at("position_residual")),
-                                         number_from(d.at("velocity_residual"))};
+    r.first_divergence = DivergencePoint{
+        d.at("step").get<std::int64_t>(), d.at("particle").get<int>(),
+        number_from(d.at("position_residual")), number_from(d.at("velocity_residual"))};
   }
   return r;
 }
@@ -112,7 +113,8 @@ std::string shard_result_json(const GradingRun& run) {
   return document.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
-Expected<GradingRun, std::string> parse_shard_result(const std::string& text, const std::string& source) {
+Expected<GradingRun, std::string> parse_shard_result(const std::string& text,
+                                                     const std::string& source) {
   try {
     const json document = json::parse(text);
     if (!document.is_object() || document.value("format", "") != kFormat) {
@@ -172,7 +174,8 @@ Expected<GradingRun, std::string> merge_shards(const std::vector<GradingRun>& sh
   std::string missing;
   for (int k = 0; k < count; ++k) {
     if (by_index[static_cast<std::size_t>(k)] == nullptr) {
-      missing += (missing.empty() ? "" : ", ") + std::to_string(k + 1) + "/" + std::to_string(count);
+      missing +=
+          (missing.empty() ? "" : ", ") + std::to_string(k + 1) + "/" + std::to_string(count);
     }
   }
   if (!missing.empty()) return "the shards " + missing + " are missing";
@@ -193,7 +196,8 @@ Expected<GradingRun, std::string> merge_shards(const std::vector<GradingRun>& sh
   }
   for (std::size_t k = 0; k < next.size(); ++k) {
     if (next[k] != by_index[k]->results.size()) {
-      return "shard " + std::to_string(k + 1) + "/" + std::to_string(count) + " holds more results than its scenes";
+      return "shard " + std::to_string(k + 1) + "/" + std::to_string(count) +
+             " holds more results than its scenes";
     }
   }
   return merged;

@@ -15,7 +15,8 @@ namespace fosssim {
 std::string shard_result_json(const GradingRun& run);
 
 /// Reads a shard result file's text; `source` names it in messages.
-Expected<GradingRun, std::string> parse_shard_result(const std::string& text, const std::string& source);
+Expected<GradingRun, std::string> parse_shard_result(const std::string& text,
+                                                     const std::string& source);
 
 /// Combines the shards of one run: they must all list the same scenes and the same shard count,
 /// and hold every shard index from 1 to N exactly once, each with exactly its scenes. The result

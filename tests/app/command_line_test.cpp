@@ -44,7 +44,8 @@ class CommandLine : public testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("fosssim_cli_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("fosssim_cli_" +
+            std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     write("spring.xml", kSpringScene);
@@ -138,9 +139,10 @@ TEST_F(CommandLine, GradingACutShortFileIsAnError) {
   fs::resize_file(path("out.bin"), 60 * kSpringFrameBytes);
   const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "-i", "out.bin"});
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err,
-            "FOSSSim: error: out.bin: the trajectory has 60 frames, but the scene takes 100 steps "
-            "and so needs 101 (the initial state and one frame per step); the file was cut short\n");
+  EXPECT_EQ(
+      r.err,
+      "FOSSSim: error: out.bin: the trajectory has 60 frames, but the scene takes 100 steps "
+      "and so needs 101 (the initial state and one frame per step); the file was cut short\n");
   EXPECT_EQ(r.out.find("Overall success"), std::string::npos);
 }
 
@@ -171,8 +173,8 @@ TEST_F(CommandLine, DurationAndTimeStepCanBeOverridden) {
       fosssim({"-s", "spring.xml", "-d", "0", "--duration", "0.5", "--dt", "0.001", "-o", "o.bin"});
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(static_cast<std::int64_t>(fs::file_size(path("o.bin"))), 501 * kSpringFrameBytes);
-  const ProgramResult graded = fosssim(
-      {"-s", "spring.xml", "-d", "0", "--duration", "0.5", "--dt", "0.001", "-i", "o.bin"});
+  const ProgramResult graded =
+      fosssim({"-s", "spring.xml", "-d", "0", "--duration", "0.5", "--dt", "0.001", "-i", "o.bin"});
   EXPECT_EQ(graded.exit_code, 0) << graded.err;
 }
 
@@ -193,7 +195,8 @@ TEST_F(CommandLine, NewtonThatCannotConvergeNamesTheStep) {
 }
 
 TEST_F(CommandLine, BadSceneGivesFileLineAndExitTwo) {
-  write("bad.xml", "<scene>\n<duration time=\"1\"/>\n<integrator type=\"explicit\" dt=\"0.1\"/>\n</scene>\n");
+  write("bad.xml",
+        "<scene>\n<duration time=\"1\"/>\n<integrator type=\"explicit\" dt=\"0.1\"/>\n</scene>\n");
   const ProgramResult r = fosssim({"-s", "bad.xml", "-d", "0"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err.substr(0, r.err.find('\n')),

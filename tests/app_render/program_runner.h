@@ -57,8 +57,8 @@ inline std::string read_text(const std::string& path) {
 /// Runs a shell command line in `folder`, capturing standard output and error.
 inline ProgramResult run_command(const ScratchFolder& folder, const std::string& command) {
   const std::string out = folder / "stdout.txt", err = folder / "stderr.txt";
-  const std::string line = "cd '" + folder.path().string() + "' && (" + command + ") >'" + out +
-                           "' 2>'" + err + "'";
+  const std::string line =
+      "cd '" + folder.path().string() + "' && (" + command + ") >'" + out + "' 2>'" + err + "'";
   const int raw = std::system(line.c_str());
   ProgramResult result;
   result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

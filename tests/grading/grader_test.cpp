@@ -2,6 +2,8 @@
 // of one double at one step fails at exactly that step and particle, and the report's lines and
 // residual file match the course's format.
 
+#include "grading/grader.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +14,6 @@
 #include <sstream>
 
 #include "core/simulation.h"
-#include "grading/grader.h"
 #include "io/scene_loader.h"
 
 namespace fosssim {
@@ -181,8 +182,9 @@ TEST_F(Grader, ReportsAReferenceStepThatCannotBeTaken) {
   ASSERT_TRUE(report) << report.error();
   EXPECT_FALSE(report->passed());
   ASSERT_TRUE(report->reference_failure.has_value());
-  EXPECT_NE(report->reference_failure->find("step 1: implicit Euler: Newton's method did not converge"),
-            std::string::npos)
+  EXPECT_NE(
+      report->reference_failure->find("step 1: implicit Euler: Newton's method did not converge"),
+      std::string::npos)
       << *report->reference_failure;
 }
 

@@ -42,7 +42,8 @@ TEST_P(MalformedScene, NamesFileLineElementAndProblem) {
 const Case kCases[] = {
     {"MissingAttribute", "<particle m=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n",
      "bad.xml:3: error: <particle> 0: attribute \"px\" is missing"},
-    {"NonNumericAttribute", "<particle m=\"heavy\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n",
+    {"NonNumericAttribute",
+     "<particle m=\"heavy\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n",
      "bad.xml:3: error: <particle> 0: attribute \"m\" must be a finite number, found \"heavy\""},
     {"TrailingGarbage", "<particle m=\"1.5kg\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n",
      "bad.xml:3: error: <particle> 0: attribute \"m\" must be a finite number, found \"1.5kg\""},
@@ -70,7 +71,8 @@ const Case kCases[] = {
      "bad.xml:6: error: <edge> 1: attribute \"i\" must be an integer, found \"0.5\""},
     {"EdgeToItself", std::string(kTwoParticles) + "<edge i=\"1\" j=\"1\"/>\n",
      "bad.xml:6: error: <edge> 1: attribute \"j\" must differ from i (both are 1)"},
-    {"SpringOnMissingEdge", std::string(kTwoParticles) + "<springforce edge=\"1\" k=\"1\" l0=\"1\"/>\n",
+    {"SpringOnMissingEdge",
+     std::string(kTwoParticles) + "<springforce edge=\"1\" k=\"1\" l0=\"1\"/>\n",
      "bad.xml:6: error: <springforce> 0: attribute \"edge\" refers to edge 1, but the scene has 1 "
      "edge (valid indices are 0 to 0)"},
     {"SpringWithoutEdges", "<springforce edge=\"0\" k=\"1\" l0=\"1\"/>\n",
@@ -82,18 +84,21 @@ const Case kCases[] = {
      "<edge i=\"0\" j=\"1\"/>\n<springforce edge=\"0\" k=\"1\" l0=\"1\"/>\n",
      "bad.xml:6: error: <springforce> 0: edge 0 has zero length (particles 0 and 1 coincide), so "
      "the spring's direction is undefined"},
-    {"NegativeStiffness", std::string(kTwoParticles) + "<springforce edge=\"0\" k=\"-1\" l0=\"1\"/>\n",
+    {"NegativeStiffness",
+     std::string(kTwoParticles) + "<springforce edge=\"0\" k=\"-1\" l0=\"1\"/>\n",
      "bad.xml:6: error: <springforce> 0: attribute \"k\" must be non-negative, found -1"},
     {"NegativeDamping",
      std::string(kTwoParticles) + "<springforce edge=\"0\" k=\"1\" l0=\"1\" b=\"-0.5\"/>\n",
      "bad.xml:6: error: <springforce> 0: attribute \"b\" must be non-negative, found -0.5"},
-    {"GravityOnItself", std::string(kTwoParticles) + "<gravitationalforce i=\"1\" j=\"1\" G=\"1\"/>\n",
+    {"GravityOnItself",
+     std::string(kTwoParticles) + "<gravitationalforce i=\"1\" j=\"1\" G=\"1\"/>\n",
      "bad.xml:6: error: <gravitationalforce> 0: attribute \"j\" must differ from i (both are 1)"},
     {"GravityIndexOutOfRange",
      std::string(kTwoParticles) + "<gravitationalforce i=\"0\" j=\"7\" G=\"1\"/>\n",
      "bad.xml:6: error: <gravitationalforce> 0: attribute \"j\" refers to particle 7, but the "
      "scene has 2 particles (valid indices are 0 to 1)"},
-    {"VortexMissingParameter", std::string(kTwoParticles) + "<vortexforce i=\"0\" j=\"1\" kbs=\"1\"/>\n",
+    {"VortexMissingParameter",
+     std::string(kTwoParticles) + "<vortexforce i=\"0\" j=\"1\" kbs=\"1\"/>\n",
      "bad.xml:6: error: <vortexforce> 0: attribute \"kvc\" is missing"},
     {"GravityMissingComponent", "<simplegravity fx=\"0\"/>\n",
      "bad.xml:3: error: <simplegravity> 0: attribute \"fy\" is missing"},
@@ -101,7 +106,8 @@ const Case kCases[] = {
     {"ColorOutOfRange",
      std::string(kTwoParticles) + "<particlecolor i=\"0\" r=\"1.5\" g=\"0\" b=\"0\"/>\n",
      "bad.xml:6: error: <particlecolor> 0: attribute \"r\" must be between 0 and 1, found 1.5"},
-    {"EdgeColorIndex", std::string(kTwoParticles) + "<edgecolor i=\"3\" r=\"1\" g=\"0\" b=\"0\"/>\n",
+    {"EdgeColorIndex",
+     std::string(kTwoParticles) + "<edgecolor i=\"3\" r=\"1\" g=\"0\" b=\"0\"/>\n",
      "bad.xml:6: error: <edgecolor> 0: attribute \"i\" refers to edge 3, but the scene has 1 edge "
      "(valid indices are 0 to 0)"},
     {"DuplicateDuration", "<duration time=\"2\"/>\n",
@@ -114,20 +120,25 @@ INSTANTIATE_TEST_SUITE_P(SceneLoader, MalformedScene, testing::ValuesIn(kCases),
                          [](const testing::TestParamInfo<Case>& info) { return info.param.name; });
 
 TEST(SceneLoaderErrors, UnknownIntegrator) {
-  EXPECT_EQ(error_of("<scene>\n<duration time=\"1\"/>\n<integrator type=\"rk4\" dt=\"0.1\"/>\n</scene>"),
-            "bad.xml:3: error: <integrator>: attribute \"type\" names an unknown integrator \"rk4\" "
-            "(expected explicit-euler, symplectic-euler, linearized-implicit-euler, "
-            "implicit-euler, local-global or linearly-implicit-euler, or an alias)");
+  EXPECT_EQ(
+      error_of("<scene>\n<duration time=\"1\"/>\n<integrator type=\"rk4\" dt=\"0.1\"/>\n</scene>"),
+      "bad.xml:3: error: <integrator>: attribute \"type\" names an unknown integrator \"rk4\" "
+      "(expected explicit-euler, symplectic-euler, linearized-implicit-euler, "
+      "implicit-euler, local-global or linearly-implicit-euler, or an alias)");
 }
 
 TEST(SceneLoaderErrors, NonPositiveTimeStep) {
-  EXPECT_EQ(error_of("<scene>\n<duration time=\"1\"/>\n<integrator type=\"implicit\" dt=\"0\"/>\n</scene>"),
-            "bad.xml:3: error: <integrator>: attribute \"dt\" must be positive, found 0");
+  EXPECT_EQ(
+      error_of(
+          "<scene>\n<duration time=\"1\"/>\n<integrator type=\"implicit\" dt=\"0\"/>\n</scene>"),
+      "bad.xml:3: error: <integrator>: attribute \"dt\" must be positive, found 0");
 }
 
 TEST(SceneLoaderErrors, NegativeDuration) {
-  EXPECT_EQ(error_of("<scene>\n<duration time=\"-1\"/>\n<integrator type=\"implicit\" dt=\"1\"/>\n</scene>"),
-            "bad.xml:2: error: <duration>: attribute \"time\" must be non-negative, found -1");
+  EXPECT_EQ(
+      error_of(
+          "<scene>\n<duration time=\"-1\"/>\n<integrator type=\"implicit\" dt=\"1\"/>\n</scene>"),
+      "bad.xml:2: error: <duration>: attribute \"time\" must be non-negative, found -1");
 }
 
 TEST(SceneLoaderErrors, MissingRequiredElements) {
@@ -163,8 +174,9 @@ TEST(SceneLoaderErrors, NotXml) {
   EXPECT_EQ(error_of("<scene>\n<particle/>\n"),
             "bad.xml:1: error: not well-formed XML: an element opened on this line is never closed "
             "(the file ends inside it)");
-  EXPECT_EQ(error_of("<scene>\n</scene>\n<scene>\n</scene>"),
-            "bad.xml:3: error: <scene>: a second top-level element; a scene file holds one <scene>");
+  EXPECT_EQ(
+      error_of("<scene>\n</scene>\n<scene>\n</scene>"),
+      "bad.xml:3: error: <scene>: a second top-level element; a scene file holds one <scene>");
 }
 
 TEST(SceneLoaderErrors, EmptyText) {
@@ -195,7 +207,8 @@ TEST(SceneLoaderErrors, EmptyFileOnDisk) {
 
 TEST(SceneLoaderErrors, ErrorCarriesItsParts) {
   const auto scene = load_scene_text(
-      std::string(kHeader) + "<particle m=\"x\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/></scene>",
+      std::string(kHeader) +
+          "<particle m=\"x\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/></scene>",
       "parts.xml");
   ASSERT_FALSE(scene);
   EXPECT_EQ(scene.error().file(), "parts.xml");

@@ -1,10 +1,11 @@
 // Scenes that load: every element and attribute of SPEC section 1, its defaults, the integrator
 // aliases, and the compat force summation order.
 
+#include "io/scene_loader.h"
+
 #include <gtest/gtest.h>
 
 #include "core/force_evaluation.h"
-#include "io/scene_loader.h"
 
 namespace fosssim {
 namespace {
@@ -129,10 +130,10 @@ TEST(SceneLoader, OrdersForcesByKindThenDocument) {
   </scene>)");
   std::vector<std::string> labels;
   for (const auto& force : scene.model.forces) labels.push_back(force->label());
-  EXPECT_EQ(labels, (std::vector<std::string>{
-                        "springforce(1, 2)", "springforce(0, 1)", "simplegravity",
-                        "gravitationalforce(0, 2)", "gravitationalforce(1, 2)", "constantforce",
-                        "dragdamping", "vortexforce(0, 1)"}));
+  EXPECT_EQ(labels,
+            (std::vector<std::string>{"springforce(1, 2)", "springforce(0, 1)", "simplegravity",
+                                      "gravitationalforce(0, 2)", "gravitationalforce(1, 2)",
+                                      "constantforce", "dragdamping", "vortexforce(0, 1)"}));
 }
 
 TEST(SceneLoader, ForceParametersReachTheForces) {
@@ -199,7 +200,8 @@ TEST(SceneLoader, WarnsAboutUnknownAttributesWithTheirLine) {
 }
 
 TEST(SceneLoader, AcceptsAnEmptySceneWithoutParticles) {
-  const Scene scene = load(R"(<scene><duration time="0"/><integrator type="implicit" dt="1"/></scene>)");
+  const Scene scene =
+      load(R"(<scene><duration time="0"/><integrator type="implicit" dt="1"/></scene>)");
   EXPECT_EQ(scene.model.num_particles(), 0);
   EXPECT_EQ(scene.model.num_steps(), 0);
 }

@@ -1,14 +1,14 @@
 // The classic trajectory file (SPEC section 5): byte layout, round trip, and the guarantee that
 // an unfinished run never leaves a file that looks complete.
 
+#include "io/trajectory_file.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-
-#include "io/trajectory_file.h"
 
 namespace fosssim {
 namespace {
@@ -19,7 +19,8 @@ class TrajectoryFile : public testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("fosssim_traj_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("fosssim_traj_" +
+            std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -111,17 +112,18 @@ TEST_F(TrajectoryFile, AbandonReportsWhereTheFramesAre) {
 TEST_F(TrajectoryFile, OpenFailsWithTheReasonWhenTheFolderIsMissing) {
   auto writer = TrajectoryWriter::open(path("no/such/dir/t.bin"));
   ASSERT_FALSE(writer);
-  EXPECT_EQ(writer.error(), "cannot create " + path("no/such/dir/t.bin.partial") +
-                                ": No such file or directory");
+  EXPECT_EQ(writer.error(),
+            "cannot create " + path("no/such/dir/t.bin.partial") + ": No such file or directory");
 }
 
 TEST_F(TrajectoryFile, ReaderRejectsCutShortFiles) {
   std::ofstream(path("short.bin"), std::ios::binary) << std::string(8 * 8 + 5, '\0');
   auto reader = TrajectoryReader::open(path("short.bin"), 4);
   ASSERT_FALSE(reader);
-  EXPECT_EQ(reader.error(), path("short.bin") +
-                                " has 69 bytes, not a whole number of frames of 64 bytes (4 "
-                                "positions and velocities); it was cut short or is for another scene");
+  EXPECT_EQ(reader.error(),
+            path("short.bin") +
+                " has 69 bytes, not a whole number of frames of 64 bytes (4 "
+                "positions and velocities); it was cut short or is for another scene");
 }
 
 TEST_F(TrajectoryFile, ReaderRejectsMissingFile) {

@@ -35,16 +35,15 @@ TEST(RunChild, RunsInTheWorkingFolderWithoutStandardInput) {
   const ChildOutcome outcome =
       run_child({"/bin/sh", "-c", "pwd; cat; echo done"}, folder.path(), quick_limits());
   EXPECT_EQ(outcome.exit_status, 0);
-  EXPECT_EQ(outcome.stdout_tail,
-            std::filesystem::canonical(folder.path()).string() + "\ndone\n");
+  EXPECT_EQ(outcome.stdout_tail, std::filesystem::canonical(folder.path()).string() + "\ndone\n");
 }
 
 TEST(RunChild, KeepsOnlyTheTailOfALongOutput) {
   ChildLimits limits = quick_limits();
   limits.tail_bytes = 100;
-  const ChildOutcome outcome =
-      run_child({"/bin/sh", "-c", "i=0; while [ $i -lt 2000 ]; do echo line $i; i=$((i+1)); done; echo last"},
-                "/", limits);
+  const ChildOutcome outcome = run_child(
+      {"/bin/sh", "-c", "i=0; while [ $i -lt 2000 ]; do echo line $i; i=$((i+1)); done; echo last"},
+      "/", limits);
   EXPECT_EQ(outcome.stdout_tail.size(), 100u);
   EXPECT_NE(outcome.stdout_tail.find("line 1999\nlast\n"), std::string::npos);
   EXPECT_GT(outcome.stdout_bytes, 10000);
@@ -84,8 +83,9 @@ TEST(RunChild, TimeoutKillsTheWholeProcessGroup) {
 TEST(RunChild, KillsWhatTheChildLeftBehindWhenItExits) {
   TemporaryFolder folder;
   const std::string pid_file = folder / "sleep.pid";
-  const ChildOutcome outcome = run_child(
-      {"/bin/sh", "-c", "sleep 1000 > /dev/null 2>&1 & echo $! > " + pid_file}, "/", quick_limits());
+  const ChildOutcome outcome =
+      run_child({"/bin/sh", "-c", "sleep 1000 > /dev/null 2>&1 & echo $! > " + pid_file}, "/",
+                quick_limits());
   EXPECT_EQ(outcome.ending, ChildEnding::kExited);
   int sleeper = 0;
   std::ifstream(pid_file) >> sleeper;

@@ -49,7 +49,8 @@ TEST(GradescopeReport, ScoresRegularScenesAndExtraCreditApart) {
 TEST(GradescopeReport, OutputExplainsFailuresAndExtraDataKeepsResiduals) {
   const json results = json::parse(gradescope_json(testing::sample_run()));
   const json& failed = results.at("tests")[1];
-  EXPECT_NE(failed.at("output").get<std::string>().find("First divergence at step 17"), std::string::npos);
+  EXPECT_NE(failed.at("output").get<std::string>().find("First divergence at step 17"),
+            std::string::npos);
   EXPECT_EQ(failed.at("extra_data").at("verdict"), "failed");
   EXPECT_EQ(failed.at("extra_data").at("first_divergence_step"), 17);
   EXPECT_EQ(failed.at("extra_data").at("first_divergence_particle"), 2);
@@ -57,7 +58,8 @@ TEST(GradescopeReport, OutputExplainsFailuresAndExtraDataKeepsResiduals) {
   EXPECT_EQ(failed.at("extra_data").at("max_velocity_residual"), "nan");  // JSON has no NaN
   const json& crashed = results.at("tests")[2];
   const std::string output = crashed.at("output").get<std::string>();
-  EXPECT_NE(output.find("exploded <at> step & \"quoted\" 'single' \xce\xbb\\x01\\xff"), std::string::npos);
+  EXPECT_NE(output.find("exploded <at> step & \"quoted\" 'single' \xce\xbb\\x01\\xff"),
+            std::string::npos);
   EXPECT_NE(output.find("line <two> & \\x07"), std::string::npos);
 }
 

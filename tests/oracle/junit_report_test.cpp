@@ -49,7 +49,8 @@ TEST(JunitReport, OneSuitePerFolderOneCasePerSceneWithCounts) {
   const XMLElement* failure = cases[1]->FirstChildElement("failure");
   ASSERT_NE(failure, nullptr);
   EXPECT_STREQ(failure->Attribute("type"), "failed");
-  EXPECT_NE(std::string(failure->Attribute("message")).find("step 17, particle 2"), std::string::npos);
+  EXPECT_NE(std::string(failure->Attribute("message")).find("step 17, particle 2"),
+            std::string::npos);
   EXPECT_NE(std::string(failure->GetText()).find("First divergence at step 17"), std::string::npos);
   const XMLElement* error = children(suites[1], "testcase")[1]->FirstChildElement("error");
   ASSERT_NE(error, nullptr);

@@ -57,15 +57,18 @@ TEST(Manifest, DigestsFossSimsTrajectoriesAndRoundTripsThroughItsFolder) {
 TEST(Manifest, ASingleFlippedBitInAnyFrameIsDetected) {
   TemporaryFolder work;
   const auto golden = compute_with(testing::kFossSim, work);
-  testing::use_perturbing_candidate(10, 1, 0, "flip-bit");  // a middle frame: the final state stays the same
+  testing::use_perturbing_candidate(10, 1, 0,
+                                    "flip-bit");  // a middle frame: the final state stays the same
   const auto flipped = compute_with(testing::candidate("perturbing_candidate.sh"), work);
   const auto problems = compare_manifest(golden, flipped, kRegenerate);
   // Every scene's trajectory changed by one bit; each is named, then the hint.
   ASSERT_EQ(problems.size(), golden.size() + 1);
   EXPECT_NE(problems[0].find("assets/basics/spring_chain_explicit.xml: the trajectory changed"),
-            std::string::npos) << problems[0];
+            std::string::npos)
+      << problems[0];
   EXPECT_NE(problems[0].find("the final state is unchanged, so an earlier frame differs"),
-            std::string::npos) << problems[0];
+            std::string::npos)
+      << problems[0];
   EXPECT_NE(problems.back().find(kRegenerate), std::string::npos);
 }
 
@@ -93,14 +96,22 @@ TEST(Manifest, NewRemovedFailingAndHandEditedScenesAreReported) {
   a_crashed.status = "crashed";
   ManifestEntry c_edited = c;
   c_edited.final_state = "0\t1\t3\n";
-  const auto problems = compare_manifest({a, b, c_edited}, {a_crashed, c, ManifestEntry{"s/new.xml", "ok", 3, 96, std::string(64, 'n'), "0\t1\t2\n"}}, kRegenerate);
+  const auto problems = compare_manifest(
+      {a, b, c_edited},
+      {a_crashed, c, ManifestEntry{"s/new.xml", "ok", 3, 96, std::string(64, 'n'), "0\t1\t2\n"}},
+      kRegenerate);
   ASSERT_EQ(problems.size(), 5u);
-  EXPECT_NE(problems[0].find("s/a.xml: FOSSSim's run now ends with status \"crashed\""), std::string::npos);
+  EXPECT_NE(problems[0].find("s/a.xml: FOSSSim's run now ends with status \"crashed\""),
+            std::string::npos);
   EXPECT_NE(problems[1].find("s/c.xml: the digest matches but the manifest's final state does not"),
-            std::string::npos) << problems[1];
-  EXPECT_NE(problems[2].find("s/new.xml: not in the manifest (a new scene?); run `REGENERATE-COMMAND`"),
-            std::string::npos) << problems[2];
-  EXPECT_NE(problems[3].find("s/b.xml: in the manifest, but the scene was not found"), std::string::npos);
+            std::string::npos)
+      << problems[1];
+  EXPECT_NE(
+      problems[2].find("s/new.xml: not in the manifest (a new scene?); run `REGENERATE-COMMAND`"),
+      std::string::npos)
+      << problems[2];
+  EXPECT_NE(problems[3].find("s/b.xml: in the manifest, but the scene was not found"),
+            std::string::npos);
 }
 
 TEST(Manifest, UpdateRemovesFinalStatesOfRemovedScenes) {

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 #include <tinyxml2.h>
 
-#include <nlohmann/json.hpp>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <thread>
 
@@ -30,14 +30,15 @@ std::string without_times(const std::string& report) {
 
 TEST(OracleCommand, GradesTheSuiteAndWritesBothReports) {
   TemporaryFolder out;
-  const ChildOutcome run = oracle({"grade", "--candidate", testing::kFossSim, "-j", "2",
-                                   testing::kAssets, "--extra-credit", testing::kExtraCredit,
-                                   "--junit", out / "reports/junit.xml", "--gradescope",
-                                   out / "reports/results.json"});
+  const ChildOutcome run =
+      oracle({"grade", "--candidate", testing::kFossSim, "-j", "2", testing::kAssets,
+              "--extra-credit", testing::kExtraCredit, "--junit", out / "reports/junit.xml",
+              "--gradescope", out / "reports/results.json"});
   EXPECT_EQ(run.exit_status, 0) << run.stdout_tail << run.stderr_tail;
   EXPECT_NE(run.stdout_tail.find("assets/implicit/orbit_implicit.xml"), std::string::npos);
   EXPECT_NE(run.stdout_tail.find("Regular scenes: 4 of 4 passed; extra credit: 1 of 1 passed."),
-            std::string::npos) << run.stdout_tail;
+            std::string::npos)
+      << run.stdout_tail;
   EXPECT_NE(run.stderr_tail.find("[5/5] PASS"), std::string::npos) << run.stderr_tail;
   tinyxml2::XMLDocument junit;
   ASSERT_EQ(junit.LoadFile((out / "reports/junit.xml").c_str()), tinyxml2::XML_SUCCESS);
@@ -51,22 +52,25 @@ TEST(OracleCommand, MergedShardsGiveTheSameReportsAsOneRun) {
   TemporaryFolder out;
   testing::use_perturbing_candidate(17, 2, 0, "1e-9");
   const std::string candidate = testing::candidate("perturbing_candidate.sh");
-  const std::vector<std::string> suite = {testing::kAssets, "--extra-credit", testing::kExtraCredit};
+  const std::vector<std::string> suite = {testing::kAssets, "--extra-credit",
+                                          testing::kExtraCredit};
   auto grade = [&](std::vector<std::string> extra) {
     std::vector<std::string> arguments = {"grade", "-q", "--candidate", candidate};
     arguments.insert(arguments.end(), suite.begin(), suite.end());
     arguments.insert(arguments.end(), extra.begin(), extra.end());
     return oracle(arguments);
   };
-  const ChildOutcome whole = grade({"-j", "2", "--junit", out / "whole.xml", "--gradescope", out / "whole.json"});
+  const ChildOutcome whole =
+      grade({"-j", "2", "--junit", out / "whole.xml", "--gradescope", out / "whole.json"});
   EXPECT_EQ(whole.exit_status, 1) << whole.stderr_tail;  // the perturbed scenes fail
   for (const char* shard : {"1/3", "2/3", "3/3"}) {
     const std::string name = std::string("shard") + shard[0] + ".json";
     const ChildOutcome part = grade({"--shard", shard, "--shard-result", out / name});
     EXPECT_NE(part.exit_status, 2) << part.stderr_tail;
   }
-  const ChildOutcome merged = oracle({"merge", out / "shard3.json", out / "shard1.json", out / "shard2.json",
-                                      "--junit", out / "merged.xml", "--gradescope", out / "merged.json"});
+  const ChildOutcome merged =
+      oracle({"merge", out / "shard3.json", out / "shard1.json", out / "shard2.json", "--junit",
+              out / "merged.xml", "--gradescope", out / "merged.json"});
   EXPECT_EQ(merged.exit_status, 1) << merged.stderr_tail;
   EXPECT_EQ(without_times(testing::read_bytes(out / "merged.xml")),
             without_times(testing::read_bytes(out / "whole.xml")));
@@ -84,27 +88,31 @@ TEST(OracleCommand, MergedShardsGiveTheSameReportsAsOneRun) {
 TEST(OracleCommand, DiagnosesAFailingSceneInItsFolder) {
   TemporaryFolder out;
   testing::use_perturbing_candidate(17, 2, 0, "1e-9");
-  const ChildOutcome run = oracle({"grade", "-q", "--candidate", testing::candidate("perturbing_candidate.sh"),
-                                   testing::kChainScene, "--diagnose-dir", out / "diagnosis"});
+  const ChildOutcome run =
+      oracle({"grade", "-q", "--candidate", testing::candidate("perturbing_candidate.sh"),
+              testing::kChainScene, "--diagnose-dir", out / "diagnosis"});
   EXPECT_EQ(run.exit_status, 1);
   EXPECT_NE(run.stdout_tail.find("FAIL"), std::string::npos);
   EXPECT_NE(run.stdout_tail.find("step 17, particle 2"), std::string::npos) << run.stdout_tail;
   for (const char* suffix : {".diagnosis.txt", ".residuals.tsv", ".residuals.svg"}) {
-    EXPECT_TRUE(std::filesystem::exists(out / (std::string("diagnosis/spring_chain_explicit") + suffix)))
+    EXPECT_TRUE(
+        std::filesystem::exists(out / (std::string("diagnosis/spring_chain_explicit") + suffix)))
         << suffix;
   }
 }
 
 TEST(OracleCommand, ExitStatusesForBadInput) {
-  EXPECT_EQ(oracle({"grade", "--candidate", testing::kFossSim, "--shard", "3/2", testing::kAssets}).exit_status, 2);
+  EXPECT_EQ(oracle({"grade", "--candidate", testing::kFossSim, "--shard", "3/2", testing::kAssets})
+                .exit_status,
+            2);
   EXPECT_EQ(oracle({"grade", "--candidate", testing::kFossSim, "/no/such/folder"}).exit_status, 2);
   EXPECT_EQ(oracle({"grade", testing::kAssets}).exit_status, 2);  // --candidate is required
   EXPECT_EQ(oracle({"nonsense"}).exit_status, 2);
   EXPECT_EQ(oracle({"--help"}).exit_status, 0);
   // A candidate that is not there fails every scene, but the run completes and reports.
   TemporaryFolder out;
-  const ChildOutcome missing = oracle({"grade", "-q", "--candidate", out / "nothing", testing::kAssets,
-                                       "--junit", out / "junit.xml"});
+  const ChildOutcome missing = oracle({"grade", "-q", "--candidate", out / "nothing",
+                                       testing::kAssets, "--junit", out / "junit.xml"});
   EXPECT_EQ(missing.exit_status, 1);
   EXPECT_NE(missing.stdout_tail.find("CANNOT-RUN"), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(out / "junit.xml"));
@@ -123,7 +131,8 @@ TEST(OracleCommand, InterruptStopsTheRunningCandidateAndWritesNoReports) {
        out / "junit.xml", testing::kAssets, pid_file},
       60.0);
   EXPECT_EQ(run.stdout_tail, "status 130\n") << run.stderr_tail;
-  EXPECT_NE(run.stderr_tail.find("interrupted; no reports written"), std::string::npos) << run.stderr_tail;
+  EXPECT_NE(run.stderr_tail.find("interrupted; no reports written"), std::string::npos)
+      << run.stderr_tail;
   EXPECT_FALSE(std::filesystem::exists(out / "junit.xml"));
   int sleeper = 0;
   std::ifstream(pid_file) >> sleeper;
@@ -143,25 +152,31 @@ TEST(OracleCommand, InterruptStopsTheRunningCandidateAndWritesNoReports) {
 TEST(OracleCommand, ManifestUpdateThenCheckAndADetectedChange) {
   TemporaryFolder out;
   const std::string manifest = out / "manifest";
-  const ChildOutcome update = oracle({"manifest", "update", "--candidate", testing::kFossSim, "--manifest",
-                                      manifest, testing::kAssets, testing::kExtraCredit, out / "absent"});
+  const ChildOutcome update =
+      oracle({"manifest", "update", "--candidate", testing::kFossSim, "--manifest", manifest,
+              testing::kAssets, testing::kExtraCredit, out / "absent"});
   ASSERT_EQ(update.exit_status, 0) << update.stderr_tail;
-  const ChildOutcome check = oracle({"manifest", "check", "--candidate", testing::kFossSim, "--manifest",
-                                     manifest, "-j", "2", testing::kAssets, testing::kExtraCredit});
+  const ChildOutcome check =
+      oracle({"manifest", "check", "--candidate", testing::kFossSim, "--manifest", manifest, "-j",
+              "2", testing::kAssets, testing::kExtraCredit});
   EXPECT_EQ(check.exit_status, 0) << check.stdout_tail;
   EXPECT_NE(check.stdout_tail.find("All 5 scenes match"), std::string::npos);
   // Checking only some folders reports the others' entries as gone.
-  const ChildOutcome partial = oracle({"manifest", "check", "--candidate", testing::kFossSim, "--manifest",
-                                       manifest, testing::kAssets});
+  const ChildOutcome partial = oracle({"manifest", "check", "--candidate", testing::kFossSim,
+                                       "--manifest", manifest, testing::kAssets});
   EXPECT_EQ(partial.exit_status, 1);
-  EXPECT_NE(partial.stdout_tail.find("extracreditassets/vortex/vortex_symplectic.xml: in the manifest"),
-            std::string::npos) << partial.stdout_tail;
+  EXPECT_NE(
+      partial.stdout_tail.find("extracreditassets/vortex/vortex_symplectic.xml: in the manifest"),
+      std::string::npos)
+      << partial.stdout_tail;
   // A trajectory that changes by one bit while the manifest does not fails the check.
   testing::use_perturbing_candidate(5, 0, 3, "flip-bit");
-  const ChildOutcome changed = oracle({"manifest", "check", "--candidate", testing::candidate("perturbing_candidate.sh"),
-                                       "--manifest", manifest, testing::kAssets, testing::kExtraCredit});
+  const ChildOutcome changed =
+      oracle({"manifest", "check", "--candidate", testing::candidate("perturbing_candidate.sh"),
+              "--manifest", manifest, testing::kAssets, testing::kExtraCredit});
   EXPECT_EQ(changed.exit_status, 1);
-  EXPECT_NE(changed.stdout_tail.find("the trajectory changed"), std::string::npos) << changed.stdout_tail;
+  EXPECT_NE(changed.stdout_tail.find("the trajectory changed"), std::string::npos)
+      << changed.stdout_tail;
   EXPECT_NE(changed.stdout_tail.find("cmake --build --preset release --target oracle-manifest"),
             std::string::npos);
 }

@@ -29,7 +29,8 @@ inline SceneResult sample_result(const std::string& name, Verdict verdict, bool 
   if (verdict == Verdict::kFailed) {
     r.residuals = Residuals{3e-9, 0.0, 1e-9, std::numeric_limits<double>::quiet_NaN()};
     r.first_divergence = DivergencePoint{17, 2, 1e-9, 0.0};
-    r.reason = "Maximum Position Residual 1e-09 (limit 1e-10); first divergence at step 17, particle 2";
+    r.reason =
+        "Maximum Position Residual 1e-09 (limit 1e-10); first divergence at step 17, particle 2";
     r.details = "First divergence at step 17, particle 2: position residual 1e-09\n";
   } else if (verdict != Verdict::kPassed) {
     r.reason = kNastyReason;

@@ -19,7 +19,9 @@ namespace {
 
 using testing::TemporaryFolder;
 
-SceneEntry chain_scene() { return {"assets/basics/spring_chain_explicit.xml", testing::kChainScene, false}; }
+SceneEntry chain_scene() {
+  return {"assets/basics/spring_chain_explicit.xml", testing::kChainScene, false};
+}
 
 GradingOptions options_for(const std::string& candidate, const TemporaryFolder& work) {
   GradingOptions options;
@@ -132,7 +134,8 @@ TEST(GradeScene, ShortFileFails) {
   const std::string good = testing::fosssim_trajectory(testing::kChainScene, work);
   const SceneResult whole_frames = grade_copied(good.substr(0, good.size() / 2), work);
   EXPECT_EQ(whole_frames.verdict, Verdict::kShort);
-  EXPECT_TRUE(contains(whole_frames.reason, "3264 bytes, but the scene needs 6528")) << whole_frames.reason;
+  EXPECT_TRUE(contains(whole_frames.reason, "3264 bytes, but the scene needs 6528"))
+      << whole_frames.reason;
   const SceneResult cut_frame = grade_copied(good.substr(0, good.size() - 5), work);
   EXPECT_EQ(cut_frame.verdict, Verdict::kShort);
 }
@@ -183,8 +186,8 @@ TEST(GradeScene, RandomBytesFailAtTheFirstStep) {
 
 TEST(GradeScene, NonZeroExitFailsEvenWithAGoodFileAndKeepsStandardError) {
   TemporaryFolder work;
-  const SceneResult r = grade_copied(testing::fosssim_trajectory(testing::kChainScene, work), work, 3,
-                                     "solver <exploded> & \"died\"");
+  const SceneResult r = grade_copied(testing::fosssim_trajectory(testing::kChainScene, work), work,
+                                     3, "solver <exploded> & \"died\"");
   EXPECT_EQ(r.verdict, Verdict::kExitStatus);
   EXPECT_TRUE(contains(r.reason, "exited with status 3"));
   EXPECT_EQ(r.stderr_tail, "solver <exploded> & \"died\"");
@@ -219,11 +222,13 @@ TEST(GradeScene, HangIsKilledAtTheTimeout) {
 
 TEST(GradeScene, MissingAndNonExecutableCandidatesFailEveryScene) {
   TemporaryFolder work;
-  const SceneResult missing = grade_scene(chain_scene(), options_for(work / "no-such-simulator", work));
+  const SceneResult missing =
+      grade_scene(chain_scene(), options_for(work / "no-such-simulator", work));
   EXPECT_EQ(missing.verdict, Verdict::kCannotRun);
   EXPECT_TRUE(contains(missing.reason, "does not exist")) << missing.reason;
   testing::write_bytes(work / "not-executable.sh", "#!/bin/sh\nexit 0\n");
-  const SceneResult denied = grade_scene(chain_scene(), options_for(work / "not-executable.sh", work));
+  const SceneResult denied =
+      grade_scene(chain_scene(), options_for(work / "not-executable.sh", work));
   EXPECT_EQ(denied.verdict, Verdict::kCannotRun);
   EXPECT_TRUE(contains(denied.reason, "not executable")) << denied.reason;
 }
@@ -243,11 +248,12 @@ TEST(GradeScenes, OneBadCandidateRunDoesNotStopTheBatch) {
   auto scenes = discover_scenes({testing::kAssets}, {testing::kExtraCredit});
   ASSERT_TRUE(scenes);
   std::size_t finished = 0;
-  const auto results = grade_scenes(*scenes, options_for(testing::candidate("crashing_candidate.sh"), work), 2,
-                                    [&finished](const SceneResult&, std::size_t done, std::size_t total) {
-                                      EXPECT_EQ(done, ++finished);
-                                      EXPECT_EQ(total, 5u);
-                                    });
+  const auto results =
+      grade_scenes(*scenes, options_for(testing::candidate("crashing_candidate.sh"), work), 2,
+                   [&finished](const SceneResult&, std::size_t done, std::size_t total) {
+                     EXPECT_EQ(done, ++finished);
+                     EXPECT_EQ(total, 5u);
+                   });
   ASSERT_EQ(results.size(), 5u);
   for (std::size_t k = 0; k < results.size(); ++k) {
     EXPECT_EQ(results[k].name, (*scenes)[k].name);  // in scene order, whatever finished first

@@ -18,12 +18,12 @@ std::vector<std::string> names(const std::vector<SceneEntry>& entries) {
 TEST(DiscoverScenes, NamesScenesByFolderNameAndSortsRegularBeforeExtraCredit) {
   auto scenes = discover_scenes({testing::kAssets}, {testing::kExtraCredit});
   ASSERT_TRUE(scenes) << scenes.error();
-  EXPECT_EQ(names(*scenes), (std::vector<std::string>{
-                                "assets/basics/spring_chain_explicit.xml",
-                                "assets/basics/spring_chain_symplectic.xml",
-                                "assets/implicit/damped_spring_linearized.xml",
-                                "assets/implicit/orbit_implicit.xml",
-                                "extracreditassets/vortex/vortex_symplectic.xml"}));
+  EXPECT_EQ(
+      names(*scenes),
+      (std::vector<std::string>{
+          "assets/basics/spring_chain_explicit.xml", "assets/basics/spring_chain_symplectic.xml",
+          "assets/implicit/damped_spring_linearized.xml", "assets/implicit/orbit_implicit.xml",
+          "extracreditassets/vortex/vortex_symplectic.xml"}));
   EXPECT_FALSE((*scenes)[3].extra_credit);
   EXPECT_TRUE((*scenes)[4].extra_credit);
   EXPECT_EQ((*scenes)[0].suite(), "assets/basics");

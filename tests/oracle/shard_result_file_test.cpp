@@ -50,7 +50,8 @@ TEST(ShardResultFile, RoundTripsEveryFieldBitForBit) {
 TEST(ShardResultFile, RejectsOtherFiles) {
   EXPECT_FALSE(parse_shard_result("not json", "x"));
   EXPECT_FALSE(parse_shard_result("{\"tests\": []}", "x"));
-  auto wrong = parse_shard_result("{\"format\": \"fosssim-oracle-results\", \"version\": 99}", "x.json");
+  auto wrong =
+      parse_shard_result("{\"format\": \"fosssim-oracle-results\", \"version\": 99}", "x.json");
   ASSERT_FALSE(wrong);
   EXPECT_NE(wrong.error().find("version 99"), std::string::npos);
 }

@@ -77,11 +77,14 @@ inline std::string fosssim_trajectory(const std::string& scene, const TemporaryF
 
 /// Sets an environment variable for the candidates this test starts (each test runs in a
 /// process of its own under ctest).
-inline void set_env(const char* name, const std::string& value) { ::setenv(name, value.c_str(), 1); }
+inline void set_env(const char* name, const std::string& value) {
+  ::setenv(name, value.c_str(), 1);
+}
 
 /// Configures candidates/perturbing_candidate.sh: FOSSSim's trajectory with `change` ("1e-9",
 /// or "flip-bit") applied to frame `frame`, particle `particle`, component `component`.
-inline void use_perturbing_candidate(int frame, int particle, int component, const std::string& change) {
+inline void use_perturbing_candidate(int frame, int particle, int component,
+                                     const std::string& change) {
   set_env("FOSSSIM", kFossSim);
   set_env("PERTURB_TOOL", kPerturbTool);
   set_env("PERTURB_FRAME", std::to_string(frame));

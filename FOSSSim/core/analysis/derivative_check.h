@@ -19,9 +19,9 @@ enum class Derivative {
 const char* derivative_name(Derivative which);
 
 struct DerivativeCheckOptions {
-  double step = 1e-6;            ///< finite-difference step ε in q, in the units of q
-  double velocity_step = 1e-4;   ///< finite-difference step in v for hessV, in the units of v
-  int random_directions = 8;  ///< random unit directions u checked
+  double step = 1e-6;             ///< finite-difference step ε in q, in the units of q
+  double velocity_step = 1e-4;    ///< finite-difference step in v for hessV, in the units of v
+  int random_directions = 8;      ///< random unit directions u checked
   int all_directions_up_to = 60;  ///< also check every unit vector e_k when #DOFs ≤ this
   unsigned seed = 1;
   double relative_tolerance = 1e-6;  ///< pass when error ≤ rtol·scale + the round-off floor
@@ -32,7 +32,7 @@ struct DerivativeCheck {
   std::string force;
   Derivative which = Derivative::kGradient;
   double absolute_error = 0.0;  ///< ‖analytic·u - finite difference‖
-  double scale = 0.0;           ///< max(‖analytic·u‖, ‖finite difference‖) in that direction
+  double scale = 0.0;  ///< max(‖analytic·u‖, ‖finite difference‖) in that direction
   /// Round-off level of the comparison: ε_machine·1e3·(|U|/ε + ‖gradE‖ + |q|_∞‖hessX u‖) for
   /// the gradient, ε_machine·1e3·(‖gradE‖/ε + |x|_∞‖H‖) for a Hessian H in x = q or v.
   double noise_floor = 0.0;

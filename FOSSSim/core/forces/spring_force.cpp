@@ -89,8 +89,8 @@ std::unique_ptr<Force> make_spring_force(ForceParameters& params, const ForceCon
   const auto xj = context.positions.segment(dim * edge.j, dim);
   if (xi == xj && (l0 != 0.0 || b != 0.0)) {
     params.fail("edge " + std::to_string(e) + " has zero length (particles " +
-                            std::to_string(edge.i) + " and " + std::to_string(edge.j) +
-                            " coincide), so the spring's direction is undefined");
+                std::to_string(edge.i) + " and " + std::to_string(edge.j) +
+                " coincide), so the spring's direction is undefined");
   }
   return make_for_dim<SpringForce>(dim, edge.i, edge.j, k, l0, b);
 }

@@ -22,8 +22,9 @@ void VortexForce<D>::add_hessian_x(const ForceInput& in, HessianBuilder& hessian
   const double l = d.norm();
   const double l2 = l * l;
   const double l3 = l2 * l;
-  const Mat<D> J = kvc_ * (kbs_ * (rotation_ / l3 - (3.0 / (l3 * l2)) * rotation_ * d * d.transpose()) +
-                           (2.0 / (l2 * l2)) * dv * d.transpose());
+  const Mat<D> J =
+      kvc_ * (kbs_ * (rotation_ / l3 - (3.0 / (l3 * l2)) * rotation_ * d * d.transpose()) +
+              (2.0 / (l2 * l2)) * dv * d.transpose());
   hessian.add_pair<D>(i_, j_, Mat<D>(-J));
 }
 
@@ -50,7 +51,8 @@ std::unique_ptr<Force> make_vortex_force(ForceParameters& params, const ForceCon
     rotation << 0.0, -1.0, 1.0, 0.0;
     return std::make_unique<VortexForce<2>>(i, j, kbs, kvc, rotation);
   }
-  Vec<3> axis(params.number_or("ax", 0.0), params.number_or("ay", 0.0), params.number_or("az", 1.0));
+  Vec<3> axis(params.number_or("ax", 0.0), params.number_or("ay", 0.0),
+              params.number_or("az", 1.0));
   if (axis.norm() == 0.0) params.fail("ax", "the vortex axis (ax, ay, az) must not be zero");
   axis.normalize();
   Mat<3> rotation;  // the cross-product matrix: rotation * a = axis × a

@@ -46,8 +46,9 @@ ImplicitEuler::NewtonResult ImplicitEuler::solve(const SceneModel& model, const 
     const SparseMatrix A = assemble_step_matrix(model, state.q + h * v, v, h, scratch_);
     const auto delta = solver_.solve(A, rhs);
     if (!delta) {
-      throw StepError(state.step + 1, "implicit Euler: the Newton matrix is singular at iteration " +
-                                          std::to_string(iteration));
+      throw StepError(state.step + 1,
+                      "implicit Euler: the Newton matrix is singular at iteration " +
+                          std::to_string(iteration));
     }
     result.iterations = iteration;
     result.last_correction_norm = delta->norm();
@@ -114,15 +115,14 @@ void ImplicitEuler::advance(const SceneModel& model, State& state) {
     result = solve(model, state, /*line_search=*/true, dv);
     if (!result.converged) {
       const NewtonSettings& newton = model.integrator.newton;
-      throw StepError(state.step + 1,
-                      "implicit Euler: Newton's method did not converge in " +
-                          std::to_string(newton.max_iterations) +
-                          " iterations (last correction norm " +
-                          to_text(plain.last_correction_norm) + ", tolerance " +
-                          to_text(newton.tolerance) +
-                          "), nor with a line search (last correction norm " +
-                          to_text(result.last_correction_norm) +
-                          "); try a smaller time step or --newton-max-iterations");
+      throw StepError(state.step + 1, "implicit Euler: Newton's method did not converge in " +
+                                          std::to_string(newton.max_iterations) +
+                                          " iterations (last correction norm " +
+                                          to_text(plain.last_correction_norm) + ", tolerance " +
+                                          to_text(newton.tolerance) +
+                                          "), nor with a line search (last correction norm " +
+                                          to_text(result.last_correction_norm) +
+                                          "); try a smaller time step or --newton-max-iterations");
     }
     ++line_search_steps_;
   }

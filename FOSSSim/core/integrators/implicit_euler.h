@@ -56,8 +56,8 @@ class ImplicitEuler final : public Integrator {
                       const Vector& rhs, const Vector& newton_step) const;
   /// A fraction of the Newton step that decreases ‖rhs‖² enough (Armijo); rhs becomes the
   /// residual at dv plus that step.
-  Vector residual_step(const SceneModel& model, const State& state, const Vector& dv,
-                       Vector& rhs, const Vector& newton_step) const;
+  Vector residual_step(const SceneModel& model, const State& state, const Vector& dv, Vector& rhs,
+                       const Vector& newton_step) const;
 
   StepSolver solver_;
   HessianBuilder scratch_;

@@ -12,7 +12,8 @@ void LinearizedImplicitEuler::advance(const SceneModel& model, State& state) {
   zero_fixed(model, rhs);
   const SparseMatrix A = assemble_step_matrix(model, predicted_q, state.v, h, scratch_);
   const auto dv = solver_.solve(A, rhs);
-  if (!dv) throw StepError(state.step + 1, "linearized implicit Euler: the step matrix is singular");
+  if (!dv)
+    throw StepError(state.step + 1, "linearized implicit Euler: the step matrix is singular");
   state.v += *dv;
   state.q += h * state.v;
 }

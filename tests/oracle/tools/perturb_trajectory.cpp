@@ -39,8 +39,10 @@ int main(int argc, char** argv) {
     return 2;
   }
   // Frame layout: dofs positions, then dofs velocities.
-  const int index = component < dim ? dim * particle + component : dofs + dim * particle + component - dim;
-  const std::int64_t offset = frame * fosssim::trajectory_frame_bytes(dofs) + 8 * std::int64_t(index);
+  const int index =
+      component < dim ? dim * particle + component : dofs + dim * particle + component - dim;
+  const std::int64_t offset =
+      frame * fosssim::trajectory_frame_bytes(dofs) + 8 * std::int64_t(index);
   std::fstream file(argv[2], std::ios::in | std::ios::out | std::ios::binary);
   double value = 0.0;
   if (!file.seekg(offset) || !file.read(reinterpret_cast<char*>(&value), sizeof(value))) {
