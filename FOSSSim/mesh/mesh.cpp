@@ -148,12 +148,4 @@ std::vector<int> select_extreme_vertices(const Mesh& mesh, int axis, bool highes
   return selected;
 }
 
-double compute_mean_spring_length(const Mesh& mesh) {
-  const auto pairs = compute_spring_pairs(mesh);
-  if (pairs.empty()) return 0.0;
-  double sum = 0.0;
-  for (const auto& [a, b] : pairs) sum += (mesh.vertices[a] - mesh.vertices[b]).norm();
-  return sum / static_cast<double>(pairs.size());
-}
-
 }  // namespace fosssim

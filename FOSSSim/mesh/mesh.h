@@ -65,7 +65,4 @@ Expected<std::vector<double>, std::string> compute_vertex_masses(const Mesh& mes
 /// units of the lowest y". In increasing order.
 std::vector<int> select_extreme_vertices(const Mesh& mesh, int axis, bool highest, double within);
 
-/// The mean length of the springs' edges in the mesh's current shape (0 without springs).
-double compute_mean_spring_length(const Mesh& mesh);
-
 }  // namespace fosssim

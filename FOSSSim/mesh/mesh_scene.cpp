@@ -47,6 +47,7 @@ Expected<std::unique_ptr<Force>, std::string> append_mesh(Scene& scene, const Me
   std::vector<SpringTerm> springs;
   springs.reserve(pairs.size());
   const int first = model.num_particles();
+  double total_length = 0.0;
   for (const auto& [a, b] : pairs) {
     const double length = (mesh.vertices[a] - mesh.vertices[b]).norm();
     if (length == 0.0) {
@@ -54,6 +55,7 @@ Expected<std::unique_ptr<Force>, std::string> append_mesh(Scene& scene, const Me
              " (0-based) coincide, so the spring between them has no direction";
     }
     springs.push_back({first + a, first + b, material.k, length, material.b});
+    total_length += length;
   }
 
   // Particles.
@@ -75,7 +77,9 @@ Expected<std::unique_ptr<Force>, std::string> append_mesh(Scene& scene, const Me
   scene.particle_tags.resize(total);
 
   // Edges and appearance.
-  const double length = compute_mean_spring_length(mesh);
+  // The mean spring length sets the drawn sizes.
+  const double length =
+      springs.empty() ? 0.0 : total_length / static_cast<double>(springs.size());
   Appearance& look = scene.appearance;
   look.particle_radius.resize(total, kParticleRadiusPerLength * length);
   look.particle_color.resize(total, Appearance::kDefaultMeshColor);
