@@ -1,5 +1,6 @@
 #include "mesh/mesh_scene.h"
 
+#include "core/forces/make_for_dim.h"
 #include "core/forces/spring_set_force.h"
 #include "core/text.h"
 
@@ -10,12 +11,6 @@ namespace {
 /// Particles drawn at this fraction of the mean spring length, edges at a third of it.
 constexpr double kParticleRadiusPerLength = 0.15;
 constexpr double kEdgeRadiusPerLength = 0.05;
-
-std::unique_ptr<Force> make_spring_set(int dim, std::vector<SpringTerm> springs,
-                                       const std::string& label) {
-  if (dim == 3) return std::make_unique<SpringSetForce<3>>(std::move(springs), label);
-  return std::make_unique<SpringSetForce<2>>(std::move(springs), label);
-}
 
 }  // namespace
 
@@ -78,8 +73,7 @@ Expected<std::unique_ptr<Force>, std::string> append_mesh(Scene& scene, const Me
 
   // Edges and appearance.
   // The mean spring length sets the drawn sizes.
-  const double length =
-      springs.empty() ? 0.0 : total_length / static_cast<double>(springs.size());
+  const double length = springs.empty() ? 0.0 : total_length / static_cast<double>(springs.size());
   Appearance& look = scene.appearance;
   look.particle_radius.resize(total, kParticleRadiusPerLength * length);
   look.particle_color.resize(total, Appearance::kDefaultMeshColor);
@@ -103,7 +97,7 @@ Expected<std::unique_ptr<Force>, std::string> append_mesh(Scene& scene, const Me
     for (int v : face) inside[v] = false;
   for (int v = 0; v < n; ++v)
     if (inside[v]) look.interior_particles.push_back(first + v);
-  return make_spring_set(dim, std::move(springs), label);
+  return make_for_dim<SpringSetForce>(dim, std::move(springs), label);
 }
 
 }  // namespace fosssim

@@ -1,67 +1,51 @@
 #include "core/forces/spring_force.h"
 
-#include <algorithm>
-
 #include "core/forces/make_for_dim.h"
+#include "core/forces/spring_kernel.h"
 #include "core/scene_model.h"
 
 namespace fosssim {
 
+// The spring's math is spring_kernel.h's, shared with SpringSetForce (which is tested to give
+// the same bits).
+
+template <int D>
+Vec<D> SpringForce<D>::extension(const Vector& q) const {
+  return particle_vec<D>(q, j_) - particle_vec<D>(q, i_);
+}
+
+template <int D>
+Vec<D> SpringForce<D>::relative_velocity(const Vector& v) const {
+  if (b_ == 0.0) return Vec<D>::Zero();
+  return particle_vec<D>(v, j_) - particle_vec<D>(v, i_);
+}
+
 template <int D>
 void SpringForce<D>::add_energy(const ForceInput& in, double& energy) const {
-  const Vec<D> d = particle_vec<D>(in.q, j_) - particle_vec<D>(in.q, i_);
-  const double stretch = d.norm() - l0_;
-  energy += 0.5 * k_ * stretch * stretch;
+  energy += spring_energy<D>(extension(in.q), k_, l0_);
 }
 
 template <int D>
 void SpringForce<D>::add_gradient(const ForceInput& in, Vector& gradient) const {
-  const Vec<D> d = particle_vec<D>(in.q, j_) - particle_vec<D>(in.q, i_);
-  const double l = d.norm();
-  Vec<D> force_i;
-  if (l == 0.0 && l0_ == 0.0) {
-    force_i = k_ * d;
-  } else {
-    const Vec<D> n = d / l;
-    force_i = k_ * (l - l0_) * n;
-    if (b_ != 0.0) {
-      const Vec<D> dv = particle_vec<D>(in.v, j_) - particle_vec<D>(in.v, i_);
-      force_i += b_ * n.dot(dv) * n;
-    }
-  }
+  const Vec<D> force_i =
+      spring_force_on_i<D>(extension(in.q), relative_velocity(in.v), k_, l0_, b_);
   gradient.template segment<D>(D * i_) -= force_i;
   gradient.template segment<D>(D * j_) += force_i;
 }
 
 template <int D>
 void SpringForce<D>::add_hessian_x(const ForceInput& in, HessianBuilder& hessian) const {
-  const Vec<D> d = particle_vec<D>(in.q, j_) - particle_vec<D>(in.q, i_);
-  const double l = d.norm();
-  const Mat<D> I = Mat<D>::Identity();
-  if (l == 0.0 && l0_ == 0.0) {
-    hessian.add_pair<D>(i_, j_, k_ * I);
-    return;
-  }
-  const Vec<D> n = d / l;
-  const Mat<D> P = n * n.transpose();
-  double transverse = (l - l0_) / l;
-  if (hessian.project_definite()) transverse = std::max(transverse, 0.0);
-  Mat<D> H = k_ * (P + transverse * (I - P));
-  if (b_ != 0.0) {
-    const Vec<D> dv = particle_vec<D>(in.v, j_) - particle_vec<D>(in.v, i_);
-    H += (b_ / l) * (n * dv.transpose() + n.dot(dv) * I) * (I - P);
-  }
-  hessian.add_pair<D>(i_, j_, H);
+  hessian.add_pair<D>(i_, j_,
+                      spring_hessian_x<D>(extension(in.q), relative_velocity(in.v), k_, l0_, b_,
+                                          hessian.project_definite()));
 }
 
 template <int D>
 void SpringForce<D>::add_hessian_v(const ForceInput& in, HessianBuilder& hessian) const {
   if (b_ == 0.0) return;
-  const Vec<D> d = particle_vec<D>(in.q, j_) - particle_vec<D>(in.q, i_);
-  const double l = d.norm();
-  if (l == 0.0 && l0_ == 0.0) return;  // the damping direction is undefined, as in add_gradient
-  const Vec<D> n = d / l;
-  hessian.add_pair<D>(i_, j_, Mat<D>(b_ * n * n.transpose()));
+  const Vec<D> d = extension(in.q);
+  if (l0_ == 0.0 && d.norm() == 0.0) return;  // the damping direction is undefined: no entries
+  hessian.add_pair<D>(i_, j_, spring_hessian_v<D>(d, l0_, b_));
 }
 
 template <int D>

@@ -32,6 +32,11 @@ class SpringForce final : public Force {
   bool append_springs(std::vector<SpringTerm>& springs) const override;
 
  private:
+  /// x_j - x_i.
+  Vec<D> extension(const Vector& q) const;
+  /// v_j - v_i, or zero for an undamped spring (its velocity does not enter).
+  Vec<D> relative_velocity(const Vector& v) const;
+
   int i_, j_;
   double k_, l0_, b_;
 };

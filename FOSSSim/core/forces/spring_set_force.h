@@ -31,8 +31,6 @@ class SpringSetForce final : public Force {
   std::string label() const override;
   bool append_springs(std::vector<SpringTerm>& springs) const override;
 
-  const std::vector<SpringTerm>& springs() const { return springs_; }
-
  private:
   std::vector<SpringTerm> springs_;
   std::string label_;

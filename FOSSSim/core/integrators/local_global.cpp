@@ -11,8 +11,8 @@ template <int D>
 void LocalGlobal<D>::advance(const SceneModel& model, State& state) {
   const double h = model.integrator.dt;
   if (!prepared_) {
-    classify_forces(model);
-    choose_free_particles(model, state);
+    const std::vector<SpringTerm> springs = classify_forces(model);
+    choose_free_particles(model, state, springs);
     prepared_ = true;
   }
   std::vector<std::pair<int, double>> signature = collect_anchors(model, state, h);
@@ -43,20 +43,23 @@ void LocalGlobal<D>::advance(const SceneModel& model, State& state) {
 }
 
 template <int D>
-void LocalGlobal<D>::classify_forces(const SceneModel& model) {
+std::vector<SpringTerm> LocalGlobal<D>::classify_forces(const SceneModel& model) {
+  std::vector<SpringTerm> springs;
   std::vector<AnchorTerm> ignored;
   for (const auto& force : model.forces) {
-    if (force->append_springs(spring_terms_)) continue;
+    if (force->append_springs(springs)) continue;
     if (force->append_anchors(ignored)) {
       anchor_forces_.push_back(force.get());
     } else {
       explicit_forces_.push_back(force.get());
     }
   }
+  return springs;
 }
 
 template <int D>
-void LocalGlobal<D>::choose_free_particles(const SceneModel& model, const State& state) {
+void LocalGlobal<D>::choose_free_particles(const SceneModel& model, const State& state,
+                                           const std::vector<SpringTerm>& springs) {
   const int n = model.num_particles();
   const bool eliminate = settings_.pins == PinMethod::kElimination;
   free_index_.assign(n, -1);
@@ -75,7 +78,7 @@ void LocalGlobal<D>::choose_free_particles(const SceneModel& model, const State&
     pin_velocity_.row(k) = v.row(pinned_[k]);
   }
   pin_step_ = state.step;
-  for (const SpringTerm& s : spring_terms_) {
+  for (const SpringTerm& s : springs) {
     const int fi = free_index_[s.i];
     const int fj = free_index_[s.j];
     if (fi < 0 && fj < 0) continue;  // both ends eliminated: no effect on the unknowns

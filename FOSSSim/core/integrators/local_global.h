@@ -62,8 +62,10 @@ class LocalGlobal final : public Integrator {
     double k, l0, b;
   };
 
-  void classify_forces(const SceneModel& model);
-  void choose_free_particles(const SceneModel& model, const State& state);
+  /// Sorts the forces into anchor and explicit ones; returns the springs (solved implicitly).
+  std::vector<SpringTerm> classify_forces(const SceneModel& model);
+  void choose_free_particles(const SceneModel& model, const State& state,
+                             const std::vector<SpringTerm>& springs);
   /// Gathers this step's anchors; returns their (particle, stiffness) pairs, which Q depends on.
   std::vector<std::pair<int, double>> collect_anchors(const SceneModel& model, const State& state,
                                                       double h);
@@ -78,7 +80,6 @@ class LocalGlobal final : public Integrator {
   double h_ = 0.0;                             // the time step Q was factored for
   std::vector<const Force*> anchor_forces_;    // asked for anchors every step
   std::vector<const Force*> explicit_forces_;  // evaluated at (pⁿ, vⁿ)
-  std::vector<SpringTerm> spring_terms_;
   std::vector<Spring> springs_;
   std::vector<int> free_;        // free particle -> particle
   std::vector<int> free_index_;  // particle -> free particle, or -1

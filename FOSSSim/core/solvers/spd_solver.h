@@ -34,7 +34,6 @@ class SpdSolver {
   void solve_in_place(Points<C>& X) const;
 
   Method method() const { return method_; }
-  int size() const { return size_; }
   /// Non-zeros of the Cholesky factor L (dense: n(n+1)/2).
   long factor_nonzeros() const;
 
