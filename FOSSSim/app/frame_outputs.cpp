@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 
 #include "core/analysis/energy.h"
@@ -119,9 +118,7 @@ class EnergyOutput final : public FrameOutput {
     return buffer;
   }
   void write_csv(const std::string& path) const {
-    const OutputFile output(path);
-    {
-      std::ofstream out(output.write_path());
+    const auto problem = write_output_file(path, [this](std::ostream& out) {
       out << "time,kinetic,potential,total\n";
       char line[128];
       for (const EnergySample& s : samples_) {
@@ -129,13 +126,8 @@ class EnergyOutput final : public FrameOutput {
                       s.potential, s.total());
         out << line;
       }
-      out.flush();
-      if (!out) {
-        output.discard();
-        throw std::runtime_error("cannot write " + output.write_path());
-      }
-    }
-    output.commit();
+    });
+    if (problem) throw std::runtime_error(*problem);
   }
 
   const Scene& scene_;

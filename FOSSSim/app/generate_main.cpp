@@ -4,13 +4,13 @@
 
 #include <CLI/CLI.hpp>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "app/exit_codes.h"
 #include "app/parse_command_line.h"
 #include "core/text.h"
 #include "io/mesh_writer.h"
+#include "io/output_file.h"
 #include "mesh/generators.h"
 
 namespace {
@@ -34,17 +34,12 @@ std::optional<std::string> write_json_scene(const std::string& path, const std::
                                             double k, const std::vector<int>& pinned) {
   const auto relative = std::filesystem::path(mesh_path).lexically_relative(
       std::filesystem::absolute(path).parent_path());
-  std::ofstream out(path + ".partial");
-  out << "{\n  \"obj\": \"" << relative.generic_string() << "\",\n  \"k\": " << to_text(k)
-      << ",\n  \"b\": [";
-  for (std::size_t p = 0; p < pinned.size(); ++p) out << (p ? ", " : "") << pinned[p] + 1;
-  out << "]\n}\n";
-  out.close();
-  if (!out) return "cannot write " + path + ".partial";
-  std::error_code error;
-  std::filesystem::rename(path + ".partial", path, error);
-  if (error) return "cannot rename " + path + ".partial: " + error.message();
-  return std::nullopt;
+  return write_output_file(path, [&](std::ostream& out) {
+    out << "{\n  \"obj\": \"" << relative.generic_string() << "\",\n  \"k\": " << to_text(k)
+        << ",\n  \"b\": [";
+    for (std::size_t p = 0; p < pinned.size(); ++p) out << (p ? ", " : "") << pinned[p] + 1;
+    out << "]\n}\n";
+  });
 }
 
 }  // namespace

@@ -1,7 +1,6 @@
 #include "grading/grader.h"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -66,19 +65,12 @@ void print_grade_report(std::ostream& out, const GradeReport& report) {
 }
 
 void write_residual_file(const std::string& path, const GradeReport& report) {
-  const OutputFile output(path);
-  {
-    std::ofstream out(output.write_path());
+  const auto problem = write_output_file(path, [&report](std::ostream& out) {
     for (const Criterion& c : criteria_of(report)) {
       out << (c.passed ? 1 : 0) << "   " << c.value << "\n";
     }
-    out.flush();
-    if (!out) {
-      output.discard();
-      throw std::runtime_error("cannot write " + output.write_path());
-    }
-  }
-  output.commit();
+  });
+  if (problem) throw std::runtime_error(*problem);
 }
 
 std::string describe_failure(const GradeReport& report, int dim) {

@@ -1,36 +1,11 @@
 #include "io/mesh_writer.h"
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-
 #include "core/text.h"
+#include "io/output_file.h"
 
 namespace fosssim {
 
 namespace {
-
-/// Writes what `body` streams to "<path>.partial" and renames it to path when all went well.
-template <typename Body>
-std::optional<std::string> write_atomically(const std::string& path, Body body) {
-  const std::string partial = path + ".partial";
-  {
-    std::ofstream out(partial, std::ios::binary | std::ios::trunc);
-    if (!out) return "cannot create " + partial + ": " + std::strerror(errno);
-    body(out);
-    out.flush();
-    if (!out) {
-      std::remove(partial.c_str());
-      return "cannot write " + partial + " (disk full?)";
-    }
-  }
-  std::error_code error;
-  std::filesystem::rename(partial, path, error);
-  if (error) return "cannot rename " + partial + " to " + path + ": " + error.message();
-  return std::nullopt;
-}
 
 void write_vertex_line(std::ostream& out, const char* keyword, const Eigen::Vector3d& x) {
   out << keyword << to_text(x.x()) << ' ' << to_text(x.y()) << ' ' << to_text(x.z());
@@ -39,7 +14,7 @@ void write_vertex_line(std::ostream& out, const char* keyword, const Eigen::Vect
 }  // namespace
 
 std::optional<std::string> write_obj_file(const std::string& path, const Mesh& mesh) {
-  return write_atomically(path, [&mesh](std::ostream& out) {
+  return write_output_file(path, [&mesh](std::ostream& out) {
     out << "# written by FOSSSim: " << mesh.num_vertices() << " vertices, " << mesh.faces.size()
         << " faces, " << mesh.segments.size() << " extra springs (l)\n";
     for (const auto& x : mesh.vertices) {
@@ -56,7 +31,7 @@ std::optional<std::string> write_obj_file(const std::string& path, const Mesh& m
 }
 
 std::optional<std::string> write_medit_file(const std::string& path, const Mesh& mesh) {
-  return write_atomically(path, [&mesh](std::ostream& out) {
+  return write_output_file(path, [&mesh](std::ostream& out) {
     out << "MeshVersionFormatted 2\nDimension 3\n\nVertices\n" << mesh.num_vertices() << '\n';
     for (const auto& x : mesh.vertices) {
       write_vertex_line(out, "", x);

@@ -1,6 +1,12 @@
 #include "io/output_file.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
+#include <sstream>
 #include <stdexcept>
 #include <system_error>
 
@@ -45,6 +51,43 @@ void OutputFile::discard() const {
   if (in_place_) return;
   std::error_code ignored;
   fs::remove(write_path_, ignored);
+}
+
+std::optional<std::string> write_output_file(const std::string& path, const std::string& content) {
+  const OutputFile output(path);
+  const std::string& name = output.write_path();
+  const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) return "cannot create " + name + ": " + std::strerror(errno);
+  const auto fail = [&](const char* reason) {
+    ::close(fd);
+    output.discard();
+    return "cannot write " + name + ": " + reason;
+  };
+  std::size_t written = 0;
+  while (written < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return fail(std::strerror(errno));
+    written += static_cast<std::size_t>(n);
+  }
+  if (!output.in_place() && ::fsync(fd) != 0) return fail(std::strerror(errno));
+  if (::close(fd) != 0) {
+    output.discard();
+    return "cannot write " + name + ": " + std::strerror(errno);
+  }
+  try {
+    output.commit();
+  } catch (const std::runtime_error& error) {
+    return error.what();
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> write_output_file(const std::string& path,
+                                             const std::function<void(std::ostream&)>& body) {
+  std::ostringstream content;
+  body(content);
+  return write_output_file(path, content.str());
 }
 
 }  // namespace fosssim

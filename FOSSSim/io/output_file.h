@@ -1,6 +1,9 @@
 #pragma once
 // Outputs appear whole or not at all, without ever replacing a device or a link.
 
+#include <functional>
+#include <optional>
+#include <ostream>
 #include <string>
 
 namespace fosssim {
@@ -35,5 +38,14 @@ class OutputFile {
   std::string final_path_, write_path_;
   bool in_place_ = false;
 };
+
+/// Writes `content` to `path` through an OutputFile (a regular file is also flushed to disk
+/// before the rename). Returns a message naming the file and the system's reason, or nothing
+/// on success; a failed output leaves no file behind.
+std::optional<std::string> write_output_file(const std::string& path, const std::string& content);
+
+/// The same for what `body` streams.
+std::optional<std::string> write_output_file(const std::string& path,
+                                             const std::function<void(std::ostream&)>& body);
 
 }  // namespace fosssim
