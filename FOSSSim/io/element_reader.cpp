@@ -2,13 +2,9 @@
 
 #include <tinyxml2.h>
 
-#include <charconv>
-#include <cmath>
-#include <cstring>
-#include <limits>
-
 #include "core/text.h"
 #include "io/scene_error.h"
+#include "io/text_lines.h"
 
 namespace fosssim {
 
@@ -16,32 +12,15 @@ namespace {
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
-/// The text without surrounding whitespace and without one leading '+'.
+/// The attribute's text without surrounding whitespace.
 std::string_view trimmed(const char* text) {
   std::string_view s(text);
   while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
   while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
-  if (s.size() > 1 && s.front() == '+' && s[1] != '-') s.remove_prefix(1);
   return s;
 }
 
-std::string quoted(const char* text) { return std::string("\"") + text + "\""; }
-
 }  // namespace
-
-bool parse_number(const char* text, double& value) {
-  const std::string_view s = trimmed(text);
-  if (s.empty()) return false;
-  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
-  return error == std::errc() && end == s.data() + s.size() && std::isfinite(value);
-}
-
-bool parse_integer(const char* text, long long& value) {
-  const std::string_view s = trimmed(text);
-  if (s.empty()) return false;
-  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
-  return error == std::errc() && end == s.data() + s.size();
-}
 
 ElementReader::ElementReader(const tinyxml2::XMLElement& element, const std::string& file,
                              int index, int num_particles, int num_edges)
@@ -79,7 +58,9 @@ const char* ElementReader::raw(const char* name) {
 double ElementReader::number(const char* name) {
   const char* text = raw(name);
   double value = 0.0;
-  if (!parse_number(text, value)) fail(name, "must be a finite number, found " + quoted(text));
+  if (!parse_finite(trimmed(text), value)) {
+    fail(name, "must be a finite number, found " + quote(text));
+  }
   return value;
 }
 
@@ -96,19 +77,16 @@ double ElementReader::positive(const char* name) {
 
 int ElementReader::integer(const char* name) {
   const char* text = raw(name);
-  long long value = 0;
-  if (!parse_integer(text, value) || value < std::numeric_limits<int>::min() ||
-      value > std::numeric_limits<int>::max()) {
-    fail(name, "must be an integer, found " + quoted(text));
-  }
-  return static_cast<int>(value);
+  int value = 0;
+  if (!parse_int(trimmed(text), value)) fail(name, "must be an integer, found " + quote(text));
+  return value;
 }
 
 bool ElementReader::flag(const char* name) {
   const char* text = raw(name);
-  long long value = -1;
-  if (!parse_integer(text, value) || (value != 0 && value != 1)) {
-    fail(name, "must be 0 or 1, found " + quoted(text));
+  int value = -1;
+  if (!parse_int(trimmed(text), value) || (value != 0 && value != 1)) {
+    fail(name, "must be 0 or 1, found " + quote(text));
   }
   return value == 1;
 }

@@ -61,10 +61,4 @@ class ElementReader final : public ForceParameters {
   std::set<std::string> asked_;
 };
 
-/// Parses a decimal number with optional surrounding whitespace; false unless the whole text is
-/// one finite number. Locale-independent.
-bool parse_number(const char* text, double& value);
-/// Parses a whole decimal integer with optional surrounding whitespace.
-bool parse_integer(const char* text, long long& value);
-
 }  // namespace fosssim

@@ -53,6 +53,7 @@ TEST(ObjReader, RejectsMalformedLinesWithTheirNumbers) {
       {"v 0 0 0\nv 1 0\n", 2, "a vertex needs 3 coordinates"},
       {"v 0 0 0\nv 1 zero 0\n", 2, "vertex coordinate \"zero\" is not a finite number"},
       {"v 0 0 nan\n", 1, "\"nan\" is not a finite number"},
+      {"v 0 0 0\nv +-1 0 0\n", 2, "vertex coordinate \"+-1\" is not a finite number"},
       {"v 0 0 0 2\n", 1, "weight"},
       {"v 0 0 0\nv 1 0 0\n\nf 1 0\n", 4, "OBJ vertex indices start at 1"},
       {"v 0 0 0\nv 1 0 0\nf 1 2 3\n", 3, "vertex index 3 is past the last vertex (the file has 2)"},
