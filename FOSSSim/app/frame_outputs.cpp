@@ -14,14 +14,24 @@
 
 namespace fosssim {
 
+const Drawing& Frame::drawing() {
+  if (!drawing_) drawing_ = view_.compose(state_);
+  return *drawing_;
+}
+
+const Image& Frame::image() {
+  if (!image_) image_ = render_image(drawing());
+  return *image_;
+}
+
 namespace {
 
 /// -o: the trajectory file of SPEC section 5.
 class TrajectoryOutput final : public FrameOutput {
  public:
   explicit TrajectoryOutput(TrajectoryWriter writer) : writer_(std::move(writer)) {}
-  void write(const State& state, const SceneView&) override {
-    writer_.write_frame(state);
+  void write(Frame& frame) override {
+    writer_.write_frame(frame.state());
     ++frames_;
   }
   void commit() override { writer_.commit(); }
@@ -41,15 +51,14 @@ class PictureSequenceOutput final : public FrameOutput {
  public:
   PictureSequenceOutput(std::string directory, PictureFormat format)
       : directory_(std::move(directory)), format_(format) {}
-  void write(const State& state, const SceneView& view) override {
+  void write(Frame& frame) override {
     char name[64];
-    std::snprintf(name, sizeof name, "/frame_%05lld.%s", static_cast<long long>(state.step),
+    std::snprintf(name, sizeof name, "/frame_%05lld.%s", static_cast<long long>(frame.state().step),
                   format_ == PictureFormat::kSvg ? "svg" : "png");
-    const Drawing drawing = view.compose(state);
     if (format_ == PictureFormat::kSvg) {
-      write_svg(drawing, directory_ + name);
+      write_svg(frame.drawing(), directory_ + name);
     } else {
-      write_png(drawing, directory_ + name);
+      write_png(frame.image(), directory_ + name);
     }
   }
   void commit() override {}
@@ -64,8 +73,8 @@ class PictureSequenceOutput final : public FrameOutput {
 class MovieOutput final : public FrameOutput {
  public:
   MovieOutput(MovieWriter writer, int stride) : writer_(std::move(writer)), stride_(stride) {}
-  void write(const State& state, const SceneView& view) override {
-    if (state.step % stride_ == 0) writer_.write_frame(render_image(view.compose(state)));
+  void write(Frame& frame) override {
+    if (frame.state().step % stride_ == 0) writer_.write_frame(frame.image());
   }
   void commit() override { writer_.commit(); }
   std::string abandon() override {
@@ -83,9 +92,9 @@ class EnergyOutput final : public FrameOutput {
  public:
   EnergyOutput(const Scene& scene, std::string plot, std::string csv)
       : scene_(scene), plot_(std::move(plot)), csv_(std::move(csv)) {}
-  void write(const State& state, const SceneView&) override {
-    const EnergyReport e = compute_energies(scene_.model, state);
-    samples_.push_back({state.time, e.kinetic, e.potential});
+  void write(Frame& frame) override {
+    const EnergyReport e = compute_energies(scene_.model, frame.state());
+    samples_.push_back({frame.state().time, e.kinetic, e.potential});
   }
   void commit() override { write_files(""); }
   std::string abandon() override {
@@ -185,7 +194,8 @@ Expected<FrameOutputs, std::string> FrameOutputs::open(const Scene& scene, const
 }
 
 void FrameOutputs::write(const State& state, const SceneView& view) {
-  for (auto& output : outputs_) output->write(state, view);
+  Frame frame(state, view);
+  for (auto& output : outputs_) output->write(frame);
 }
 
 void FrameOutputs::commit() {

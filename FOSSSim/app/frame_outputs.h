@@ -2,15 +2,35 @@
 // Everything a run writes besides what it prints: trajectory, pictures, movie, energy.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/options.h"
 #include "core/expected.h"
 #include "core/scene.h"
+#include "pictures/image.h"
+#include "render/drawing.h"
 #include "render/scene_view.h"
 
 namespace fosssim {
+
+/// One state to write, with its picture composed and rendered at most once however many
+/// outputs want it.
+class Frame {
+ public:
+  /// `view` draws the state as the run's pictures show it.
+  Frame(const State& state, const SceneView& view) : state_(state), view_(view) {}
+  const State& state() const { return state_; }
+  const Drawing& drawing();
+  const Image& image();
+
+ private:
+  const State& state_;
+  const SceneView& view_;
+  std::optional<Drawing> drawing_;
+  std::optional<Image> image_;
+};
 
 /// Receives every state of a run in order: the initial state, then one per step. Outputs
 /// appear whole or not at all: commit() makes them final, abandon() keeps what a stopped run
@@ -18,9 +38,8 @@ namespace fosssim {
 class FrameOutput {
  public:
   virtual ~FrameOutput() = default;
-  /// Takes the next state; `view` draws it as the run's pictures show it. Throws
-  /// std::runtime_error on an I/O error.
-  virtual void write(const State& state, const SceneView& view) = 0;
+  /// Takes the next state. Throws std::runtime_error on an I/O error.
+  virtual void write(Frame& frame) = 0;
   /// The run reached its end. Throws std::runtime_error on an I/O error.
   virtual void commit() = 0;
   /// The run stopped early; returns a note on what was kept ("out.bin.incomplete holds the 12
