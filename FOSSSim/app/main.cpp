@@ -2,6 +2,7 @@
 // movies, energy plots), grades a trajectory against it, checks its derivatives, or opens the
 // window. Only this file chooses exit statuses.
 
+#include <algorithm>
 #include <iostream>
 
 #include "app/commands.h"
@@ -39,7 +40,9 @@ int main(int argc, char** argv) {
   if (!scene.description.empty() && !options.quiet) std::cout << scene.description << std::endl;
 
   if (options.check_derivatives) return run_derivative_check(scene, options);
-  if (!scene.tag.empty() && !make_step_hook(scene) && !options.quiet) {
+  const std::vector<std::string> tags = known_scene_tags();
+  if (!scene.tag.empty() && std::find(tags.begin(), tags.end(), scene.tag) == tags.end() &&
+      !options.quiet) {
     std::cerr << "FOSSSim: note: scenetag '" << scene.tag
               << "' has no scripted behaviour in FOSSSim; the scene runs without it\n";
   }

@@ -1,11 +1,11 @@
 #include "io/json_scene_reader.h"
 
 #include <algorithm>
-#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "core/forces/constant_force.h"
 #include "core/text.h"
+#include "io/mesh_reference.h"
 #include "io/obj_reader.h"
 #include "io/text_lines.h"
 #include "mesh/mesh_scene.h"
@@ -109,15 +109,8 @@ class JsonSceneParser {
     if (!root.contains("obj")) fail("the required key \"obj\" (the OBJ mesh file) is missing");
     if (!root.at("obj").is_string())
       fail("\"obj\" must be a file name, found " + root.at("obj").dump());
-    std::filesystem::path path(root.at("obj").get<std::string>());
-    if (path.is_relative()) path = std::filesystem::path(name_).parent_path() / path;
-    auto mesh = read_obj_file(path.string());
-    if (!mesh) {
-      const SceneError& e = mesh.error();
-      throw SceneError(e.file(), e.line(), e.element(),
-                       e.problem() + " (the \"obj\" of " + name_ + ")");
-    }
-    return std::move(mesh).value();
+    return read_referenced_mesh(name_, root.at("obj").get<std::string>(), read_obj_file,
+                                "the \"obj\" of " + name_);
   }
 
   /// The 0-based vertices of the 1-based list "b".

@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <array>
-#include <filesystem>
 #include <map>
 
 #include "io/element_reader.h"
 #include "io/medit_reader.h"
+#include "io/mesh_reference.h"
 #include "io/obj_reader.h"
 #include "io/text_lines.h"
 #include "mesh/generators.h"
@@ -85,15 +85,8 @@ GeneratedMesh generate(ElementReader& r) {
 template <typename Reader>
 Mesh read_mesh_file(ElementReader& r, const std::string& file, Reader reader) {
   const std::string name = r.text("file");
-  std::filesystem::path path(name);
-  if (path.is_relative()) path = std::filesystem::path(file).parent_path() / path;
-  auto mesh = reader(path.string());
-  if (!mesh) {
-    const SceneError& e = mesh.error();
-    throw SceneError(e.file(), e.line(), e.element(),
-                     e.problem() + " (the mesh of " + file + ":" + std::to_string(r.line()) + ")");
-  }
-  return std::move(mesh).value();
+  return read_referenced_mesh(file, name, reader,
+                              "the mesh of " + file + ":" + std::to_string(r.line()));
 }
 
 MassRule read_mass_rule(ElementReader& r) {

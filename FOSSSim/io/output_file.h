@@ -20,8 +20,6 @@ class OutputFile {
 
   /// The name to open for writing now.
   const std::string& write_path() const { return write_path_; }
-  /// The name the finished output will have (the link's target for a symbolic link).
-  const std::string& final_path() const { return final_path_; }
   /// True when the output is written directly (a device or FIFO), without rename.
   bool in_place() const { return in_place_; }
 
