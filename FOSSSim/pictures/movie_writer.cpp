@@ -137,7 +137,8 @@ Expected<MovieWriter, std::string> MovieWriter::open(const std::string& path,
   if (::pipe2(fds, O_CLOEXEC) != 0)
     return "cannot create a pipe: " + std::string(std::strerror(errno));
   std::FILE* log = std::tmpfile();
-  const auto arguments = ffmpeg_arguments(*program, settings, OutputFile(path).write_path());
+  OutputFile output(path);
+  const auto arguments = ffmpeg_arguments(*program, settings, output.write_path());
   std::vector<char*> argv;
   for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
@@ -168,13 +169,13 @@ Expected<MovieWriter, std::string> MovieWriter::open(const std::string& path,
     if (log != nullptr) std::fclose(log);
     return "cannot start " + *program + ": " + std::strerror(spawned);
   }
-  return MovieWriter(path, settings, pid, fds[1], log);
+  return MovieWriter(path, std::move(output), settings, pid, fds[1], log);
 }
 
-MovieWriter::MovieWriter(std::string path, MovieSettings settings, pid_t pid, int pipe,
-                         std::FILE* log)
+MovieWriter::MovieWriter(std::string path, OutputFile output, MovieSettings settings, pid_t pid,
+                         int pipe, std::FILE* log)
     : path_(std::move(path)),
-      output_(path_),
+      output_(std::move(output)),
       settings_(settings),
       pid_(pid),
       pipe_(pipe),
