@@ -16,16 +16,13 @@
 #include <stdexcept>
 #include <vector>
 
+#include "pictures/file_names.h"
+
 extern char** environ;
 
 namespace fosssim {
 
 namespace {
-
-std::string lowercase(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
 
 std::string format_number(double value) {
   std::ostringstream out;
@@ -90,7 +87,7 @@ std::string read_log(std::FILE* log) {
 }  // namespace
 
 std::optional<std::string> check_movie_settings(const std::string& path, const MovieSettings& s) {
-  if (lowercase(std::filesystem::path(path).extension().string()) != ".mp4") {
+  if (!has_extension(path, ".mp4")) {
     return "the movie " + path + " must be named *.mp4 (FOSSSim writes H.264 in MP4)";
   }
   if (s.width < 2 || s.height < 2 || s.width % 2 != 0 || s.height % 2 != 0) {
