@@ -4,7 +4,6 @@
 #include <cairo.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -14,6 +13,7 @@
 #include <variant>
 
 #include "io/output_file.h"
+#include "pictures/file_names.h"
 
 namespace fosssim {
 
@@ -187,12 +187,7 @@ void write_png(const Image& image, const std::string& path) {
 }
 
 PictureFormat picture_format_for(const std::string& path) {
-  const std::string suffix = ".svg";
-  const bool svg = path.size() >= suffix.size() &&
-                   std::equal(suffix.rbegin(), suffix.rend(), path.rbegin(), [](char a, char b) {
-                     return a == std::tolower(static_cast<unsigned char>(b));
-                   });
-  return svg ? PictureFormat::kSvg : PictureFormat::kPng;
+  return has_extension(path, ".svg") ? PictureFormat::kSvg : PictureFormat::kPng;
 }
 
 void write_picture(const std::string& path, PictureFormat format, int width, int height,

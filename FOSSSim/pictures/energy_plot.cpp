@@ -7,20 +7,17 @@
 #include <cstdio>
 #include <limits>
 
+#include "core/scene.h"
 #include "pictures/cairo_painter.h"
 
 namespace fosssim {
 
 namespace {
 
-struct Rgb {
-  double r, g, b;
-};
-
 struct Series {
   const char* name;
   double (*value)(const EnergySample&);
-  Rgb color;
+  Color color;
   double width;
 };
 

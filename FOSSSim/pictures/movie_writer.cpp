@@ -16,16 +16,13 @@
 #include <stdexcept>
 #include <vector>
 
+#include "pictures/file_names.h"
+
 extern char** environ;
 
 namespace fosssim {
 
 namespace {
-
-std::string lowercase(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
 
 std::string format_number(double value) {
   std::ostringstream out;
@@ -90,7 +87,7 @@ std::string read_log(std::FILE* log) {
 }  // namespace
 
 std::optional<std::string> check_movie_settings(const std::string& path, const MovieSettings& s) {
-  if (lowercase(std::filesystem::path(path).extension().string()) != ".mp4") {
+  if (!has_extension(path, ".mp4")) {
     return "the movie " + path + " must be named *.mp4 (FOSSSim writes H.264 in MP4)";
   }
   if (s.width < 2 || s.height < 2 || s.width % 2 != 0 || s.height % 2 != 0) {
@@ -137,7 +134,8 @@ Expected<MovieWriter, std::string> MovieWriter::open(const std::string& path,
   if (::pipe2(fds, O_CLOEXEC) != 0)
     return "cannot create a pipe: " + std::string(std::strerror(errno));
   std::FILE* log = std::tmpfile();
-  const auto arguments = ffmpeg_arguments(*program, settings, OutputFile(path).write_path());
+  OutputFile output(path);
+  const auto arguments = ffmpeg_arguments(*program, settings, output.write_path());
   std::vector<char*> argv;
   for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
@@ -168,13 +166,13 @@ Expected<MovieWriter, std::string> MovieWriter::open(const std::string& path,
     if (log != nullptr) std::fclose(log);
     return "cannot start " + *program + ": " + std::strerror(spawned);
   }
-  return MovieWriter(path, settings, pid, fds[1], log);
+  return MovieWriter(path, std::move(output), settings, pid, fds[1], log);
 }
 
-MovieWriter::MovieWriter(std::string path, MovieSettings settings, pid_t pid, int pipe,
-                         std::FILE* log)
+MovieWriter::MovieWriter(std::string path, OutputFile output, MovieSettings settings, pid_t pid,
+                         int pipe, std::FILE* log)
     : path_(std::move(path)),
-      output_(path_),
+      output_(std::move(output)),
       settings_(settings),
       pid_(pid),
       pipe_(pipe),

@@ -47,10 +47,10 @@ class MovieWriter {
   std::string abandon();
 
   const std::string& path() const { return path_; }
-  std::int64_t frames_written() const { return frames_; }
 
  private:
-  MovieWriter(std::string path, MovieSettings settings, pid_t pid, int pipe, std::FILE* log);
+  MovieWriter(std::string path, OutputFile output, MovieSettings settings, pid_t pid, int pipe,
+              std::FILE* log);
   /// Closes the pipe, waits for ffmpeg; returns its error message or nothing if it succeeded.
   std::optional<std::string> finish_process();
 

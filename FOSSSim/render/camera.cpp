@@ -19,21 +19,30 @@ Point2 PixelMapping::to_world(double px, double py) const {
   return {left_ + px / pixels_per_unit_, top_ - py / pixels_per_unit_};
 }
 
-Camera fit_camera(const Vector& q, int dim, int width, int height) {
+std::array<Eigen::Vector3d, 2> compute_bounding_box(const Vector& q, int dim) {
   const int n = static_cast<int>(q.size()) / dim;
-  if (n == 0) return Camera{};
-  double min_x = q[0], max_x = q[0], min_y = q[1], max_y = q[1];
+  if (n == 0) return {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  Eigen::Vector3d low = Eigen::Vector3d::Zero();
+  low.head(dim) = q.head(dim);
+  Eigen::Vector3d high = low;
   for (int p = 1; p < n; ++p) {
-    min_x = std::min(min_x, q[dim * p]);
-    max_x = std::max(max_x, q[dim * p]);
-    min_y = std::min(min_y, q[dim * p + 1]);
-    max_y = std::max(max_y, q[dim * p + 1]);
+    for (int c = 0; c < dim; ++c) {
+      low[c] = std::min(low[c], q[dim * p + c]);
+      high[c] = std::max(high[c], q[dim * p + c]);
+    }
   }
+  return {low, high};
+}
+
+Camera fit_camera(const Vector& q, int dim, int width, int height) {
+  // No particles: a zero box, hence the default camera (centre 0, scale 1).
+  const auto [low, high] = compute_bounding_box(q, dim);
   Camera camera;
-  camera.cx = 0.5 * (min_x + max_x);
-  camera.cy = 0.5 * (min_y + max_y);
+  camera.cx = 0.5 * (low.x() + high.x());
+  camera.cy = 0.5 * (low.y() + high.y());
   const double height_over_width = static_cast<double>(height) / width;
-  camera.scale = 1.2 * std::max(0.5 * (max_y - min_y), 0.5 * (max_x - min_x) * height_over_width);
+  camera.scale =
+      1.2 * std::max(0.5 * (high.y() - low.y()), 0.5 * (high.x() - low.x()) * height_over_width);
   if (!(camera.scale > 0.0)) camera.scale = 1.0;
   return camera;
 }

@@ -1,6 +1,9 @@
 #pragma once
 // The 2D orthographic camera of the window and the pictures (SPEC section 6).
 
+#include <Eigen/Core>
+#include <array>
+
 #include "core/scene.h"
 #include "core/state.h"
 
@@ -36,6 +39,10 @@ class PixelMapping {
   double left_, top_, pixels_per_unit_;
   int width_, height_;
 };
+
+/// The bounding box of the particle centres (q interleaved, `dim` per particle, z = 0 in 2D):
+/// {low, high}; both zero when there are no particles.
+std::array<Eigen::Vector3d, 2> compute_bounding_box(const Vector& q, int dim);
 
 /// The course's fitted camera: centred on the bounding box of the particle centres, with
 /// scale = 1.2 · max(half height, half width · height/width), so the box fits with a margin

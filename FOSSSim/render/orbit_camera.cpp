@@ -115,21 +115,6 @@ double fit_distance(const OrbitCamera& camera, const Eigen::Vector3d& low,
   return camera.projection == Projection::kOrthographic ? needed / tan_half : needed;
 }
 
-std::array<Eigen::Vector3d, 2> compute_bounding_box(const Vector& q, int dim) {
-  const int n = static_cast<int>(q.size()) / dim;
-  if (n == 0) return {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-  Eigen::Vector3d low = Eigen::Vector3d::Zero();
-  low.head(dim) = q.head(dim);
-  Eigen::Vector3d high = low;
-  for (int p = 1; p < n; ++p) {
-    for (int c = 0; c < dim; ++c) {
-      low[c] = std::min(low[c], q[dim * p + c]);
-      high[c] = std::max(high[c], q[dim * p + c]);
-    }
-  }
-  return {low, high};
-}
-
 void fit_orbit_camera(OrbitCamera& camera, const Vector& q, int dim, int width, int height) {
   const auto [low, high] = compute_bounding_box(q, dim);
   camera.target = 0.5 * (low + high);

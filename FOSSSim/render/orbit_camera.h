@@ -3,7 +3,6 @@
 // perspective or in parallel projection, y up.
 
 #include <Eigen/Core>
-#include <array>
 
 #include "core/interaction/picking.h"
 #include "core/scene.h"
@@ -86,10 +85,6 @@ Eigen::Vector3d orbit_direction(double yaw, double pitch);
 /// (a single point) gets a visible half height of 1 at the target.
 double fit_distance(const OrbitCamera& camera, const Eigen::Vector3d& low,
                     const Eigen::Vector3d& high, int width, int height);
-
-/// The bounding box of the particle centres (q interleaved, `dim` per particle, z = 0 in 2D):
-/// {low, high}; both zero when there are no particles.
-std::array<Eigen::Vector3d, 2> compute_bounding_box(const Vector& q, int dim);
 
 /// Sets the target to the centre of the particles' bounding box and the distance to
 /// fit_distance, keeping the camera's angles, field of view and projection.

@@ -75,10 +75,6 @@ double zoom_factor_for_drag(double dx, double dy, int width, int height) {
   return std::exp(2.0 * amount);
 }
 
-void zoom_by_drag(Camera& camera, double dx, double dy, int width, int height) {
-  zoom_camera(camera, zoom_factor_for_drag(dx, dy, width, height));
-}
-
 bool apply_view_command(Command command, SceneView& view) {
   if (!view.is_3d()) return apply_camera_command(command, view.camera());
   const double step = kPanStep * 0.5 * view.height();  // pixels

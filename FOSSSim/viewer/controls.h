@@ -36,11 +36,9 @@ inline constexpr double kPanStep = 0.1;
 /// Applies a zoom or pan command to the camera; returns false for other commands.
 bool apply_camera_command(Command command, Camera& camera);
 
-/// Mouse zoom (right button drag): dragging down or left by a whole picture height or width
-/// zooms out by e² ≈ 7.4; up or right zooms in. The larger relative movement wins, as in the
-/// course's window. dx, dy in pixels (y down).
-void zoom_by_drag(Camera& camera, double dx, double dy, int width, int height);
-/// The factor zoom_by_drag scales the visible height by.
+/// Mouse zoom (right button drag): the factor a drag of (dx, dy) pixels (y down) scales the
+/// visible height by. Dragging down or left by a whole picture height or width zooms out by
+/// e² ≈ 7.4; up or right zooms in. The larger relative movement wins, as in the course's window.
 double zoom_factor_for_drag(double dx, double dy, int width, int height);
 
 /// Applies a zoom or pan command to a view, 2D (exactly as apply_camera_command) or 3D (zoom

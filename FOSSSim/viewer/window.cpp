@@ -101,11 +101,14 @@ void Window::tick() {
   }
   if (!paused_ && can_step() && !screenshot_due()) {
     const double start = wall_seconds();
+    bool stepped = false;
     for (std::int64_t due = throttle_.take_due(start); due > 0 && can_step(); --due) {
       step_once();
+      stepped = true;
       if (screenshot_due() || wall_seconds() - start > kStepBudgetSeconds) break;
     }
-    glutPostRedisplay();
+    // Only a step changes the picture here; keys, the mouse and resizing post their own redraw.
+    if (stepped) glutPostRedisplay();
   }
   glutTimerFunc(
       kTickMilliseconds, [](int) { g_window->tick(); }, 0);

@@ -5,6 +5,7 @@
 
 #include "app_render/program_runner.h"
 #include "pictures/cairo_painter.h"
+#include "pictures/pixel_counts.h"
 
 namespace fosssim {
 namespace {
@@ -53,6 +54,10 @@ TEST(CliEnergy, PlotIsAPicture) {
   const Image plot = read_png(folder / "e.png");
   EXPECT_EQ(plot.width, 800);
   EXPECT_EQ(plot.height, 500);
+  // The three curves are drawn (each spans the plot; the legend alone has a few dozen pixels).
+  EXPECT_GT(testing::count_color(plot, {0.122, 0.467, 0.706}), 200);  // kinetic, blue
+  EXPECT_GT(testing::count_color(plot, {1.0, 0.498, 0.055}), 200);    // potential, orange
+  EXPECT_GT(testing::count_color(plot, {0.1, 0.1, 0.1}), 200);        // total, near black
 }
 
 }  // namespace

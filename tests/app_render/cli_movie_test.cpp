@@ -32,15 +32,8 @@ class CliMovie : public ::testing::Test {
     return testing::run_command(
         folder_, "env -u DISPLAY " + testing::quoted(testing::fosssim_program()) + " " + arguments);
   }
-  /// "frames,width,height,rate" as ffprobe reads them.
-  std::string probe(const std::string& movie) {
-    return testing::run_command(folder_,
-                                "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-                                "stream=nb_read_frames,width,height,r_frame_rate -of "
-                                "default=nw=1:nk=1 '" +
-                                    movie + "' | tr '\\n' ,")
-        .out;
-  }
+  /// "width,height,rate,frames," as ffprobe reads them.
+  std::string probe(const std::string& movie) { return testing::probe_movie(folder_, movie); }
   testing::ScratchFolder folder_;
 };
 

@@ -89,6 +89,10 @@ TEST_F(CliPictures3D, MoviesOfA3DSceneRenderHeadless) {
   const auto result = fosssim("-s cloth.xml --movie cloth.mp4 --movie-stride 5");
   ASSERT_EQ(result.status, 0) << result.err;
   EXPECT_GT(std::filesystem::file_size(folder_ / "cloth.mp4"), 1000u);
+  if (!testing::on_path("ffprobe")) GTEST_SKIP() << "ffprobe is not installed";
+  // The default 512x512 at 30 frames per second; 30 steps of 0.01 s, frames at steps 0, 5,
+  // ..., 30: 7.
+  EXPECT_EQ(testing::probe_movie(folder_, "cloth.mp4"), "512,512,30/1,7,");
 }
 
 }  // namespace

@@ -85,4 +85,15 @@ inline bool on_path(const std::string& name) {
   return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0;
 }
 
+/// "width,height,rate,frames," of the first video stream of `movie` (a name in `folder`), as
+/// ffprobe reads them; needs ffprobe on PATH.
+inline std::string probe_movie(const ScratchFolder& folder, const std::string& movie) {
+  return run_command(folder,
+                     "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                     "stream=nb_read_frames,width,height,r_frame_rate -of "
+                     "default=nw=1:nk=1 '" +
+                         movie + "' | tr '\\n' ,")
+      .out;
+}
+
 }  // namespace fosssim::testing

@@ -6,9 +6,11 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <utility>
 
 #include "app_render/program_runner.h"
 #include "pictures/cairo_painter.h"
+#include "pictures/pixel_counts.h"
 
 namespace fosssim {
 namespace {
@@ -22,14 +24,21 @@ std::vector<EnergySample> oscillator(int n) {
   return samples;
 }
 
-/// Number of pixels within `tolerance` of `color`.
-int count_color(const Image& image, const Color& color, double tolerance = 0.08) {
-  int n = 0;
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = 0; x < image.width; ++x)
-      n += color_distance(image.color_at(x, y), color) < tolerance;
+using testing::count_color;
+
+/// The first and last rows of the plot area (default style, no title) with pixels near `color`,
+/// in columns 200 to 600: clear of the axes, their labels and the legend. {height, -1} if none.
+std::pair<int, int> rows_of_color(const Image& image, const Color& color, int first_row) {
+  int top = image.height, bottom = -1;
+  for (int y = first_row; y < image.height - 70; ++y) {
+    for (int x = 200; x < 600; ++x) {
+      if (color_distance(image.color_at(x, y), color) < 0.05) {
+        top = std::min(top, y);
+        bottom = std::max(bottom, y);
+      }
+    }
   }
-  return n;
+  return {top, bottom};
 }
 
 TEST(NiceTicks, AreRoundNumbersInsideTheRange) {
@@ -66,15 +75,7 @@ TEST(WriteEnergyPlot, TheTotalOfAConservedRunIsAFlatLine) {
   const testing::ScratchFolder folder;
   write_energy_plot(oscillator(300), folder / "flat.png");
   const Image image = read_png(folder / "flat.png");
-  int top = image.height, bottom = -1;
-  for (int y = 60; y < image.height - 70; ++y) {
-    for (int x = 200; x < 600; ++x) {  // inside the plot, clear of the legend and axes
-      if (color_distance(image.color_at(x, y), {0.1, 0.1, 0.1}) < 0.05) {
-        top = std::min(top, y);
-        bottom = std::max(bottom, y);
-      }
-    }
-  }
+  const auto [top, bottom] = rows_of_color(image, {0.1, 0.1, 0.1}, 60);
   ASSERT_GE(bottom, 0);
   EXPECT_LE(bottom - top, 3);
 }
@@ -96,6 +97,21 @@ TEST(WriteEnergyPlot, HandlesNoSamplesAndConstantEnergy) {
   EXPECT_NO_THROW(write_energy_plot({}, folder / "empty.png"));
   EXPECT_NO_THROW(write_energy_plot({{0.0, 1.0, 1.0}, {1.0, 1.0, 1.0}}, folder / "constant.png"));
   EXPECT_TRUE(std::filesystem::exists(folder / "constant.png"));
+  // No samples: an empty plot of the default size.
+  ASSERT_TRUE(std::filesystem::exists(folder / "empty.png"));
+  const Image empty = read_png(folder / "empty.png");
+  EXPECT_EQ(empty.width, EnergyPlotStyle{}.width);
+  EXPECT_EQ(empty.height, EnergyPlotStyle{}.height);
+  // Constant energy (kinetic = potential = 1, total = 2): each curve is a flat line on one row
+  // (the total near the top of the plot, potential over kinetic near the bottom).
+  const Image constant = read_png(folder / "constant.png");
+  const auto [total_top, total_bottom] = rows_of_color(constant, {0.1, 0.1, 0.1}, 20);
+  ASSERT_GE(total_bottom, 0);
+  EXPECT_LE(total_bottom - total_top, 3);
+  const auto [potential_top, potential_bottom] = rows_of_color(constant, {1.0, 0.498, 0.055}, 20);
+  ASSERT_GE(potential_bottom, 0);
+  EXPECT_LE(potential_bottom - potential_top, 3);
+  EXPECT_GT(potential_top, total_bottom);
 }
 
 }  // namespace

@@ -46,6 +46,24 @@ TEST(FitCamera, ThreeDimensionalScenesAreSeenAlongZ) {
   EXPECT_DOUBLE_EQ(camera.scale, 1.2);
 }
 
+TEST(FitCamera, NoParticlesGetTheDefaultCamera) {
+  const Camera camera = fit_camera(Vector(), 2, 512, 512);
+  EXPECT_EQ(camera.cx, 0.0);
+  EXPECT_EQ(camera.cy, 0.0);
+  EXPECT_EQ(camera.scale, 1.0);
+}
+
+TEST(BoundingBox, SpansTheParticlesWithZeroZIn2D) {
+  Vector q(6);
+  q << 1, -2, 3, 0, 4, -1;
+  const auto [low, high] = compute_bounding_box(q, 2);
+  EXPECT_EQ(low, Eigen::Vector3d(1, -2, 0));
+  EXPECT_EQ(high, Eigen::Vector3d(4, 0, 0));
+  const auto box3 = compute_bounding_box(q, 3);
+  EXPECT_EQ(box3[0], Eigen::Vector3d(0, -2, -1));
+  EXPECT_EQ(box3[1], Eigen::Vector3d(1, 4, 3));
+}
+
 TEST(InitialCamera, UsesTheViewportWhenTheSceneHasOne) {
   auto scene = load_scene_text(R"(<scene>
     <duration time="1"/><integrator type="explicit-euler" dt="0.1"/>

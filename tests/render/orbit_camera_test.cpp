@@ -222,16 +222,5 @@ TEST(OrbitControls, DraggingRightTurnsTheSceneRightAndPitchStaysBelowTheLimit) {
   EXPECT_DOUBLE_EQ(camera.distance, 6.0);
 }
 
-TEST(BoundingBox, SpansTheParticlesWithZeroZIn2D) {
-  Vector q(6);
-  q << 1, -2, 3, 0, 4, -1;
-  const auto [low, high] = compute_bounding_box(q, 2);
-  EXPECT_EQ(low, Eigen::Vector3d(1, -2, 0));
-  EXPECT_EQ(high, Eigen::Vector3d(4, 0, 0));
-  const auto box3 = compute_bounding_box(q, 3);
-  EXPECT_EQ(box3[0], Eigen::Vector3d(0, -2, -1));
-  EXPECT_EQ(box3[1], Eigen::Vector3d(1, 4, 3));
-}
-
 }  // namespace
 }  // namespace fosssim

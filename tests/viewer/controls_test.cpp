@@ -37,14 +37,11 @@ TEST(ApplyCameraCommand, ZoomsAndPansInStepsOfTheView) {
   EXPECT_FALSE(apply_camera_command(Command::kTogglePause, camera));
 }
 
-TEST(ZoomByDrag, DraggingDownZoomsOutAndUpZoomsBackIn) {
-  Camera camera{0.0, 0.0, 1.0};
-  zoom_by_drag(camera, 0.0, 256.0, 512, 512);  // half a picture down
-  EXPECT_DOUBLE_EQ(camera.scale, std::exp(1.0));
-  zoom_by_drag(camera, 0.0, -256.0, 512, 512);
-  EXPECT_NEAR(camera.scale, 1.0, 1e-15);
-  zoom_by_drag(camera, 128.0, 10.0, 512, 512);  // mostly right: zooms in
-  EXPECT_LT(camera.scale, 1.0);
+TEST(ZoomFactorForDrag, DraggingDownZoomsOutAndUpZoomsBackIn) {
+  const double down = zoom_factor_for_drag(0.0, 256.0, 512, 512);  // half a picture down
+  EXPECT_DOUBLE_EQ(down, std::exp(1.0));
+  EXPECT_NEAR(down * zoom_factor_for_drag(0.0, -256.0, 512, 512), 1.0, 1e-15);
+  EXPECT_LT(zoom_factor_for_drag(128.0, 10.0, 512, 512), 1.0);  // mostly right: zooms in
 }
 
 TEST(ApplyViewCommand, MovesA2DViewExactlyAsTheCameraCommand) {

@@ -46,7 +46,7 @@ TEST(MouseControl, PansAndZoomsA2DViewAsTheCoursesWindowDid) {
   EXPECT_FALSE(mouse.move(10, 10));
   mouse.press(MouseButton::kRight, kNoKeys, 100, 100, scene.initial);
   mouse.move(100, 356);
-  zoom_by_drag(expected, 0.0, 256.0, 512, 512);
+  zoom_camera(expected, zoom_factor_for_drag(0.0, 256.0, 512, 512));
   EXPECT_DOUBLE_EQ(view.camera().scale, expected.scale);
   mouse.release(MouseButton::kRight);
   mouse.wheel(true);
