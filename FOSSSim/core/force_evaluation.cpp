@@ -48,11 +48,17 @@ void zero_fixed(const SceneModel& model, Vector& x) {
 }
 
 SparseMatrix assemble_step_matrix(const SceneModel& model, const Vector& q, const Vector& v,
-                                  double h, HessianBuilder& scratch) {
+                                  double h, HessianBuilder& scratch, Vector* hessian_x_times_v) {
   scratch.clear();
   const ForceInput in{q, v, model.mass};
   scratch.set_scale(h * h);
   for (const auto& force : model.forces) force->add_hessian_x(in, scratch);
+  if (hessian_x_times_v) {
+    hessian_x_times_v->setZero(model.num_dofs());
+    for (const Triplet& t : scratch.triplets()) {
+      (*hessian_x_times_v)[t.row()] += t.value() * v[t.col()];
+    }
+  }
   scratch.set_scale(h);
   for (const auto& force : model.forces) force->add_hessian_v(in, scratch);
   scratch.set_scale(1.0);

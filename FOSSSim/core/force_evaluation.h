@@ -30,8 +30,11 @@ void zero_fixed(const SceneModel& model, Vector& x);
 
 /// The implicit step matrix A = diag(m) + h² hessX + h hessV at (q, v) with fixed particles
 /// eliminated: their rows and columns are zero and their diagonal is 1 (SPEC section 4).
-/// `scratch` keeps its capacity between calls so that stepping does not reallocate.
+/// `scratch` keeps its capacity between calls so that stepping does not reallocate. Given
+/// `hessian_x_times_v`, also sets it to h² hessX v (every DOF, before the elimination), from the
+/// same entries, for a right-hand side that needs it.
 SparseMatrix assemble_step_matrix(const SceneModel& model, const Vector& q, const Vector& v,
-                                  double h, HessianBuilder& scratch);
+                                  double h, HessianBuilder& scratch,
+                                  Vector* hessian_x_times_v = nullptr);
 
 }  // namespace fosssim

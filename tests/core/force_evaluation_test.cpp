@@ -117,6 +117,12 @@ TYPED_TEST(ForceEvaluationTest, StepMatrixEliminatesFixedParticles) {
   EXPECT_TRUE(A.isApprox(expected, 1e-15));
   // Reusing the scratch gives the same matrix again.
   EXPECT_EQ(dense(assemble_step_matrix(model, q, v, h, scratch)), A);
+  // Asked for it, the same entries also give h² hessX v, over every DOF (before elimination).
+  Vector hessian_x_times_v;
+  EXPECT_EQ(dense(assemble_step_matrix(model, q, v, h, scratch, &hessian_x_times_v)), A);
+  const Vector expected_product = h * h * (dense(compute_hessian_x(model, q, v)) * v);
+  EXPECT_TRUE(hessian_x_times_v.isApprox(expected_product, 1e-14));
+  EXPECT_NE(hessian_x_times_v.segment(D, D), Vector::Zero(D)) << "the fixed particle's too";
 
   Vector x = Vector::Ones(model.num_dofs());
   zero_fixed(model, x);
