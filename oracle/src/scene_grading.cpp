@@ -7,6 +7,7 @@
 
 #include "core/text.h"
 #include "diagnosis.h"
+#include "grading/step_grader.h"
 #include "io/scene_loader.h"
 #include "printable_text.h"
 
@@ -38,46 +39,75 @@ void take_grade(const GradeReport& report, int dim, SceneResult& result) {
   }
 }
 
-/// Grades the checked trajectory of a run; fills verdict, residuals and explanation.
-const GradeReport* grade_file(const Scene& scene, const std::string& path, SceneResult& result,
-                              std::optional<GradeReport>& kept) {
+/// Where frame `k` first holds a NaN or infinite value, as "frame 12, particle 3: velocity
+/// (nan, 0)"; nothing when every value is finite.
+std::optional<std::string> non_finite_in_frame(std::int64_t k, const Vector& q, const Vector& v,
+                                               int dim) {
+  if (q.allFinite() && v.allFinite()) return std::nullopt;
+  for (int p = 0; p * dim < q.size(); ++p) {
+    const bool bad_q = !q.segment(dim * p, dim).allFinite();
+    if (bad_q || !v.segment(dim * p, dim).allFinite()) {
+      return "frame " + std::to_string(k) + ", particle " + std::to_string(p) + ": " +
+             (bad_q ? "position " + vector_text(q, dim * p, dim)
+                    : "velocity " + vector_text(v, dim * p, dim));
+    }
+  }
+  return std::nullopt;
+}
+
+/// Replays the file with `grader`, reading every frame once and checking it as it is read, so
+/// that the reference integrator never starts from a non-finite frame. Returns where the file
+/// first holds a non-finite value, if it does.
+std::optional<std::string> replay_checking_frames(StepGrader& grader, TrajectoryReader& file,
+                                                  int dim) {
+  const auto check_last_frame = [&grader, dim] {
+    const State& frame = grader.file_state();
+    return non_finite_in_frame(frame.step, frame.q, frame.v, dim);
+  };
+  if (auto bad = check_last_frame()) return bad;
+  while (grader.grade_next_step()) {
+    if (auto bad = check_last_frame()) return bad;
+  }
+  // A reference failure stops the replay early; a non-finite value after it is still the
+  // verdict, so the frames not yet read are checked too.
+  return find_non_finite(file, dim, grader.file_state().step + 1);
+}
+
+/// Grades the checked trajectory of a run; fills verdict, residuals and explanation. Returns the
+/// report when the trajectory could be graded.
+std::optional<GradeReport> grade_file(const Scene& scene, const std::string& path,
+                                      SceneResult& result) {
+  const int dim = scene.model.dim;
   auto file = TrajectoryReader::open(path, scene.model.num_dofs());
   if (!file) {
     result.verdict = Verdict::kNoOutput;
     result.reason = file.error();
-    return nullptr;
+    return std::nullopt;
   }
-  if (auto bad = find_non_finite(*file, scene.model.dim)) {
+  auto grader = StepGrader::open(scene, *file);
+  auto bad = grader ? replay_checking_frames(*grader, *file, dim) : find_non_finite(*file, dim);
+  if (bad) {
     result.verdict = Verdict::kGarbage;
     result.reason = "the trajectory holds a non-finite value: " + *bad;
-    return nullptr;
+    return std::nullopt;
   }
-  auto report = grade_trajectory(scene, *file);
-  if (!report) {
+  if (!grader) {
     result.verdict = Verdict::kShort;
-    result.reason = report.error();
-    return nullptr;
+    result.reason = grader.error();
+    return std::nullopt;
   }
-  take_grade(*report, scene.model.dim, result);
-  kept = std::move(report).value();
-  return &*kept;
+  take_grade(grader->report(), dim, result);
+  return grader->report();
 }
 
 }  // namespace
 
-std::optional<std::string> find_non_finite(TrajectoryReader& file, int dim) {
+std::optional<std::string> find_non_finite(TrajectoryReader& file, int dim,
+                                           std::int64_t first_frame) {
   Vector q, v;
-  for (std::int64_t k = 0; k < file.num_frames(); ++k) {
+  for (std::int64_t k = first_frame; k < file.num_frames(); ++k) {
     file.read_frame(k, q, v);
-    if (q.allFinite() && v.allFinite()) continue;
-    for (int p = 0; p * dim < q.size(); ++p) {
-      const bool bad_q = !q.segment(dim * p, dim).allFinite();
-      if (bad_q || !v.segment(dim * p, dim).allFinite()) {
-        return "frame " + std::to_string(k) + ", particle " + std::to_string(p) + ": " +
-               (bad_q ? "position " + vector_text(q, dim * p, dim)
-                      : "velocity " + vector_text(v, dim * p, dim));
-      }
-    }
+    if (auto bad = non_finite_in_frame(k, q, v, dim)) return bad;
   }
   return std::nullopt;
 }
@@ -168,7 +198,7 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
       result.reason = run.reason;
     } else {
       const auto start = std::chrono::steady_clock::now();
-      grade_file(scene, run.trajectory_path, result, report);
+      report = grade_file(scene, run.trajectory_path, result);
       result.grade_seconds = seconds_since(start);
     }
     if (options.keep_work)
