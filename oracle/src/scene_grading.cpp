@@ -1,7 +1,6 @@
 #include "scene_grading.h"
 
 #include <chrono>
-#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -115,20 +114,11 @@ std::optional<std::string> find_non_finite(TrajectoryReader& file, int dim,
 std::string failure_reason(const GradeReport& report) {
   if (report.reference_failure) return *report.reference_failure;
   std::string reason;
-  const auto add = [&reason](bool passed, const char* name, double value, double limit) {
-    if (passed) return;
-    reason += (reason.empty() ? "" : ", ") + std::string(name) + " " + to_text(value) + " (limit " +
-              to_text(limit) + ")";
-  };
-  const GradingCriteria& c = report.criteria;
-  add(report.accumulated_position_passed(), "Accumulated Position Residual",
-      report.accumulated_position, c.accumulated_limit);
-  add(report.accumulated_velocity_passed(), "Accumulated Velocity Residual",
-      report.accumulated_velocity, c.accumulated_limit);
-  add(report.max_position_passed(), "Maximum Position Residual", report.max_position,
-      c.maximum_limit);
-  add(report.max_velocity_passed(), "Maximum Velocity Residual", report.max_velocity,
-      c.maximum_limit);
+  for (const Criterion& c : criteria_of(report)) {
+    if (c.passed) continue;
+    reason += (reason.empty() ? "" : ", ") + std::string(c.name) + " " + to_text(c.value) +
+              " (limit " + to_text(c.limit) + ")";
+  }
   if (const auto& d = report.first_divergence) {
     reason += "; first divergence at step " + std::to_string(d->step) + ", particle " +
               std::to_string(d->particle);
@@ -139,18 +129,17 @@ std::string failure_reason(const GradeReport& report) {
 std::string failure_details(const GradeReport& report, int dim) {
   std::ostringstream out;
   out << describe_failure(report, dim);
-  const auto beats = [](double a, double b) { return std::isnan(a) ? !std::isnan(b) : a > b; };
   std::int64_t over = 0, first_over = 0, last_over = 0, worst_step = 0;
   double worst = -1.0;
   for (const StepResidual& r : report.per_step) {
-    const bool exceeds = !(r.max_position < report.criteria.maximum_limit &&
-                           r.max_velocity < report.criteria.maximum_limit);
+    const bool exceeds = !(below_limit(r.max_position, report.criteria.maximum_limit) &&
+                           below_limit(r.max_velocity, report.criteria.maximum_limit));
     if (exceeds) {
       if (over++ == 0) first_over = r.step;
       last_over = r.step;
     }
     for (double m : {r.max_position, r.max_velocity}) {
-      if (beats(m, worst)) {
+      if (replaces_maximum(m, worst)) {
         worst = m;
         worst_step = r.step;
       }
