@@ -9,14 +9,11 @@
 #include "grading/step_grader.h"
 #include "io/scene_loader.h"
 #include "printable_text.h"
+#include "seconds_since.h"
 
 namespace fosssim {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 std::string vector_text(const Vector& x, int begin, int dim) {
   std::string text = "(";
