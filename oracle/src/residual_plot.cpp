@@ -68,8 +68,7 @@ std::pair<int, int> decade_range(const std::vector<Column>& columns, double limi
   return {low, high};
 }
 
-}  // namespace
-
+/// Escapes &, <, >, " and ' for XML text and attributes.
 std::string escape_xml(const std::string& text) {
   std::string out;
   out.reserve(text.size());
@@ -96,6 +95,8 @@ std::string escape_xml(const std::string& text) {
   }
   return out;
 }
+
+}  // namespace
 
 std::string residual_plot_svg(const std::vector<StepResidual>& per_step,
                               const ResidualPlotOptions& options) {
