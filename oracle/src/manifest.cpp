@@ -36,7 +36,7 @@ ManifestEntry compute_entry(const SceneEntry& scene, const CandidateRunOptions& 
     return entry;
   }
   const SceneModel& model = loaded->model;
-  const std::int64_t expected = (model.num_steps() + 1) * trajectory_frame_bytes(model.num_dofs());
+  const std::int64_t expected = expected_trajectory_bytes(model);
   try {
     WorkFolder work(work_dir);
     const CandidateRun run = run_candidate(scene.path, expected, options, work);

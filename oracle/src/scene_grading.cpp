@@ -170,7 +170,7 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
   result.particles = model.num_particles();
   result.steps = model.num_steps();
   result.dt = model.integrator.dt;
-  const std::int64_t expected_bytes = (result.steps + 1) * trajectory_frame_bytes(model.num_dofs());
+  const std::int64_t expected_bytes = expected_trajectory_bytes(model);
 
   std::optional<GradeReport> report;
   try {
