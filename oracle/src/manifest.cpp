@@ -60,7 +60,7 @@ ManifestEntry compute_entry(const SceneEntry& scene, const CandidateRunOptions& 
     Vector q, v;
     file->read_frame(entry.frames - 1, q, v);
     entry.final_state = final_state_text(q, v, model.dim);
-  } catch (const std::exception& error) {
+  } catch (const std::exception&) {
     entry.status = "oracle-error";
   }
   return entry;
