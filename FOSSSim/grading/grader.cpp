@@ -1,6 +1,5 @@
 #include "grading/grader.h"
 
-#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -9,37 +8,28 @@
 
 namespace fosssim {
 
-namespace {
-
-bool below(double value, double limit) { return value < limit; }  // false for NaN
-
-struct Criterion {
-  const char* name;
-  double value;
-  bool passed;
-};
-
-std::vector<Criterion> criteria_of(const GradeReport& r) {
+std::array<Criterion, 4> criteria_of(const GradeReport& r) {
+  const GradingCriteria& c = r.criteria;
   return {
-      {"Accumulated Position Residual", r.accumulated_position, r.accumulated_position_passed()},
-      {"Accumulated Velocity Residual", r.accumulated_velocity, r.accumulated_velocity_passed()},
-      {"Maximum Position Residual", r.max_position, r.max_position_passed()},
-      {"Maximum Velocity Residual", r.max_velocity, r.max_velocity_passed()}};
+      {{"Accumulated Position Residual", r.accumulated_position, c.accumulated_limit,
+        r.accumulated_position_passed()},
+       {"Accumulated Velocity Residual", r.accumulated_velocity, c.accumulated_limit,
+        r.accumulated_velocity_passed()},
+       {"Maximum Position Residual", r.max_position, c.maximum_limit, r.max_position_passed()},
+       {"Maximum Velocity Residual", r.max_velocity, c.maximum_limit, r.max_velocity_passed()}}};
 }
-
-}  // namespace
 
 bool GradeReport::accumulated_position_passed() const {
-  return below(accumulated_position, criteria.accumulated_limit);
+  return below_limit(accumulated_position, criteria.accumulated_limit);
 }
 bool GradeReport::accumulated_velocity_passed() const {
-  return below(accumulated_velocity, criteria.accumulated_limit);
+  return below_limit(accumulated_velocity, criteria.accumulated_limit);
 }
 bool GradeReport::max_position_passed() const {
-  return below(max_position, criteria.maximum_limit);
+  return below_limit(max_position, criteria.maximum_limit);
 }
 bool GradeReport::max_velocity_passed() const {
-  return below(max_velocity, criteria.maximum_limit);
+  return below_limit(max_velocity, criteria.maximum_limit);
 }
 bool GradeReport::passed() const {
   return !reference_failure && accumulated_position_passed() && accumulated_velocity_passed() &&

@@ -2,6 +2,8 @@
 // Grading by output comparison (SPEC section 5, compat): replays a trajectory file step by step
 // against the scene's own integrator.
 
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -63,6 +65,27 @@ struct GradeReport {
   bool max_velocity_passed() const;
   bool passed() const;
 };
+
+/// True when `value` is strictly below `limit`, the course's test for passing; false for NaN.
+inline bool below_limit(double value, double limit) { return value < limit; }
+
+/// True when `candidate` should replace `current` as a maximum: a NaN beats every number, so that
+/// a NaN residual cannot hide behind a finite one.
+inline bool replaces_maximum(double candidate, double current) {
+  return std::isnan(candidate) ? !std::isnan(current) : candidate > current;
+}
+
+/// One of the course's four pass criteria, evaluated on a report.
+struct Criterion {
+  const char* name;  ///< "Accumulated Position Residual", as the course prints it
+  double value;
+  double limit;
+  bool passed;
+};
+
+/// The report's four criteria in the course's order: accumulated position, accumulated velocity,
+/// maximum position, maximum velocity residual.
+std::array<Criterion, 4> criteria_of(const GradeReport& report);
 
 /// Called after each graded step with (step, total steps).
 using GradingProgress = std::function<void(std::int64_t, std::int64_t)>;

@@ -1,23 +1,9 @@
 #include "grading/step_grader.h"
 
-#include <cmath>
-
 #include "core/step_error.h"
 #include "scripting/step_hooks.h"
 
 namespace fosssim {
-
-namespace {
-
-bool below(double value, double limit) { return value < limit; }  // false for NaN
-
-/// True when candidate should replace current as a maximum; a NaN beats every number, so that a
-/// NaN residual cannot hide behind a finite one.
-bool exceeds(double candidate, double current) {
-  return std::isnan(candidate) ? !std::isnan(current) : candidate > current;
-}
-
-}  // namespace
 
 StepGrader::StepGrader(const Scene& scene, TrajectoryReader& file, const GradingCriteria& criteria)
     : scene_(&scene),
@@ -88,16 +74,16 @@ void StepGrader::compare(const State& reference, const Vector& previous_q,
     velocity_residuals_[p] = rv;
     residual.sum_position += rx;
     residual.sum_velocity += rv;
-    if (residual.max_position_particle < 0 || exceeds(rx, residual.max_position)) {
+    if (residual.max_position_particle < 0 || replaces_maximum(rx, residual.max_position)) {
       residual.max_position = rx;
       residual.max_position_particle = p;
     }
-    if (residual.max_velocity_particle < 0 || exceeds(rv, residual.max_velocity)) {
+    if (residual.max_velocity_particle < 0 || replaces_maximum(rv, residual.max_velocity)) {
       residual.max_velocity = rv;
       residual.max_velocity_particle = p;
     }
     if (!report_.first_divergence &&
-        !(below(rx, criteria.maximum_limit) && below(rv, criteria.maximum_limit))) {
+        !(below_limit(rx, criteria.maximum_limit) && below_limit(rv, criteria.maximum_limit))) {
       FirstDivergence d;
       d.step = residual.step;
       d.particle = p;
@@ -114,9 +100,9 @@ void StepGrader::compare(const State& reference, const Vector& previous_q,
   }
   report_.accumulated_position += residual.sum_position;
   report_.accumulated_velocity += residual.sum_velocity;
-  if (exceeds(residual.max_position, report_.max_position))
+  if (replaces_maximum(residual.max_position, report_.max_position))
     report_.max_position = residual.max_position;
-  if (exceeds(residual.max_velocity, report_.max_velocity))
+  if (replaces_maximum(residual.max_velocity, report_.max_velocity))
     report_.max_velocity = residual.max_velocity;
   report_.per_step.push_back(residual);
 }

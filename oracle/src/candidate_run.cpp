@@ -8,7 +8,9 @@
 #include <stdexcept>
 
 #include "child_process.h"
+#include "core/scene_model.h"
 #include "core/text.h"
+#include "io/trajectory_file.h"
 #include "printable_text.h"
 
 namespace fosssim {
@@ -182,6 +184,10 @@ CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_
     }
   }
   return run;
+}
+
+std::int64_t expected_trajectory_bytes(const SceneModel& model) {
+  return (model.num_steps() + 1) * trajectory_frame_bytes(model.num_dofs());
 }
 
 }  // namespace fosssim

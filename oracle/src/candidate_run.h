@@ -11,6 +11,8 @@
 
 namespace fosssim {
 
+struct SceneModel;
+
 /// A fresh temporary folder ("<parent>/fosssim-oracle-XXXXXX"), removed with everything in it
 /// when the object is destroyed, unless keep() was called.
 class WorkFolder {
@@ -46,6 +48,10 @@ struct CandidateRun {
   int exit_status = 0;
   double seconds = 0.0;
 };
+
+/// The size of a complete trajectory of `model`: num_steps() + 1 frames (the initial state and
+/// one frame per step), what run_candidate is told to expect.
+std::int64_t expected_trajectory_bytes(const SceneModel& model);
 
 /// Runs `options.candidate -s <scene_path> -d 0 -o <work>/out.bin` in `work`, with the timeout,
 /// a per-file size limit and a watch on the folder's size (both well above `expected_bytes`, so

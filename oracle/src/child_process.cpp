@@ -18,6 +18,8 @@
 #include <cstring>
 #include <filesystem>
 
+#include "seconds_since.h"
+
 extern char** environ;
 
 namespace fosssim {
@@ -27,10 +29,6 @@ namespace {
 std::atomic<bool> g_stop_requested{false};
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 /// Keeps the last `limit` bytes appended, and counts all of them.
 struct Tail {

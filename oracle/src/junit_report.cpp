@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <map>
+#include <vector>
 
 #include "core/text.h"
 #include "diagnosis.h"
@@ -32,6 +33,22 @@ std::string summary_line(const SceneResult& r) {
             ", maximum velocity residual " + to_text(r.residuals->max_velocity);
   }
   return line + "\n";
+}
+
+/// Failures, errors and time of a set of scenes, for a <testsuites> or <testsuite> element.
+struct JunitCounts {
+  int failures = 0;
+  int errors = 0;
+  double seconds = 0.0;
+};
+
+JunitCounts junit_counts(const std::vector<const SceneResult*>& results) {
+  JunitCounts t;
+  for (const SceneResult* r : results) {
+    if (!r->passed()) (is_error(*r) ? t.errors : t.failures) += 1;
+    t.seconds += r->seconds();
+  }
+  return t;
 }
 
 /// The scenes of one report group, in run order.
@@ -63,7 +80,7 @@ void print_testcase(tinyxml2::XMLPrinter& xml, const SceneResult& r) {
   xml.PushAttribute("name",
                     printable_text(r.name.substr(suite == "." ? 0 : suite.size() + 1)).c_str());
   xml.PushAttribute("classname", printable_text(classname).c_str());
-  xml.PushAttribute("time", seconds_text(r.run_seconds + r.grade_seconds).c_str());
+  xml.PushAttribute("time", seconds_text(r.seconds()).c_str());
   if (!r.passed()) {
     xml.OpenElement(is_error(r) ? "error" : "failure");
     xml.PushAttribute("message", printable_text(first_line(r.reason)).c_str());
@@ -87,32 +104,24 @@ void print_testcase(tinyxml2::XMLPrinter& xml, const SceneResult& r) {
 std::string junit_xml(const GradingRun& run) {
   tinyxml2::XMLPrinter xml(nullptr, false);
   xml.PushDeclaration("xml version=\"1.0\" encoding=\"UTF-8\"");
-  int failures = 0, errors = 0;
-  double total_seconds = 0.0;
-  for (const SceneResult& r : run.results) {
-    if (!r.passed()) (is_error(r) ? errors : failures) += 1;
-    total_seconds += r.run_seconds + r.grade_seconds;
-  }
+  std::vector<const SceneResult*> all;
+  for (const SceneResult& r : run.results) all.push_back(&r);
+  const JunitCounts total = junit_counts(all);
   xml.OpenElement("testsuites");
   xml.PushAttribute("name", "fosssim-oracle");
   xml.PushAttribute("tests", static_cast<int>(run.results.size()));
-  xml.PushAttribute("failures", failures);
-  xml.PushAttribute("errors", errors);
-  xml.PushAttribute("time", seconds_text(total_seconds).c_str());
+  xml.PushAttribute("failures", total.failures);
+  xml.PushAttribute("errors", total.errors);
+  xml.PushAttribute("time", seconds_text(total.seconds).c_str());
   for (const Suite& suite : group_suites(run.results)) {
-    int suite_failures = 0, suite_errors = 0;
-    double suite_seconds = 0.0;
-    for (const SceneResult* r : suite.results) {
-      if (!r->passed()) (is_error(*r) ? suite_errors : suite_failures) += 1;
-      suite_seconds += r->run_seconds + r->grade_seconds;
-    }
+    const JunitCounts suite_counts = junit_counts(suite.results);
     xml.OpenElement("testsuite");
     xml.PushAttribute("name", printable_text(suite.name).c_str());
     xml.PushAttribute("tests", static_cast<int>(suite.results.size()));
-    xml.PushAttribute("failures", suite_failures);
-    xml.PushAttribute("errors", suite_errors);
+    xml.PushAttribute("failures", suite_counts.failures);
+    xml.PushAttribute("errors", suite_counts.errors);
     xml.PushAttribute("skipped", 0);
-    xml.PushAttribute("time", seconds_text(suite_seconds).c_str());
+    xml.PushAttribute("time", seconds_text(suite_counts.seconds).c_str());
     xml.OpenElement("properties");
     xml.OpenElement("property");
     xml.PushAttribute("name", "candidate");

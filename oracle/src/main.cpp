@@ -17,6 +17,7 @@
 #include "junit_report.h"
 #include "manifest.h"
 #include "result_table.h"
+#include "seconds_since.h"
 #include "shard_result_file.h"
 
 namespace fosssim {
@@ -65,10 +66,6 @@ void install_interrupt_handler() {
   action.sa_handler = on_interrupt;
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void add_report_options(CLI::App& command, ReportOptions& reports) {

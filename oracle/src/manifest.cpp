@@ -36,7 +36,7 @@ ManifestEntry compute_entry(const SceneEntry& scene, const CandidateRunOptions& 
     return entry;
   }
   const SceneModel& model = loaded->model;
-  const std::int64_t expected = (model.num_steps() + 1) * trajectory_frame_bytes(model.num_dofs());
+  const std::int64_t expected = expected_trajectory_bytes(model);
   try {
     WorkFolder work(work_dir);
     const CandidateRun run = run_candidate(scene.path, expected, options, work);
@@ -46,18 +46,21 @@ ManifestEntry compute_entry(const SceneEntry& scene, const CandidateRunOptions& 
         entry.status += ":" + std::to_string(run.exit_status);
       return entry;
     }
+    // A trajectory that cannot be opened, or read through for its digest, is "unreadable": an
+    // empty digest must never pass for "ok".
     auto file = TrajectoryReader::open(run.trajectory_path, model.num_dofs());
-    if (!file) {
+    const std::string digest = file ? sha256_file_hex(run.trajectory_path) : "";
+    if (digest.empty()) {
       entry.status = "unreadable";
       return entry;
     }
     entry.frames = file->num_frames();
     entry.bytes = expected;
-    entry.sha256 = sha256_file_hex(run.trajectory_path);
+    entry.sha256 = digest;
     Vector q, v;
     file->read_frame(entry.frames - 1, q, v);
     entry.final_state = final_state_text(q, v, model.dim);
-  } catch (const std::exception& error) {
+  } catch (const std::exception&) {
     entry.status = "oracle-error";
   }
   return entry;

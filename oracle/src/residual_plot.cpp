@@ -20,9 +20,6 @@ struct Column {
   double velocity = 0.0;
 };
 
-/// True when `a` should replace `b` as a maximum; NaN beats every number.
-bool beats(double a, double b) { return std::isnan(a) ? !std::isnan(b) : a > b; }
-
 std::vector<Column> reduce(const std::vector<StepResidual>& per_step, double dt, int max_points) {
   const std::size_t n = per_step.size();
   const std::size_t columns = std::min<std::size_t>(n, std::max(max_points, 2));
@@ -32,9 +29,9 @@ std::vector<Column> reduce(const std::vector<StepResidual>& per_step, double dt,
     Column& column = out[c];
     column.time = static_cast<double>(per_step[end - 1].step) * dt;
     for (std::size_t i = begin; i < end; ++i) {
-      if (i == begin || beats(per_step[i].max_position, column.position))
+      if (i == begin || replaces_maximum(per_step[i].max_position, column.position))
         column.position = per_step[i].max_position;
-      if (i == begin || beats(per_step[i].max_velocity, column.velocity))
+      if (i == begin || replaces_maximum(per_step[i].max_velocity, column.velocity))
         column.velocity = per_step[i].max_velocity;
     }
   }
@@ -71,8 +68,7 @@ std::pair<int, int> decade_range(const std::vector<Column>& columns, double limi
   return {low, high};
 }
 
-}  // namespace
-
+/// Escapes &, <, >, " and ' for XML text and attributes.
 std::string escape_xml(const std::string& text) {
   std::string out;
   out.reserve(text.size());
@@ -99,6 +95,8 @@ std::string escape_xml(const std::string& text) {
   }
   return out;
 }
+
+}  // namespace
 
 std::string residual_plot_svg(const std::vector<StepResidual>& per_step,
                               const ResidualPlotOptions& options) {

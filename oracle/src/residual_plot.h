@@ -26,7 +26,4 @@ struct ResidualPlotOptions {
 std::string residual_plot_svg(const std::vector<StepResidual>& per_step,
                               const ResidualPlotOptions& options);
 
-/// Escapes &, <, >, " and ' for XML text and attributes.
-std::string escape_xml(const std::string& text);
-
 }  // namespace fosssim

@@ -39,7 +39,7 @@ std::vector<std::string> row_of(const SceneResult& r) {
           residual_cell(r.residuals, &Residuals::max_position),
           residual_cell(r.residuals, &Residuals::max_velocity),
           first_failure_cell(r),
-          format("%.2f", r.run_seconds + r.grade_seconds)};
+          format("%.2f", r.seconds())};
 }
 
 void print_row(std::ostream& out, const std::vector<std::string>& cells,
@@ -101,7 +101,7 @@ std::string progress_line(const SceneResult& result, std::size_t done, std::size
   char counter[64];
   std::snprintf(counter, sizeof(counter), "[%*zu/%zu] %-11s ", width, done, total,
                 verdict_label(result.verdict));
-  return counter + result.name + format("  (%.2f s)", result.run_seconds + result.grade_seconds);
+  return counter + result.name + format("  (%.2f s)", result.seconds());
 }
 
 }  // namespace fosssim

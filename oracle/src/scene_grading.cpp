@@ -1,22 +1,19 @@
 #include "scene_grading.h"
 
 #include <chrono>
-#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/text.h"
 #include "diagnosis.h"
+#include "grading/step_grader.h"
 #include "io/scene_loader.h"
 #include "printable_text.h"
+#include "seconds_since.h"
 
 namespace fosssim {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 std::string vector_text(const Vector& x, int begin, int dim) {
   std::string text = "(";
@@ -38,46 +35,75 @@ void take_grade(const GradeReport& report, int dim, SceneResult& result) {
   }
 }
 
-/// Grades the checked trajectory of a run; fills verdict, residuals and explanation.
-const GradeReport* grade_file(const Scene& scene, const std::string& path, SceneResult& result,
-                              std::optional<GradeReport>& kept) {
+/// Where frame `k` first holds a NaN or infinite value, as "frame 12, particle 3: velocity
+/// (nan, 0)"; nothing when every value is finite.
+std::optional<std::string> non_finite_in_frame(std::int64_t k, const Vector& q, const Vector& v,
+                                               int dim) {
+  if (q.allFinite() && v.allFinite()) return std::nullopt;
+  for (int p = 0; p * dim < q.size(); ++p) {
+    const bool bad_q = !q.segment(dim * p, dim).allFinite();
+    if (bad_q || !v.segment(dim * p, dim).allFinite()) {
+      return "frame " + std::to_string(k) + ", particle " + std::to_string(p) + ": " +
+             (bad_q ? "position " + vector_text(q, dim * p, dim)
+                    : "velocity " + vector_text(v, dim * p, dim));
+    }
+  }
+  return std::nullopt;
+}
+
+/// Replays the file with `grader`, reading every frame once and checking it as it is read, so
+/// that the reference integrator never starts from a non-finite frame. Returns where the file
+/// first holds a non-finite value, if it does.
+std::optional<std::string> replay_checking_frames(StepGrader& grader, TrajectoryReader& file,
+                                                  int dim) {
+  const auto check_last_frame = [&grader, dim] {
+    const State& frame = grader.file_state();
+    return non_finite_in_frame(frame.step, frame.q, frame.v, dim);
+  };
+  if (auto bad = check_last_frame()) return bad;
+  while (grader.grade_next_step()) {
+    if (auto bad = check_last_frame()) return bad;
+  }
+  // A reference failure stops the replay early; a non-finite value after it is still the
+  // verdict, so the frames not yet read are checked too.
+  return find_non_finite(file, dim, grader.file_state().step + 1);
+}
+
+/// Grades the checked trajectory of a run; fills verdict, residuals and explanation. Returns the
+/// report when the trajectory could be graded.
+std::optional<GradeReport> grade_file(const Scene& scene, const std::string& path,
+                                      SceneResult& result) {
+  const int dim = scene.model.dim;
   auto file = TrajectoryReader::open(path, scene.model.num_dofs());
   if (!file) {
     result.verdict = Verdict::kNoOutput;
     result.reason = file.error();
-    return nullptr;
+    return std::nullopt;
   }
-  if (auto bad = find_non_finite(*file, scene.model.dim)) {
+  auto grader = StepGrader::open(scene, *file);
+  auto bad = grader ? replay_checking_frames(*grader, *file, dim) : find_non_finite(*file, dim);
+  if (bad) {
     result.verdict = Verdict::kGarbage;
     result.reason = "the trajectory holds a non-finite value: " + *bad;
-    return nullptr;
+    return std::nullopt;
   }
-  auto report = grade_trajectory(scene, *file);
-  if (!report) {
+  if (!grader) {
     result.verdict = Verdict::kShort;
-    result.reason = report.error();
-    return nullptr;
+    result.reason = grader.error();
+    return std::nullopt;
   }
-  take_grade(*report, scene.model.dim, result);
-  kept = std::move(report).value();
-  return &*kept;
+  take_grade(grader->report(), dim, result);
+  return grader->report();
 }
 
 }  // namespace
 
-std::optional<std::string> find_non_finite(TrajectoryReader& file, int dim) {
+std::optional<std::string> find_non_finite(TrajectoryReader& file, int dim,
+                                           std::int64_t first_frame) {
   Vector q, v;
-  for (std::int64_t k = 0; k < file.num_frames(); ++k) {
+  for (std::int64_t k = first_frame; k < file.num_frames(); ++k) {
     file.read_frame(k, q, v);
-    if (q.allFinite() && v.allFinite()) continue;
-    for (int p = 0; p * dim < q.size(); ++p) {
-      const bool bad_q = !q.segment(dim * p, dim).allFinite();
-      if (bad_q || !v.segment(dim * p, dim).allFinite()) {
-        return "frame " + std::to_string(k) + ", particle " + std::to_string(p) + ": " +
-               (bad_q ? "position " + vector_text(q, dim * p, dim)
-                      : "velocity " + vector_text(v, dim * p, dim));
-      }
-    }
+    if (auto bad = non_finite_in_frame(k, q, v, dim)) return bad;
   }
   return std::nullopt;
 }
@@ -85,20 +111,11 @@ std::optional<std::string> find_non_finite(TrajectoryReader& file, int dim) {
 std::string failure_reason(const GradeReport& report) {
   if (report.reference_failure) return *report.reference_failure;
   std::string reason;
-  const auto add = [&reason](bool passed, const char* name, double value, double limit) {
-    if (passed) return;
-    reason += (reason.empty() ? "" : ", ") + std::string(name) + " " + to_text(value) + " (limit " +
-              to_text(limit) + ")";
-  };
-  const GradingCriteria& c = report.criteria;
-  add(report.accumulated_position_passed(), "Accumulated Position Residual",
-      report.accumulated_position, c.accumulated_limit);
-  add(report.accumulated_velocity_passed(), "Accumulated Velocity Residual",
-      report.accumulated_velocity, c.accumulated_limit);
-  add(report.max_position_passed(), "Maximum Position Residual", report.max_position,
-      c.maximum_limit);
-  add(report.max_velocity_passed(), "Maximum Velocity Residual", report.max_velocity,
-      c.maximum_limit);
+  for (const Criterion& c : criteria_of(report)) {
+    if (c.passed) continue;
+    reason += (reason.empty() ? "" : ", ") + std::string(c.name) + " " + to_text(c.value) +
+              " (limit " + to_text(c.limit) + ")";
+  }
   if (const auto& d = report.first_divergence) {
     reason += "; first divergence at step " + std::to_string(d->step) + ", particle " +
               std::to_string(d->particle);
@@ -109,18 +126,17 @@ std::string failure_reason(const GradeReport& report) {
 std::string failure_details(const GradeReport& report, int dim) {
   std::ostringstream out;
   out << describe_failure(report, dim);
-  const auto beats = [](double a, double b) { return std::isnan(a) ? !std::isnan(b) : a > b; };
   std::int64_t over = 0, first_over = 0, last_over = 0, worst_step = 0;
   double worst = -1.0;
   for (const StepResidual& r : report.per_step) {
-    const bool exceeds = !(r.max_position < report.criteria.maximum_limit &&
-                           r.max_velocity < report.criteria.maximum_limit);
+    const bool exceeds = !(below_limit(r.max_position, report.criteria.maximum_limit) &&
+                           below_limit(r.max_velocity, report.criteria.maximum_limit));
     if (exceeds) {
       if (over++ == 0) first_over = r.step;
       last_over = r.step;
     }
     for (double m : {r.max_position, r.max_velocity}) {
-      if (beats(m, worst)) {
+      if (replaces_maximum(m, worst)) {
         worst = m;
         worst_step = r.step;
       }
@@ -154,7 +170,7 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
   result.particles = model.num_particles();
   result.steps = model.num_steps();
   result.dt = model.integrator.dt;
-  const std::int64_t expected_bytes = (result.steps + 1) * trajectory_frame_bytes(model.num_dofs());
+  const std::int64_t expected_bytes = expected_trajectory_bytes(model);
 
   std::optional<GradeReport> report;
   try {
@@ -168,7 +184,7 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
       result.reason = run.reason;
     } else {
       const auto start = std::chrono::steady_clock::now();
-      grade_file(scene, run.trajectory_path, result, report);
+      report = grade_file(scene, run.trajectory_path, result);
       result.grade_seconds = seconds_since(start);
     }
     if (options.keep_work)

@@ -2,6 +2,7 @@
 // Grading one scene end to end: load it, run the candidate, check the file, replay it with the
 // course's exact criteria (fosssim_grading), explain a failure.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -24,9 +25,10 @@ struct GradingOptions {
 /// the scene's verdict with a reason. A scene file that cannot be loaded is kSceneError.
 SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options);
 
-/// Where a trajectory first holds a NaN or infinite value, as
+/// Where a trajectory first holds a NaN or infinite value, from frame `first_frame` on, as
 /// "frame 12, particle 3: velocity (nan, 0)"; nothing when every value is finite.
-std::optional<std::string> find_non_finite(TrajectoryReader& file, int dim);
+std::optional<std::string> find_non_finite(TrajectoryReader& file, int dim,
+                                           std::int64_t first_frame = 0);
 
 /// One line naming the criteria a graded trajectory misses, with the first divergence:
 /// "Maximum Position Residual 1e-09 (limit 1e-10); first divergence at step 17, particle 2".

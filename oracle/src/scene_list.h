@@ -35,9 +35,11 @@ Expected<std::vector<SceneEntry>, std::string> discover_scenes(
 struct Shard {
   int index = 1;
   int count = 1;
-  bool contains(std::size_t position) const {
-    return static_cast<int>(position % static_cast<std::size_t>(count)) == index - 1;
+  /// The shard of `count` that holds the scene at `position`.
+  static Shard holding(std::size_t position, int count) {
+    return {static_cast<int>(position % static_cast<std::size_t>(count)) + 1, count};
   }
+  bool contains(std::size_t position) const { return holding(position, count).index == index; }
 };
 
 /// Parses "K/N"; the message says what is wrong.

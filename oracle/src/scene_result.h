@@ -67,6 +67,8 @@ struct SceneResult {
   double grade_seconds = 0.0;  ///< the oracle's grading time
 
   bool passed() const { return verdict == Verdict::kPassed; }
+  /// The scene's time in the reports: the candidate's run plus the oracle's grading.
+  double seconds() const { return run_seconds + grade_seconds; }
   /// The report group: the folder part of the name.
   std::string suite() const;
 };

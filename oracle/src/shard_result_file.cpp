@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "printable_text.h"
+#include "scene_list.h"
 
 namespace fosssim {
 
@@ -186,7 +187,7 @@ Expected<GradingRun, std::string> merge_shards(const std::vector<GradingRun>& sh
   std::vector<std::size_t> next(static_cast<std::size_t>(count), 0);
   for (const GradingRun* shard : by_index) merged.wall_seconds += shard->wall_seconds;
   for (std::size_t i = 0; i < merged.scenes.size(); ++i) {
-    const std::size_t k = i % static_cast<std::size_t>(count);
+    const auto k = static_cast<std::size_t>(Shard::holding(i, count).index - 1);
     const GradingRun& shard = *by_index[k];
     if (next[k] >= shard.results.size() || shard.results[next[k]].name != merged.scenes[i].name) {
       return "shard " + std::to_string(k + 1) + "/" + std::to_string(count) +

@@ -99,6 +99,30 @@ TEST(OracleCommand, DiagnosesAFailingSceneInItsFolder) {
         std::filesystem::exists(out / (std::string("diagnosis/spring_chain_explicit") + suffix)))
         << suffix;
   }
+  // What the files say: the first divergence, the per-step table around it and the plot.
+  const std::string stem = out / "diagnosis/spring_chain_explicit";
+  const std::string text = testing::read_bytes(stem + ".diagnosis.txt");
+  EXPECT_NE(text.find("First divergence at step 17, particle 2: position residual 1.0000000"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("file frame 17:"), std::string::npos) << text;
+  const std::string table = testing::read_bytes(stem + ".residuals.tsv");
+  const auto intact = testing::tsv_row(table, "16");
+  ASSERT_EQ(intact.size(), 8u) << table;
+  EXPECT_EQ(intact[2], "0");  // step 16 is still exact
+  const auto failing = testing::tsv_row(table, "17");
+  ASSERT_EQ(failing.size(), 8u) << table;
+  EXPECT_NEAR(std::stod(failing[2]), 1e-9, 1e-15);  // max position residual
+  EXPECT_EQ(failing[3], "2");                       // at particle 2
+  EXPECT_EQ(failing[4], "0");                       // the velocity of frame 17 is intact
+  const std::string svg = testing::read_bytes(stem + ".residuals.svg");
+  tinyxml2::XMLDocument plot;
+  ASSERT_EQ(plot.Parse(svg.c_str()), tinyxml2::XML_SUCCESS) << svg;
+  EXPECT_STREQ(plot.RootElement()->Name(), "svg");
+  const tinyxml2::XMLElement* line = plot.RootElement()->FirstChildElement("polyline");
+  ASSERT_NE(line, nullptr) << svg;  // the position residual over time
+  EXPECT_NE(line->NextSiblingElement("polyline"), nullptr) << svg;  // and the velocity residual
+  EXPECT_NE(svg.find("first divergence: step 17"), std::string::npos);
 }
 
 TEST(OracleCommand, ExitStatusesForBadInput) {

@@ -18,6 +18,7 @@ namespace fosssim {
 namespace {
 
 using testing::TemporaryFolder;
+using testing::tsv_row;
 
 SceneEntry chain_scene() {
   return {"assets/basics/spring_chain_explicit.xml", testing::kChainScene, false};
@@ -38,19 +39,6 @@ SceneResult grade_chain_with(const std::string& script, const TemporaryFolder& w
 
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
-}
-
-/// The tab-separated fields of the line of `table` whose first field is `key`.
-std::vector<std::string> tsv_row(const std::string& table, const std::string& key) {
-  std::istringstream lines(table);
-  std::string line;
-  while (std::getline(lines, line)) {
-    std::vector<std::string> fields;
-    std::istringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, '\t');) fields.push_back(cell);
-    if (!fields.empty() && fields[0] == key) return fields;
-  }
-  return {};
 }
 
 TEST(GradeScene, FossSimPassesEveryTestSceneWithZeroResiduals) {

@@ -4,6 +4,7 @@
 
 #include <set>
 #include <string>
+#include <utility>
 
 namespace fosssim {
 namespace {
@@ -32,6 +33,25 @@ TEST(Sha256, PaddingBoundariesAgreeBetweenWholeAndPiecewiseInput) {
     Sha256 piecewise;
     for (char c : message) piecewise.update(&c, 1);
     EXPECT_EQ(piecewise.hex_digest(), sha256_hex(message)) << "length " << length;
+  }
+}
+
+TEST(Sha256, PaddingBoundariesMatchKnownDigests) {
+  // The same byte pattern (k * 7 + 3) at lengths around the padding boundaries, against digests
+  // from Python's hashlib: hashlib.sha256(bytes((k * 7 + 3) % 256 for k in range(n))).
+  const std::pair<std::size_t, const char*> known[] = {
+      {55, "e7313d333c272e639f790978283f9eb392e843d0f29b7016828bb1daa4aac70b"},
+      {56, "4324d65f3c103567f5589c710bc08f8523f929a9272e3af36fc968e52abc6c27"},
+      {57, "35df609437dcfea3279283ab79fd554e2bf78f8f7ae2de532d8ee300b09e8f73"},
+      {63, "81c80242132f230c3bd41b3e63bbcff16107339549214a99614ff26664625055"},
+      {64, "39e3d7b6b5d075d37d053ad89b24b41bef4f3c29760c84447cab3f3be1882241"},
+      {65, "aacca6ff74fdbb296d165a45cecfa04e5127bc008770fbbdd48006f2d2fae95e"},
+      {119, "9ce7368e4daf32341631b492e80359dc9f594b48453cd0dd5bf0b19279cc177e"},
+      {120, "7836b787757e95e58b3ca5aec90b1b004e8deba1e50e9675af9cabf1a13a04b5"}};
+  for (const auto& [length, digest] : known) {
+    std::string message;
+    for (std::size_t k = 0; k < length; ++k) message.push_back(static_cast<char>(k * 7 + 3));
+    EXPECT_EQ(sha256_hex(message), digest) << "length " << length;
   }
 }
 
