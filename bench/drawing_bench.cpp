@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "core/simulation.h"
+#include "core/step/simulation.h"
 #include "io/scene_loader.h"
 #include "pictures/cairo_painter.h"
 #include "render/scene_view.h"

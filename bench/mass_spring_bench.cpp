@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include "core/force_evaluation.h"
@@ -20,6 +21,8 @@
 #include "core/integrators/linearly_implicit_euler.h"
 #include "core/integrators/local_global.h"
 #include "core/solvers/spd_solver.h"
+#include "core/systems/local_global_system.h"
+#include "core/systems/step_matrix.h"
 #include "mesh/generators.h"
 #include "mesh/mesh_scene.h"
 
@@ -47,12 +50,14 @@ constexpr double kTimeStep = 1.0 / 30.0;
 
 /// The paper's setting at any resolution: a flat 1 m cloth of nx × nx vertices, 1 kg, springs
 /// of 1000 N/m (structural, shear, bend), held at two corners, gravity, h = 1/30 s.
-Scene make_cloth(int nx, IntegratorKind kind) {
+Scene make_cloth(int nx, const char* integrator) {
   Scene scene;
   scene.model.dim = 3;
-  scene.model.integrator.kind = kind;
+  scene.model.integrator.use(integrator_method(integrator));
   scene.model.integrator.dt = kTimeStep;
-  scene.model.integrator.local_global.iterations = 10;
+  if (scene.model.integrator.options.has("iterations")) {
+    scene.model.integrator.options.set("iterations", 10);
+  }
   GeneratedMesh cloth = generate_cloth(nx, nx, 1.0, 1.0, true, true);
   MeshMaterial material;
   material.k = 1000.0;
@@ -64,38 +69,44 @@ Scene make_cloth(int nx, IntegratorKind kind) {
   return scene;
 }
 
-/// The baseline: linearly implicit Euler with the compat elimination (assemble_step_matrix)
-/// and a SimplicialLDLT analysed and factored from scratch every step.
+/// The baseline: linearly implicit Euler with the course's identity rows for fixed particles
+/// (StepMatrix) and a SimplicialLDLT analysed and factored from scratch every step.
 class LdltEveryStep final : public Integrator {
  protected:
-  void advance(const SceneModel& model, State& state) override {
-    const double h = model.integrator.dt;
-    const SparseMatrix A = assemble_step_matrix(model, state.q, state.v, h, scratch_, &hxv_);
-    Vector rhs = h * compute_force(model, state.q, state.v) - hxv_;
-    zero_fixed(model, rhs);
+  void prepare() override { matrix_.emplace(forces(), FixedParticleRule::kIdentityRows); }
+  void advance(State& state) override {
+    const double h = model().integrator.dt;
+    Vector rhs = h * compute_force(forces(), state.q, state.v);
+    const SparseMatrix& A = matrix_->assemble(state.q, state.v, h, &state.v, &rhs);
     Eigen::SimplicialLDLT<SparseMatrix> ldlt(A);
-    state.v += ldlt.solve(rhs);
+    matrix_->add_solution(ldlt.solve(matrix_->restrict(rhs)), state.v);
     state.q += h * state.v;
   }
 
  private:
-  HessianBuilder scratch_;
-  Vector hxv_;  // h² hessX v, taken from the step matrix's own entries
+  std::optional<StepMatrix> matrix_;
 };
 
+/// The springs of a cloth made by make_cloth (its first force).
+std::vector<SpringTerm> cloth_springs(const Scene& scene) {
+  return dynamic_cast<const SpringSetForce<3>&>(*scene.model.forces[0]).springs();
+}
+
 struct StepTiming {
-  double first_ms = 0.0;  ///< the first step, with every precomputation
+  double first_ms = 0.0;  ///< precompute and the first step
   double step_ms = 0.0;   ///< mean of the following steps
 };
 
+/// Binds `integrator` to the scene's model and times its steps.
 StepTiming time_steps(Integrator& integrator, const Scene& scene, int steps) {
   State state = scene.initial;
   StepTiming timing;
   auto start = Clock::now();
-  integrator.step(scene.model, state);
+  integrator.precompute(scene.model);
+  integrator.step(state);
   timing.first_ms = milliseconds_since(start);
   start = Clock::now();
-  for (int k = 0; k < steps; ++k) integrator.step(scene.model, state);
+  for (int k = 0; k < steps; ++k) integrator.step(state);
   timing.step_ms = milliseconds_since(start) / steps;
   if (!state.q.allFinite()) std::printf("  (warning: the state became non-finite)\n");
   return timing;
@@ -111,12 +122,12 @@ void integrator_table(const std::vector<int>& sizes) {
   std::printf("%9s %9s %20s %20s %20s %11s %11s\n", "vertices", "springs", "LG-10", "LIE",
               "LDLT baseline", "base/LG-10", "base/LIE");
   for (int nx : sizes) {
-    const Scene lg_scene = make_cloth(nx, IntegratorKind::kLocalGlobal);
-    const Scene lie_scene = make_cloth(nx, IntegratorKind::kLinearlyImplicitEuler);
+    const Scene lg_scene = make_cloth(nx, "local-global");
+    const Scene lie_scene = make_cloth(nx, "linearly-implicit-euler");
     const int n = lg_scene.model.num_particles();
     const int steps = n <= 2000 ? 30 : (n <= 20000 ? 10 : 2);
-    LocalGlobal<3> lg(lg_scene.model);
-    LinearlyImplicitEuler lie(lie_scene.model);
+    LocalGlobal<3> lg(local_global_settings(lg_scene.model.integrator.options));
+    LinearlyImplicitEuler lie(/*project_hessian=*/false);
     LdltEveryStep baseline;
     const StepTiming t_lg = time_steps(lg, lg_scene, n <= 20000 ? 3 * steps : 5);
     const StepTiming t_lie = time_steps(lie, lie_scene, steps);
@@ -139,9 +150,8 @@ void spring_force_table(const std::vector<int>& sizes) {
   std::printf("%9s %9s %12s %12s %8s %12s %12s %8s\n", "vertices", "springs", "grad set",
               "grad each", "ratio", "hessX set", "hessX each", "ratio");
   for (int nx : sizes) {
-    const Scene scene = make_cloth(nx, IntegratorKind::kImplicitEuler);
-    std::vector<SpringTerm> springs;
-    scene.model.forces[0]->append_springs(springs);
+    const Scene scene = make_cloth(nx, "implicit-euler");
+    const std::vector<SpringTerm> springs = cloth_springs(scene);
     const SpringSetForce<3> set(springs, "set");
     std::vector<std::unique_ptr<Force>> each;
     for (const SpringTerm& s : springs)
@@ -192,30 +202,8 @@ void spring_force_table(const std::vector<int>& sizes) {
 /// Q = M/h² + Aᵀ K A over the free particles of a cloth, as the local/global solver builds it.
 SparseMatrix local_global_matrix(const Scene& scene) {
   const SceneModel& model = scene.model;
-  std::vector<int> index(model.num_particles(), -1);
-  int n = 0;
-  for (int p = 0; p < model.num_particles(); ++p) {
-    if (!model.fixed[p]) index[p] = n++;
-  }
-  std::vector<SpringTerm> springs;
-  model.forces[0]->append_springs(springs);
-  std::vector<Triplet> t;
-  for (int p = 0; p < model.num_particles(); ++p) {
-    if (index[p] >= 0)
-      t.emplace_back(index[p], index[p], model.mass[3 * p] / (kTimeStep * kTimeStep));
-  }
-  for (const SpringTerm& s : springs) {
-    const int i = index[s.i], j = index[s.j];
-    if (i >= 0) t.emplace_back(i, i, s.k);
-    if (j >= 0) t.emplace_back(j, j, s.k);
-    if (i >= 0 && j >= 0) {
-      t.emplace_back(i, j, -s.k);
-      t.emplace_back(j, i, -s.k);
-    }
-  }
-  SparseMatrix Q(n, n);
-  Q.setFromTriplets(t.begin(), t.end());
-  return Q;
+  return assemble_local_global_matrix(model.mass, FreeDofs(model.fixed, 3), cloth_springs(scene),
+                                      {}, model.integrator.dt);
 }
 
 template <typename Solve>
@@ -237,7 +225,7 @@ void global_solve_table(const std::vector<int>& sizes) {
 #endif
   std::printf("\n");
   for (int nx : sizes) {
-    const SparseMatrix Q = local_global_matrix(make_cloth(nx, IntegratorKind::kLocalGlobal));
+    const SparseMatrix Q = local_global_matrix(make_cloth(nx, "local-global"));
     const int n = static_cast<int>(Q.rows());
     const Points<3> B = Points<3>::Random(n, 3);
     const int repeats = std::max(3, 20000000 / n / 20);

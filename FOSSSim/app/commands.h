@@ -18,10 +18,9 @@ int run_grading(const Scene& scene, const Options& options);
 int report_grade(const Scene& scene, const Options& options, const GradeReport& report);
 
 /// Opens the interactive window (SPEC section 6) on the scene: a run, or with -i a step-by-step
-/// grading replay that rings the particles where the file disagrees with the reference. A run
-/// adds the mouse's drag spring to the scene's model (add_drag_spring), idle until a particle
-/// is grabbed.
-int run_window(Scene& scene, const Options& options);
+/// grading replay that rings the particles where the file disagrees with the reference. In a
+/// run the mouse pulls particles with a drag spring the window owns (viewer/particle_grab.h).
+int run_window(const Scene& scene, const Options& options);
 
 /// Finite-difference check of every force at the scene's initial state.
 int run_derivative_check(const Scene& scene, const Options& options);

@@ -111,7 +111,7 @@ class EnergyOutput final : public FrameOutput {
     if (!plot_.empty()) {
       EnergyPlotStyle style;
       style.title = std::filesystem::path(scene_.source).filename().string() + "  -  " +
-                    integrator_name(scene_.model.integrator.kind) +
+                    std::string(scene_.model.integrator.method->name) +
                     ", dt = " + format_dt(scene_.model.integrator.dt);
       write_energy_plot(samples_, plot_ + suffix, style);
     }

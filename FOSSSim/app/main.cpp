@@ -10,6 +10,7 @@
 #include "app/interrupt.h"
 #include "app/options.h"
 #include "app/parse_command_line.h"
+#include "core/error.h"
 #include "io/scene_loader.h"
 #include "scripting/step_hooks.h"
 
@@ -32,11 +33,14 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   }
   Scene& scene = *loaded;
-  for (const std::string& warning : scene.warnings) std::cerr << warning << "\n";
-  if (auto problem = apply_overrides(options, scene)) {
-    std::cerr << "FOSSSim: error: " << *problem << "\n";
+  try {
+    apply_overrides(options, scene);
+  } catch (const Error& error) {
+    for (const std::string& warning : scene.warnings) std::cerr << warning << "\n";
+    std::cerr << "FOSSSim: error: " << error.what() << "\n";
     return kExitBadInput;
   }
+  for (const std::string& warning : scene.warnings) std::cerr << warning << "\n";
   if (!scene.description.empty() && !options.quiet) std::cout << scene.description << std::endl;
 
   if (options.check_derivatives) return run_derivative_check(scene, options);

@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <vector>
 
+#include "core/error.h"
+#include "core/integrators/integrator_registry.h"
 #include "core/text.h"
 
 namespace fosssim {
@@ -105,6 +107,95 @@ std::optional<std::string> parse_view(const std::string& text, OrbitViewSettings
   return std::nullopt;
 }
 
+/// The --integrator-option values, NAME=VALUE each, as an OptionSource.
+class CommandLineOptions final : public OptionSource {
+ public:
+  explicit CommandLineOptions(const std::vector<std::string>& assignments) {
+    for (const std::string& assignment : assignments) {
+      const auto equals = assignment.find('=');
+      if (equals == std::string::npos || equals == 0) {
+        throw Error(ErrorKind::kBadInput,
+                    "--integrator-option must be NAME=VALUE, found '" + assignment + "'");
+      }
+      values_.emplace_back(assignment.substr(0, equals), assignment.substr(equals + 1));
+    }
+  }
+  /// The names given, in order.
+  std::vector<std::string> names() const {
+    std::vector<std::string> out;
+    for (const auto& [name, value] : values_) out.push_back(name);
+    return out;
+  }
+
+  bool has(std::string_view name) override { return find(name) != nullptr; }
+  double number(std::string_view name) override {
+    const std::string& text = *find(name);
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(value)) {
+      fail(name, "must be a finite number, found '" + text + "'");
+    }
+    return value;
+  }
+  std::string text(std::string_view name) override { return *find(name); }
+  [[noreturn]] void fail(std::string_view name, const std::string& problem) override {
+    throw Error(ErrorKind::kBadInput, "--integrator-option " + std::string(name) + ": " + problem);
+  }
+
+ private:
+  /// The last value given for `name` (a later one overrides an earlier one), or nullptr.
+  const std::string* find(std::string_view name) const {
+    for (auto it = values_.rbegin(); it != values_.rend(); ++it) {
+      if (it->first == name) return &it->second;
+    }
+    return nullptr;
+  }
+
+  std::vector<std::pair<std::string, std::string>> values_;
+};
+
+/// "newton-tolerance, newton-max-iterations", or "none".
+std::string option_names(const IntegratorMethod& method) {
+  std::string out;
+  for (const OptionSpec& spec : method.options)
+    out += (out.empty() ? "" : ", ") + std::string(spec.name);
+  return out.empty() ? "none" : out;
+}
+
+/// Applies --integrator-option (and its shorthands) to the scene's integrator settings.
+void apply_integrator_options(const std::vector<std::string>& assignments, Scene& scene) {
+  if (assignments.empty()) return;
+  IntegratorSettings& settings = scene.model.integrator;
+  CommandLineOptions given(assignments);
+  for (const std::string& name : given.names()) {
+    if (settings.options.has(name)) continue;
+    const std::string problem = "the scene's integrator " + std::string(settings.method->name) +
+                                " has no option '" + name +
+                                "' (its options: " + option_names(*settings.method) + ")";
+    if (name.rfind("newton-", 0) != 0)
+      throw Error(ErrorKind::kBadInput, "--integrator-option: " + problem);
+    scene.warnings.push_back("FOSSSim: warning: --" + name + " ignored: " + problem);
+  }
+  settings.options.read(given);
+}
+
+/// The integrators and their options, for the end of --help.
+std::string integrator_help() {
+  std::string out =
+      "Integrators (<integrator type=\"...\">) and their options (attributes of\n"
+      "<integrator>, or --integrator-option NAME=VALUE; docs/integrators.md):\n";
+  for (const IntegratorMethod* method : integrator_methods()) {
+    out += "  " + std::string(method->name);
+    for (std::string_view alias : method->aliases) out += ", " + std::string(alias);
+    out += "\n      " + std::string(method->summary) + "\n";
+    for (const OptionSpec& spec : method->options) {
+      out += "      " + std::string(spec.name) + " = " + spec.describe_values() + " (default " +
+             spec.default_text() + ")\n          " + std::string(spec.help) + "\n";
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::optional<std::string> check_picture_options(Options& options) {
@@ -164,12 +255,25 @@ void add_options(CLI::App& app, Options& options) {
   input->excludes(output);
   app.add_option("--duration", options.duration, "Override the scene's duration (seconds, >= 0)");
   app.add_option("--dt", options.dt, "Override the scene's time step (seconds, > 0)");
-  app.add_option(
-      "--newton-max-iterations", options.newton_max_iterations,
-      "Implicit Euler: give up on a step after this many Newton iterations (default 200)");
-  app.add_option("--newton-tolerance", options.newton_tolerance,
-                 "Implicit Euler: stop when the Newton correction's L2 norm is below this "
-                 "(default 1e-9, the course's value)");
+  app.add_option("--integrator-option", options.integrator_options,
+                 "Set an option of the scene's integrator, as an attribute of <integrator>\n"
+                 "would (repeatable); the options of each method are listed below")
+      ->type_name("NAME=VALUE");
+  app.add_option_function<std::string>(
+         "--newton-max-iterations",
+         [&options](const std::string& n) {
+           options.integrator_options.push_back("newton-max-iterations=" + n);
+         },
+         "Implicit Euler: give up on a step after this many Newton iterations (default 200)")
+      ->type_name("N");
+  app.add_option_function<std::string>(
+         "--newton-tolerance",
+         [&options](const std::string& tolerance) {
+           options.integrator_options.push_back("newton-tolerance=" + tolerance);
+         },
+         "Implicit Euler: stop when the Newton correction's L2 norm is below this\n"
+         "(default 1e-9, the course's value)")
+      ->type_name("TOL");
   app.add_option("--residual-file", options.residual_file,
                  "Grading mode: where to write the per-criterion residuals")
       ->capture_default_str();
@@ -179,54 +283,43 @@ void add_options(CLI::App& app, Options& options) {
   app.add_flag("-q,--quiet", options.quiet, "No progress bar and no description");
   add_picture_options(app, options);
   app.set_version_flag("--version", "FOSSSim 0.1.0");
-  app.footer(
-      "Exit status: 0 success or passed; 1 grading failed; 2 bad command line, scene or\n"
-      "trajectory file; 3 a step failed (non-finite state, Newton did not converge);\n"
-      "4 an output file could not be written; 130 interrupted.\n\n"
-      "Examples:\n"
-      "  FOSSSim -s assets/t1m1/springs_single.xml -d 0 -o out.bin\n"
-      "  FOSSSim -s assets/t1m1/springs_single.xml -d 0 -i out.bin\n"
-      "  FOSSSim -s scene.xml -d 0 --dt 0.001 --duration 2 -o fine.bin\n"
-      "  FOSSSim -s scene.xml --check-derivatives\n"
-      "  FOSSSim -s scene.xml                          (the window; see docs/viewing.md)\n"
-      "  FOSSSim -s scene.xml --movie scene.mp4        (no display needed)\n"
-      "  FOSSSim -s scene.xml -d 0 -g 1 --energy-plot energy.png");
+  app.footer(integrator_help() +
+             "\nExit status: 0 success or passed; 1 grading failed; 2 bad command line, scene or\n"
+             "trajectory file; 3 a step failed (non-finite state, Newton did not converge);\n"
+             "4 an output file could not be written; 130 interrupted.\n\n"
+             "Examples:\n"
+             "  FOSSSim -s assets/t1m1/springs_single.xml -d 0 -o out.bin\n"
+             "  FOSSSim -s assets/t1m1/springs_single.xml -d 0 -i out.bin\n"
+             "  FOSSSim -s scene.xml -d 0 --dt 0.001 --duration 2 -o fine.bin\n"
+             "  FOSSSim -s scene.xml --check-derivatives\n"
+             "  FOSSSim -s scene.xml                          (the window; see docs/viewing.md)\n"
+             "  FOSSSim -s scene.xml --movie scene.mp4        (no display needed)\n"
+             "  FOSSSim -s scene.xml -d 0 -g 1 --energy-plot energy.png");
 }
 
-std::optional<std::string> apply_overrides(const Options& options, Scene& scene) {
+void apply_overrides(const Options& options, Scene& scene) {
   SceneModel& model = scene.model;
+  const auto fail = [](const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); };
   if (options.duration) {
     if (!std::isfinite(*options.duration) || *options.duration < 0.0)
-      return "--duration must be a finite number >= 0, found " + to_text(*options.duration);
+      fail("--duration must be a finite number >= 0, found " + to_text(*options.duration));
     model.duration = *options.duration;
   }
   if (options.dt) {
     if (!std::isfinite(*options.dt) || *options.dt <= 0.0)
-      return "--dt must be a finite number > 0, found " + to_text(*options.dt);
+      fail("--dt must be a finite number > 0, found " + to_text(*options.dt));
     model.integrator.dt = *options.dt;
   }
-  if (options.newton_max_iterations) {
-    if (*options.newton_max_iterations < 1)
-      return "--newton-max-iterations must be at least 1, found " +
-             std::to_string(*options.newton_max_iterations);
-    model.integrator.newton.max_iterations = *options.newton_max_iterations;
-  }
+  apply_integrator_options(options.integrator_options, scene);
   if (!options.view.empty() || options.orthographic) {
-    if (model.dim != 3) return "--view and --orthographic apply to 3D scenes (<scene dim=\"3\">)";
+    if (model.dim != 3) fail("--view and --orthographic apply to 3D scenes (<scene dim=\"3\">)");
     if (!scene.appearance.camera3d) scene.appearance.camera3d.emplace();
     OrbitViewSettings& view = *scene.appearance.camera3d;
     if (!options.view.empty()) {
-      if (auto problem = parse_view(options.view, view)) return problem;
+      if (auto problem = parse_view(options.view, view)) fail(*problem);
     }
     if (options.orthographic) view.orthographic = true;
   }
-  if (options.newton_tolerance) {
-    if (!std::isfinite(*options.newton_tolerance) || *options.newton_tolerance <= 0.0)
-      return "--newton-tolerance must be a finite number > 0, found " +
-             to_text(*options.newton_tolerance);
-    model.integrator.newton.tolerance = *options.newton_tolerance;
-  }
-  return std::nullopt;
 }
 
 }  // namespace fosssim

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/expected.h"
 #include "core/scene.h"
@@ -20,8 +21,9 @@ struct Options {
   std::string input;               ///< -i trajectory to grade
   std::optional<double> duration;  ///< --duration override, seconds
   std::optional<double> dt;        ///< --dt override, seconds
-  std::optional<int> newton_max_iterations;
-  std::optional<double> newton_tolerance;
+  /// --integrator-option NAME=VALUE, in order; --newton-max-iterations N and
+  /// --newton-tolerance TOL are shorthands for two of them.
+  std::vector<std::string> integrator_options;
   std::string residual_file = "residual.txt";
   bool check_derivatives = false;
   bool quiet = false;
@@ -54,7 +56,9 @@ std::optional<std::string> check_picture_options(Options& options);
 /// The movie settings of --size and --fps.
 MovieSettings movie_settings(const Options& options);
 
-/// Applies the command line's overrides to a loaded scene; returns a message if one is invalid.
-std::optional<std::string> apply_overrides(const Options& options, Scene& scene);
+/// Applies the command line's overrides to a loaded scene. Throws Error (kBadInput) when one is
+/// invalid; an integrator option the scene's integrator does not have becomes a warning in
+/// scene.warnings when it came from a shorthand (--newton-*), an error otherwise.
+void apply_overrides(const Options& options, Scene& scene);
 
 }  // namespace fosssim

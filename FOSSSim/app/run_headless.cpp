@@ -5,7 +5,7 @@
 #include "app/frame_outputs.h"
 #include "app/interrupt.h"
 #include "app/progress_bar.h"
-#include "core/simulation.h"
+#include "core/step/simulation.h"
 #include "core/step_error.h"
 #include "render/scene_view.h"
 #include "scripting/step_hooks.h"
@@ -27,7 +27,7 @@ int run_headless(const Scene& scene, const Options& options) {
     return kExitIoError;
   }
   FrameOutputs& outputs = *opened;
-  Simulation simulation(scene.model, scene.initial, make_step_hook(scene));
+  Simulation simulation(scene.model, scene.initial, scripted_additions(scene));
   SceneView view(scene, simulation.state(), options.width, options.height);
   ProgressBar progress("simulating", scene.model.num_steps(),
                        !options.quiet && stderr_is_terminal());

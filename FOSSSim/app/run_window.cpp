@@ -7,7 +7,6 @@
 #include "app/exit_codes.h"
 #include "app/frame_outputs.h"
 #include "app/interrupt.h"
-#include "core/interaction/picking.h"
 #include "io/trajectory_file.h"
 #include "viewer/stepper.h"
 #include "viewer/window.h"
@@ -28,18 +27,17 @@ WindowSettings window_settings(const Scene& scene, const Options& options) {
 }
 
 /// Runs the scene in the window, feeding the outputs of -o, -g, -m and --energy-*; the mouse
-/// can pull particles with a drag spring added to the model.
-int run_simulation_window(Scene& scene, const Options& options) {
-  DragSpringForce& spring = add_drag_spring(scene.model);
+/// can pull particles with the drag spring of ParticleGrab, an interaction force of the run.
+int run_simulation_window(const Scene& scene, const Options& options) {
   auto opened = FrameOutputs::open(scene, options);
   if (!opened) {
     std::cerr << "FOSSSim: error: " << opened.error() << "\n";
     return kExitIoError;
   }
   FrameOutputs& outputs = *opened;
-  SimulationStepper stepper(scene);
+  ParticleGrab grab(scene);
+  SimulationStepper stepper(scene, {&grab.force()});
   SceneView view(scene, stepper.state(), options.width, options.height);
-  ParticleGrab grab(scene, spring);
   int status = kExitOk;
   bool outputs_open = true;
   auto close_outputs = [&](const std::string& why) {
@@ -133,7 +131,7 @@ int run_grading_window(const Scene& scene, const Options& options) {
 
 }  // namespace
 
-int run_window(Scene& scene, const Options& options) {
+int run_window(const Scene& scene, const Options& options) {
   if (auto problem = check_display()) {
     std::cerr << "FOSSSim: error: " << *problem << "\n";
     return kExitBadInput;

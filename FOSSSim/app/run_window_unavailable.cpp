@@ -7,7 +7,7 @@
 
 namespace fosssim {
 
-int run_window(Scene&, const Options&) {
+int run_window(const Scene&, const Options&) {
   std::cerr << "FOSSSim: error: this build has no interactive window (it was built without GLUT, "
                "or with FOSSSIM_WITH_WINDOW=OFF); run headless with -d 0, and see docs/viewing.md "
                "for pictures "

@@ -5,19 +5,23 @@
 #include <vector>
 
 #include "core/hessian_builder.h"
-#include "core/spring_terms.h"
 #include "core/types.h"
 
 namespace fosssim {
 
-/// The point at which a force is evaluated.
+/// The point at which a force is evaluated, and what its hessX should be.
 struct ForceInput {
   const Vector& q;     ///< positions, size dim*n
   const Vector& v;     ///< velocities, size dim*n
   const Vector& mass;  ///< per-DOF masses, size dim*n
+  /// For add_hessian_x: add each element's block projected onto the positive semi-definite
+  /// matrices (a compressed spring loses its negative transverse stiffness), so that
+  /// M + h² hessX stays positive definite. Forces whose blocks are always semi-definite, or
+  /// that cannot project, add their exact hessX.
+  bool definite_hessian = false;
 };
 
-/// A force on the particles, written as the derivatives of a potential U (SPEC section 3).
+/// A force on the particles, written as the derivatives of a potential U (docs/forces.md).
 /// Every method *adds* into its output: the gradient gradE = -F, hessX = -dF/dq and
 /// hessV = -dF/dv. Non-conservative forces still report gradE = -F and add no energy.
 class Force {
@@ -42,22 +46,6 @@ class Force {
   virtual bool has_symmetric_jacobians() const { return true; }
   /// A short label for messages, such as "springforce(edge 3)".
   virtual std::string label() const = 0;
-
-  /// For solvers that take springs implicitly (the local/global solver of Liu et al. 2013):
-  /// when this force is exactly a set of springs (SpringTerm, with their damping), appends them
-  /// and returns true. Otherwise returns false and appends nothing; the default. The springs
-  /// must not change while a simulation runs.
-  virtual bool append_springs(std::vector<SpringTerm>& springs) const {
-    (void)springs;
-    return false;
-  }
-  /// Likewise for zero-rest-length springs to points in space (AnchorTerm). Unlike springs,
-  /// anchors may change between steps (a particle dragged with the mouse); solvers ask again
-  /// every step. A force that returns true and appends nothing currently adds no force.
-  virtual bool append_anchors(std::vector<AnchorTerm>& anchors) const {
-    (void)anchors;
-    return false;
-  }
 };
 
 }  // namespace fosssim

@@ -8,21 +8,18 @@
 namespace fosssim {
 
 /// Accumulates scaled D×D blocks into a list of triplets; forces write their Hessians through it
-/// so that the scatter into the global sparse matrix is written once. The scale lets one list
-/// hold h²·hessX + h·hessV without temporaries.
+/// so that the scatter into the global sparse matrix is written once. The scale belongs to
+/// whoever assembles (forces only add blocks): it lets one list hold h²·hessX + h·hessV
+/// without temporaries.
 class HessianBuilder {
  public:
   explicit HessianBuilder(double scale = 1.0) : scale_(scale) {}
 
   /// Sets the factor applied to every block added from now on.
   void set_scale(double scale) { scale_ = scale; }
-  double scale() const { return scale_; }
 
-  /// Asks forces whose per-element Hessian can be indefinite (a compressed spring's) to add its
-  /// projection onto the positive semi-definite matrices instead, so that M + h²·hessX stays
-  /// positive definite. Off by default; forces that cannot project add their exact Hessian.
-  void set_project_definite(bool on) { project_definite_ = on; }
-  bool project_definite() const { return project_definite_; }
+  /// Makes room for `entries` more triplets.
+  void reserve(std::size_t entries) { triplets_.reserve(triplets_.size() + entries); }
 
   /// Adds scale·H to the block of rows of particle pi and columns of particle pj.
   template <int D>
@@ -34,7 +31,8 @@ class HessianBuilder {
     }
   }
 
-  /// The pair pattern of SPEC section 3: +H to blocks (i,i) and (j,j), -H to (i,j) and (j,i).
+  /// The pair pattern of pair forces (docs/forces.md): +H to blocks (i,i) and (j,j), -H to (i,j)
+  /// and (j,i).
   template <int D>
   void add_pair(int pi, int pj, const Mat<D>& H) {
     add_block<D>(pi, pi, H);
@@ -45,6 +43,10 @@ class HessianBuilder {
 
   /// Adds scale·value at (dof, dof).
   void add_diagonal(int dof, double value) { triplets_.emplace_back(dof, dof, scale_ * value); }
+  /// Adds scale·value at (row, col), for Hessians that are not made of blocks.
+  void add_entry(int row, int col, double value) {
+    triplets_.emplace_back(row, col, scale_ * value);
+  }
 
   std::vector<Triplet>& triplets() { return triplets_; }
   const std::vector<Triplet>& triplets() const { return triplets_; }
@@ -59,7 +61,6 @@ class HessianBuilder {
 
  private:
   double scale_;
-  bool project_definite_ = false;
   std::vector<Triplet> triplets_;
 };
 

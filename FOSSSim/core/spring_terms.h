@@ -7,7 +7,7 @@ namespace fosssim {
 
 /// A Hookean spring between particles i and j, as the local/global solver sees it:
 ///   U = ½ k (|x_j - x_i| - l0)²,  plus a damping coefficient b (N·s/m).
-/// Forces that consist of such springs describe themselves with Force::append_springs.
+/// SpringForce::term and SpringSetForce::springs describe themselves this way.
 struct SpringTerm {
   int i = 0;
   int j = 0;

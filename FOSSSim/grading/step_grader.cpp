@@ -6,10 +6,8 @@
 namespace fosssim {
 
 StepGrader::StepGrader(const Scene& scene, TrajectoryReader& file, const GradingCriteria& criteria)
-    : scene_(&scene),
-      file_(&file),
-      integrator_(make_integrator(scene.model)),
-      hook_(make_step_hook(scene)) {
+    : scene_(&scene), file_(&file), pipeline_(scene.model, scripted_additions(scene)) {
+  pipeline_.set_health_check(false);
   report_.criteria = criteria;
   report_.steps = scene.model.num_steps();
   report_.per_step.reserve(static_cast<std::size_t>(report_.steps));
@@ -42,8 +40,7 @@ bool StepGrader::grade_next_step() {
   reference.step = k - 1;
   reference.time = static_cast<double>(k - 1) * model.integrator.dt;
   try {
-    integrator_->step(model, reference);
-    if (hook_) hook_->after_step(model, reference);
+    pipeline_.step(reference);
   } catch (const StepError& error) {
     report_.reference_failure = std::string("the reference integrator failed at ") + error.what();
     return false;

@@ -1,5 +1,6 @@
 #pragma once
-// Grading one step at a time (SPEC section 5), for the batch grader and the window's grading mode.
+// Grading one step at a time (docs/command-line.md, 'Grading'), for the batch grader and the
+// window's grading mode.
 
 #include <cstdint>
 #include <memory>
@@ -7,17 +8,18 @@
 #include <vector>
 
 #include "core/expected.h"
-#include "core/integrators/integrator.h"
 #include "core/scene.h"
-#include "core/step_hook.h"
+#include "core/step/step_pipeline.h"
 #include "grading/grader.h"
 #include "io/trajectory_file.h"
 
 namespace fosssim {
 
-/// Replays a trajectory file against a scene's own integrator, one step per call: for step k it
-/// restarts from the file's frame k-1, takes one reference step (then the scene tag's hook, as a
-/// run does) and compares with the file's frame k, for every particle, fixed ones included.
+/// Replays a trajectory file against a scene's own step, one step per call: for step k it
+/// restarts from the file's frame k-1, takes one reference step through the scene's step
+/// pipeline (core/step/step_pipeline.h: the integrator, then the stages a run has, such as the
+/// scene tag's hook) and compares with the file's frame k, for every particle, fixed ones
+/// included. Non-finite reference states are compared, not rejected.
 /// The report accumulates over the steps graded so far.
 class StepGrader {
  public:
@@ -52,8 +54,7 @@ class StepGrader {
 
   const Scene* scene_;
   TrajectoryReader* file_;
-  std::unique_ptr<Integrator> integrator_;
-  std::unique_ptr<const StepHook> hook_;
+  StepPipeline pipeline_;
   GradeReport report_;
   State file_state_;
   std::vector<double> position_residuals_, velocity_residuals_;

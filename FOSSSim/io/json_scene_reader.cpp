@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/forces/constant_force.h"
+#include "core/integrators/integrator_registry.h"
 #include "core/text.h"
 #include "io/mesh_reference.h"
 #include "io/obj_reader.h"
@@ -22,6 +23,25 @@ int line_of(std::string_view text, std::size_t offset) {
   return 1 +
          static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(offset), '\n'));
 }
+
+class JsonSceneParser;
+
+/// The integrator options a JSON scene may set, as its top-level keys. Only "iterations" is
+/// one today; the others are fixed by the format (JsonSceneDefaults).
+class KeyOptions final : public OptionSource {
+ public:
+  KeyOptions(JsonSceneParser& parser, const json& root) : parser_(parser), root_(root) {}
+  bool has(std::string_view name) override {
+    return name == "iterations" && root_.contains(std::string(name));
+  }
+  double number(std::string_view name) override;
+  std::string text(std::string_view name) override { return root_.at(std::string(name)).dump(); }
+  [[noreturn]] void fail(std::string_view name, const std::string& problem) override;
+
+ private:
+  JsonSceneParser& parser_;
+  const json& root_;
+};
 
 class JsonSceneParser {
  public:
@@ -42,11 +62,13 @@ class JsonSceneParser {
     model.mass.resize(0);
     scene_.initial.q.resize(0);
     scene_.initial.v.resize(0);
-    model.integrator.kind = IntegratorKind::kLocalGlobal;
+    model.integrator.use(integrator_method("local-global"));
     model.integrator.dt = positive(root, "h", JsonSceneDefaults::kTimeStep);
-    model.integrator.local_global.iterations = iterations(root);
-    model.integrator.local_global.pins = PinMethod::kPenalty;
-    model.integrator.local_global.penalty_weight = JsonSceneDefaults::kPenalty;
+    model.integrator.options.set("iterations", JsonSceneDefaults::kIterations);
+    model.integrator.options.set("pins", "penalty");
+    model.integrator.options.set("penalty", JsonSceneDefaults::kPenalty);
+    KeyOptions options(*this, root);
+    model.integrator.options.read(options);
     model.duration = non_negative(root, "duration", JsonSceneDefaults::kDuration);
 
     const Mesh mesh = read_mesh(root);
@@ -64,6 +86,8 @@ class JsonSceneParser {
   }
 
  private:
+  friend class KeyOptions;
+
   [[noreturn]] void fail(const std::string& problem) const {
     throw SceneError(name_, 0, "", problem);
   }
@@ -93,16 +117,6 @@ class JsonSceneParser {
     const double x = number(root, key, fallback);
     if (!(x > 0.0)) fail(std::string("\"") + key + "\" must be positive, found " + to_text(x));
     return x;
-  }
-
-  int iterations(const json& root) {
-    if (!root.contains("iterations")) return JsonSceneDefaults::kIterations;
-    const json& value = root.at("iterations");
-    if (!value.is_number_integer() || value.get<long long>() < 1 ||
-        value.get<long long>() > 1000000) {
-      fail("\"iterations\" must be a whole number from 1 to 1000000, found " + value.dump());
-    }
-    return value.get<int>();
   }
 
   Mesh read_mesh(const json& root) {
@@ -138,6 +152,18 @@ class JsonSceneParser {
   const std::string& name_;
   Scene scene_;
 };
+
+double KeyOptions::number(std::string_view name) {
+  const json& value = root_.at(std::string(name));
+  if (!value.is_number()) fail(name, "must be a number, found " + value.dump());
+  const double x = value.get<double>();
+  if (!std::isfinite(x)) fail(name, "must be finite, found " + value.dump());
+  return x;
+}
+
+void KeyOptions::fail(std::string_view name, const std::string& problem) {
+  parser_.fail("\"" + std::string(name) + "\" " + problem);
+}
 
 }  // namespace
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "core/force_registry.h"
+#include "core/integrators/integrator_registry.h"
 #include "io/element_reader.h"
-#include "io/integrator_options.h"
 #include "io/json_scene_reader.h"
 #include "io/mesh_elements.h"
 #include "io/text_lines.h"
@@ -72,6 +72,25 @@ SceneError xml_syntax_error(const std::string& file, const tinyxml2::XMLDocument
   return SceneError(file, doc.ErrorLineNum(), element_in_xml_error(doc),
                     "not well-formed XML: " + problem);
 }
+
+/// An integrator's options as attributes of its <integrator> element.
+class AttributeOptions final : public OptionSource {
+ public:
+  explicit AttributeOptions(ElementReader& reader) : reader_(reader) {}
+  bool has(std::string_view name) override { return reader_.has(std::string(name).c_str()); }
+  double number(std::string_view name) override {
+    return reader_.number(std::string(name).c_str());
+  }
+  std::string text(std::string_view name) override {
+    return reader_.text(std::string(name).c_str());
+  }
+  [[noreturn]] void fail(std::string_view name, const std::string& problem) override {
+    reader_.fail(std::string(name).c_str(), problem);
+  }
+
+ private:
+  ElementReader& reader_;
+};
 
 /// Turns a parsed document into a Scene, throwing SceneError on the first problem.
 class SceneParser {
@@ -148,16 +167,19 @@ class SceneParser {
     {
       ElementReader r = reader(*single(root, "integrator", true), -1);
       const std::string type = r.text("type");
-      const auto kind = parse_integrator_name(type);
-      if (!kind) {
-        r.fail("type", "names an unknown integrator \"" + type +
-                           "\" (expected explicit-euler, symplectic-euler, "
-                           "linearized-implicit-euler, implicit-euler, local-global or "
-                           "linearly-implicit-euler, or an alias)");
+      const IntegratorMethod* method = find_integrator_method(type);
+      if (method == nullptr) {
+        r.fail("type", "names an unknown integrator \"" + type + "\" (expected one of " +
+                           describe_integrator_names() + ")");
       }
-      model.integrator.kind = *kind;
+      const IntegratorProperties& runs = method->properties;
+      if ((model.dim == 2 && !runs.runs_2d) || (model.dim == 3 && !runs.runs_3d)) {
+        r.fail("type", "\"" + type + "\" does not run " + std::to_string(model.dim) + "D scenes");
+      }
+      model.integrator.use(*method);
       model.integrator.dt = r.positive("dt");
-      read_integrator_options(r, model.integrator);
+      AttributeOptions options(r);
+      model.integrator.options.read(options);
       keep_warnings(r);
     }
     {
@@ -313,25 +335,6 @@ class SceneParser {
 };
 
 }  // namespace
-
-std::optional<IntegratorKind> parse_integrator_name(std::string_view name) {
-  static const std::map<std::string_view, IntegratorKind> kNames = {
-      {"explicit-euler", IntegratorKind::kExplicitEuler},
-      {"symplectic-euler", IntegratorKind::kSymplecticEuler},
-      {"forward-backward-euler", IntegratorKind::kSymplecticEuler},
-      {"semi-implicit-euler", IntegratorKind::kSymplecticEuler},
-      {"linearized-implicit-euler", IntegratorKind::kLinearizedImplicitEuler},
-      {"linearized-implicit", IntegratorKind::kLinearizedImplicitEuler},
-      {"implicit-euler", IntegratorKind::kImplicitEuler},
-      {"implicit", IntegratorKind::kImplicitEuler},
-      {"local-global", IntegratorKind::kLocalGlobal},
-      {"fast-mass-springs", IntegratorKind::kLocalGlobal},
-      {"linearly-implicit-euler", IntegratorKind::kLinearlyImplicitEuler},
-  };
-  const auto found = kNames.find(name);
-  if (found == kNames.end()) return std::nullopt;
-  return found->second;
-}
 
 Expected<Scene, SceneError> load_scene_text(std::string_view text, const std::string& name) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {

@@ -1,7 +1,6 @@
 #pragma once
-// Reads scenes in the course's XML format (SPEC section 1).
+// Reads scenes in the course's XML format (docs/scene-format.md).
 
-#include <optional>
 #include <string>
 #include <string_view>
 
@@ -20,8 +19,5 @@ Expected<Scene, SceneError> load_scene_file(const std::string& path);
 
 /// Loads a scene from XML text; `name` stands for the file in messages.
 Expected<Scene, SceneError> load_scene_text(std::string_view text, const std::string& name);
-
-/// The integrator for a type string, accepting every alias of SPEC section 1.
-std::optional<IntegratorKind> parse_integrator_name(std::string_view name);
 
 }  // namespace fosssim

@@ -4,10 +4,10 @@
 
 #include <Eigen/Core>
 
-#include "core/interaction/picking.h"
 #include "core/scene.h"
 #include "core/state.h"
 #include "render/camera.h"
+#include "render/picking.h"
 
 namespace fosssim {
 

@@ -3,7 +3,6 @@
 
 #include <optional>
 
-#include "core/interaction/picking.h"
 #include "core/scene.h"
 #include "core/state.h"
 #include "render/camera.h"
@@ -11,6 +10,7 @@
 #include "render/drawing_3d.h"
 #include "render/orbit_camera.h"
 #include "render/path_history.h"
+#include "render/picking.h"
 
 namespace fosssim {
 

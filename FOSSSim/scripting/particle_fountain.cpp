@@ -32,7 +32,8 @@ Vector ParticleFountain::launch_velocity(int dim, std::int64_t step, int particl
   return v;
 }
 
-void ParticleFountain::after_step(const SceneModel& model, State& state) const {
+void ParticleFountain::apply(const StepContext& context, State& state) {
+  const SceneModel& model = context.model;
   const int dim = model.dim;
   for (int p : teleported_) {
     if (!(state.q[dim * p + 1] < kFloorHeight)) continue;

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/step_hook.h"
+#include "core/step/step_stage.h"
 
 namespace fosssim {
 
@@ -15,7 +15,7 @@ namespace fosssim {
 /// The random numbers are a hash of (seed, step, particle, component) (splitmix64), not a
 /// random stream, so the velocity a particle receives depends only on when and which particle
 /// it is: a rerun, the window and the grader's step-by-step replay agree bit for bit.
-class ParticleFountain final : public StepHook {
+class ParticleFountain final : public StepStage {
  public:
   static constexpr const char* kTag = "ParticleFountain";
   static constexpr const char* kParticleTag = "teleport";
@@ -28,7 +28,7 @@ class ParticleFountain final : public StepHook {
   /// teleported: indices of the particles tagged `teleport`.
   explicit ParticleFountain(std::vector<int> teleported, std::uint64_t seed = kDefaultSeed);
 
-  void after_step(const SceneModel& model, State& state) const override;
+  void apply(const StepContext& context, State& state) override;
 
   /// The launch velocity particle `particle` receives at step `step` (dim components).
   Vector launch_velocity(int dim, std::int64_t step, int particle) const;

@@ -8,7 +8,7 @@ namespace fosssim {
 
 namespace {
 
-std::unique_ptr<const StepHook> make_particle_fountain(const Scene& scene) {
+std::unique_ptr<StepStage> make_particle_fountain(const Scene& scene) {
   std::vector<int> teleported;
   for (int p = 0; p < static_cast<int>(scene.particle_tags.size()); ++p) {
     if (scene.particle_tags[p] == ParticleFountain::kParticleTag) teleported.push_back(p);
@@ -18,7 +18,7 @@ std::unique_ptr<const StepHook> make_particle_fountain(const Scene& scene) {
 
 struct HookEntry {
   std::string_view tag;
-  std::unique_ptr<const StepHook> (*make)(const Scene&);
+  std::unique_ptr<StepStage> (*make)(const Scene&);
 };
 
 /// One line per scene tag with scripted behaviour.
@@ -28,11 +28,19 @@ constexpr HookEntry kHooks[] = {
 
 }  // namespace
 
-std::unique_ptr<const StepHook> make_step_hook(const Scene& scene) {
+std::unique_ptr<StepStage> make_step_hook(const Scene& scene) {
   for (const HookEntry& entry : kHooks) {
     if (entry.tag == scene.tag) return entry.make(scene);
   }
   return nullptr;
+}
+
+StepAdditions scripted_additions(const Scene& scene) {
+  StepAdditions additions;
+  if (auto hook = make_step_hook(scene)) {
+    additions.stages.emplace_back(StagePhase::kScript, std::move(hook));
+  }
+  return additions;
 }
 
 std::vector<std::string> known_scene_tags() {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/interaction/picking.h"
+#include "render/picking.h"
 
 namespace fosssim {
 
@@ -14,14 +14,15 @@ Eigen::Vector3d position(const State& state, int dim, int particle) {
   return x;
 }
 
-bool is_explicit(IntegratorKind kind) {
-  return kind == IntegratorKind::kExplicitEuler || kind == IntegratorKind::kSymplecticEuler;
-}
-
 }  // namespace
 
+double suggest_drag_stiffness(const SceneModel& model, int particle) {
+  const double h = model.integrator.dt;
+  return model.mass[model.dim * particle] / (h * h);
+}
+
 double drag_stiffness(const SceneModel& model, int particle) {
-  if (is_explicit(model.integrator.kind)) return suggest_drag_stiffness(model, particle);
+  if (!model.integrator.method->properties.implicit) return suggest_drag_stiffness(model, particle);
   double free_mass = 0.0;
   for (int p = 0; p < model.num_particles(); ++p) {
     if (!model.fixed[p]) free_mass += model.mass[model.dim * p];
@@ -30,8 +31,7 @@ double drag_stiffness(const SceneModel& model, int particle) {
   return std::max(free_mass, model.mass[model.dim * particle]) / (h * h);
 }
 
-ParticleGrab::ParticleGrab(const Scene& scene, DragSpringForce& spring)
-    : model_(scene.model), spring_(spring) {
+ParticleGrab::ParticleGrab(const Scene& scene) : model_(scene.model), spring_(scene.model.dim) {
   const auto& radii = scene.appearance.particle_radius;
   if (!radii.empty()) largest_radius_ = *std::max_element(radii.begin(), radii.end());
 }

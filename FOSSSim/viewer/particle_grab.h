@@ -1,6 +1,6 @@
 #pragma once
-// Picking a particle with the mouse and pulling it with the model's drag spring: the window's
-// ctrl + left drag, without window code.
+// Picking a particle with the mouse and pulling it with a drag spring the window owns: the
+// window's ctrl + left drag, without window code.
 
 #include <Eigen/Core>
 #include <optional>
@@ -17,21 +17,36 @@ namespace fosssim {
 /// within its radius, if that is larger).
 inline constexpr double kPickPixels = 8.0;
 
+/// A drag stiffness that is stiff but stable with every integrator: k = m_p / h² (N/m), the
+/// stiffness at which one implicit Euler step covers half the distance to the target and
+/// symplectic Euler stays stable (h²k/m = 1 < 4).
+double suggest_drag_stiffness(const SceneModel& model, int particle);
+
 /// The drag spring's stiffness for `particle`, N/m: k = M / h², with M the particle's mass for
 /// explicit and symplectic Euler (suggest_drag_stiffness: stable, h²k/m = 1) and the total mass
 /// of the free particles for the implicit integrators, which are stable at any stiffness: one
 /// implicit step then takes a whole body half way to the cursor, as it would a lone particle.
 double drag_stiffness(const SceneModel& model, int particle);
 
-/// Grabs the particle under the cursor and pulls it with `spring` (a zero-rest-length spring,
-/// core/forces/drag_spring_force.h) toward the point under the cursor on the drag plane: the
-/// plane through the particle, where it was grabbed, facing the camera (in 2D the plane z = 0).
-/// The pull starts at the particle itself and keeps the offset between the cursor and the
-/// particle, so grabbing does not jerk it. The simulation sees each change at its next step.
+/// Grabs the particle under the cursor and pulls it with its drag spring (a zero-rest-length
+/// spring, core/forces/drag_spring_force.h) toward the point under the cursor on the drag
+/// plane: the plane through the particle, where it was grabbed, facing the camera (in 2D the
+/// plane z = 0). The pull starts at the particle itself and keeps the offset between the cursor
+/// and the particle, so grabbing does not jerk it.
+///
+/// The grab owns the spring; the window hands it to the simulation as an interaction force
+/// (force(), passed in StepAdditions::interaction_forces), so the scene's model never holds it.
+/// The simulation sees each change at its next step.
 class ParticleGrab {
  public:
-  /// scene: the running scene, whose model holds `spring` (add_drag_spring); both outlive this.
-  ParticleGrab(const Scene& scene, DragSpringForce& spring);
+  /// scene: the running scene; it outlives this.
+  explicit ParticleGrab(const Scene& scene);
+  /// The drag spring must stay where it is: the simulation holds its address.
+  ParticleGrab(const ParticleGrab&) = delete;
+  ParticleGrab& operator=(const ParticleGrab&) = delete;
+
+  /// The drag spring, for the simulation's interaction forces; idle until something is grabbed.
+  const DragSpringForce& force() const { return spring_; }
 
   /// Picks the particle under pixel (px, py) of `view`, which shows `state`
   /// (pick_particle: the nearest along the ray within the pick distance) and grabs it with
@@ -49,7 +64,7 @@ class ParticleGrab {
 
  private:
   const SceneModel& model_;
-  DragSpringForce& spring_;
+  DragSpringForce spring_;
   double largest_radius_ = 0.0;  ///< of the scene's particles, world units
   Eigen::Vector3d plane_point_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d plane_normal_ = Eigen::Vector3d::UnitZ();

@@ -8,8 +8,18 @@
 
 namespace fosssim {
 
-SimulationStepper::SimulationStepper(const Scene& scene)
-    : simulation_(scene.model, scene.initial, make_step_hook(scene)) {}
+namespace {
+StepAdditions window_additions(const Scene& scene, std::vector<const Force*> interaction_forces) {
+  StepAdditions additions = scripted_additions(scene);
+  additions.interaction_forces = std::move(interaction_forces);
+  return additions;
+}
+}  // namespace
+
+SimulationStepper::SimulationStepper(const Scene& scene,
+                                     std::vector<const Force*> interaction_forces)
+    : simulation_(scene.model, scene.initial,
+                  window_additions(scene, std::move(interaction_forces))) {}
 
 void GradingStepper::step() {
   if (grader_.grade_next_step()) return;

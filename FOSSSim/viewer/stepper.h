@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "core/scene.h"
-#include "core/simulation.h"
+#include "core/step/simulation.h"
 #include "grading/step_grader.h"
 #include "render/drawing.h"
 
@@ -25,11 +25,12 @@ class Stepper {
   virtual Overlay overlay() const { return {}; }
 };
 
-/// Runs the scene: its integrator and its tag's scripted hook, as a headless run does.
+/// Runs the scene: its step pipeline with its tag's scripted hook, as a headless run does,
+/// plus the window's interaction forces (the drag spring of ParticleGrab).
 class SimulationStepper final : public Stepper {
  public:
-  /// The scene must outlive the stepper.
-  explicit SimulationStepper(const Scene& scene);
+  /// The scene and the interaction forces must outlive the stepper.
+  explicit SimulationStepper(const Scene& scene, std::vector<const Force*> interaction_forces = {});
   const State& state() const override { return simulation_.state(); }
   bool finished() const override { return simulation_.finished(); }
   void step() override { simulation_.step(); }

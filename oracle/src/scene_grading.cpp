@@ -165,7 +165,7 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
   }
   const Scene& scene = *loaded;
   const SceneModel& model = scene.model;
-  result.integrator = integrator_name(model.integrator.kind);
+  result.integrator = model.integrator.method->name;
   result.dim = model.dim;
   result.particles = model.num_particles();
   result.steps = model.num_steps();

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "core/integrators/integrator_registry.h"
 #include "run_program.h"
 
 namespace fosssim {
@@ -74,10 +75,23 @@ class CommandLine : public testing::Test {
 TEST_F(CommandLine, HelpDocumentsEveryOptionAndExitStatus) {
   const ProgramResult r = fosssim({"--help"});
   EXPECT_EQ(r.exit_code, 0);
-  for (const char* text : {"-s,--scene", "-d,--display", "-p,--paused", "-o,--output", "-i,--input",
-                           "--duration", "--dt", "--newton-max-iterations", "--newton-tolerance",
-                           "--residual-file", "--check-derivatives", "Exit status"}) {
+  for (const char* text :
+       {"-s,--scene", "-d,--display", "-p,--paused", "-o,--output", "-i,--input", "--duration",
+        "--dt", "--newton-max-iterations", "--newton-tolerance", "--residual-file",
+        "--check-derivatives", "--integrator-option", "Exit status"}) {
     EXPECT_NE(r.out.find(text), std::string::npos) << text;
+  }
+  // Every integrator of the registry, its aliases and its options, from the registry itself.
+  for (const IntegratorMethod* method : integrator_methods()) {
+    EXPECT_NE(r.out.find("  " + std::string(method->name)), std::string::npos) << method->name;
+    for (std::string_view alias : method->aliases) {
+      EXPECT_NE(r.out.find(std::string(alias)), std::string::npos) << alias;
+    }
+    for (const OptionSpec& option : method->options) {
+      EXPECT_NE(r.out.find(std::string(option.name) + " = " + option.describe_values()),
+                std::string::npos)
+          << option.name;
+    }
   }
 }
 
@@ -184,6 +198,47 @@ TEST_F(CommandLine, InvalidOverridesAreRejected) {
   EXPECT_EQ(r.err, "FOSSSim: error: --dt must be a finite number > 0, found -1\n");
 }
 
+TEST_F(CommandLine, IntegratorOptionsAreValidatedAgainstTheScenesMethod) {
+  // spring.xml runs implicit Euler: its options apply, others are refused with its list.
+  ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "--integrator-option", "iterations=3"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "FOSSSim: error: --integrator-option: the scene's integrator implicit-euler has no "
+            "option 'iterations' (its options: newton-tolerance, newton-max-iterations)\n");
+  r = fosssim({"-s", "spring.xml", "-d", "0", "--integrator-option", "newton-max-iterations=0"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "FOSSSim: error: --integrator-option newton-max-iterations: must be a whole number "
+            "from 1 to 1000000, found 0\n");
+  r = fosssim({"-s", "spring.xml", "-d", "0", "--integrator-option", "newton-tolerance"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("must be NAME=VALUE"), std::string::npos) << r.err;
+  // The same setting through the option and through its shorthand gives the same bytes.
+  ASSERT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "-q", "--integrator-option",
+                     "newton-tolerance=1e-3", "-o", "a.bin"})
+                .exit_code,
+            0);
+  ASSERT_EQ(
+      fosssim({"-s", "spring.xml", "-d", "0", "-q", "--newton-tolerance", "1e-3", "-o", "b.bin"})
+          .exit_code,
+      0);
+  ASSERT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "-q", "-o", "c.bin"}).exit_code, 0);
+  EXPECT_EQ(read("a.bin"), read("b.bin"));
+  EXPECT_NE(read("a.bin"), read("c.bin")) << "a looser tolerance changes the trajectory";
+}
+
+TEST_F(CommandLine, NewtonShorthandsOnAnotherMethodAreIgnoredWithAWarning) {
+  write("explicit.xml",
+        "<scene>\n<duration time=\"0.1\"/>\n<integrator type=\"explicit-euler\" "
+        "dt=\"0.1\"/>\n</scene>\n");
+  const ProgramResult r =
+      fosssim({"-s", "explicit.xml", "-d", "0", "-q", "--newton-max-iterations", "5"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err,
+            "FOSSSim: warning: --newton-max-iterations ignored: the scene's integrator "
+            "explicit-euler has no option 'newton-max-iterations' (its options: none)\n");
+}
+
 TEST_F(CommandLine, NewtonThatCannotConvergeNamesTheStep) {
   const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "--newton-max-iterations", "2",
                                    "--newton-tolerance", "1e-300", "-o", "out.bin"});
@@ -201,8 +256,10 @@ TEST_F(CommandLine, BadSceneGivesFileLineAndExitTwo) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err.substr(0, r.err.find('\n')),
             "bad.xml:3: error: <integrator>: attribute \"type\" names an unknown integrator "
-            "\"explicit\" (expected explicit-euler, symplectic-euler, linearized-implicit-euler, "
-            "implicit-euler, local-global or linearly-implicit-euler, or an alias)");
+            "\"explicit\" (expected one of explicit-euler, symplectic-euler (or "
+            "forward-backward-euler, semi-implicit-euler), linearized-implicit-euler (or "
+            "linearized-implicit), implicit-euler (or implicit), local-global (or "
+            "fast-mass-springs), linearly-implicit-euler)");
 }
 
 TEST_F(CommandLine, MissingSceneFileIsExitTwo) {

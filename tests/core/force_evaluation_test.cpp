@@ -1,15 +1,14 @@
 // Tests of the global sums of core/force_evaluation.h in 2D and 3D.
 //
 // Math checked:
-// - SceneModel::has_symmetric_jacobians() true ⇒ the assembled hessX and hessV of a model with
+// - ForceSet::has_symmetric_jacobians() true ⇒ the assembled hessX and hessV of a model with
 //   undamped springs, Newtonian gravity, drag, simple gravity and a constant force are symmetric
 //   to round-off; adding a damped spring or a vortex turns the flag off, and then the assembled
 //   hessX is non-symmetric by far more than round-off;
 // - the sums: compute_force = -compute_gradient = -Σ gradE_f, potential energy = Σ U_f, kinetic
 //   energy = ½ Σ m v²;
-// - assemble_step_matrix = diag(m) + h² hessX + h hessV with the rows and columns of fixed
-//   particles zeroed and 1 on their diagonal (SPEC 4), built densely by hand here;
 // - zero_fixed zeroes exactly the DOFs of fixed particles.
+// (The step matrix is tested in systems/step_matrix_test.cpp.)
 
 #include "core/force_evaluation.h"
 
@@ -29,7 +28,7 @@ FOSSSIM_TEST_SUITE_IN_2D_AND_3D(ForceEvaluationTest);
 template <int D>
 TestScene symmetric_scene(unsigned seed) {
   Random random(seed);
-  TestScene scene(D, IntegratorKind::kImplicitEuler, 0.05);
+  TestScene scene(D, "implicit-euler", 0.05);
   for (int p = 0; p < 4; ++p) {
     scene.add_particle(random.uniform(0.5, 2.0), random.uniform_vector(D, -1.0, 1.0),
                        random.uniform_vector(D, -1.0, 1.0), p == 1);
@@ -48,15 +47,14 @@ TYPED_TEST(ForceEvaluationTest, SymmetricJacobiansClaimHoldsForTheAssembledMatri
   constexpr int D = TypeParam::value;
   for (unsigned seed = 81; seed <= 84; ++seed) {
     const TestScene scene = symmetric_scene<D>(seed);
-    ASSERT_TRUE(scene.model.has_symmetric_jacobians());
+    const ForceSet forces(scene.model);
+    ASSERT_TRUE(forces.has_symmetric_jacobians());
     const auto& [q, v, step, time] = scene.state;
-    const Eigen::MatrixXd hx = dense(compute_hessian_x(scene.model, q, v));
-    const Eigen::MatrixXd hv = dense(compute_hessian_v(scene.model, q, v));
+    const Eigen::MatrixXd hx = dense(compute_hessian_x(forces, q, v));
+    const Eigen::MatrixXd hv = dense(compute_hessian_v(forces, q, v));
     EXPECT_GT(hx.norm(), 0.0);
     EXPECT_LE(asymmetry(hx), 1e-15);
     EXPECT_LE(asymmetry(hv), 1e-15);
-    HessianBuilder scratch;
-    EXPECT_LE(asymmetry(dense(assemble_step_matrix(scene.model, q, v, 0.05, scratch))), 1e-15);
   }
 }
 
@@ -70,8 +68,9 @@ TYPED_TEST(ForceEvaluationTest, DampedSpringsAndVorticesMakeHessXNonSymmetric) {
       scene.add_force(std::make_unique<VortexForce<D>>(0, 2, 2.0, 1.0,
                                                        vortex_rotation<D>(Vec<3>(0.0, 0.6, 0.8))));
     }
-    EXPECT_FALSE(scene.model.has_symmetric_jacobians());
-    const Eigen::MatrixXd hx = dense(compute_hessian_x(scene.model, scene.state.q, scene.state.v));
+    const ForceSet forces(scene.model);
+    EXPECT_FALSE(forces.has_symmetric_jacobians());
+    const Eigen::MatrixXd hx = dense(compute_hessian_x(forces, scene.state.q, scene.state.v));
     EXPECT_GT(asymmetry(hx), 1e-3) << (variant == 0 ? "damped spring" : "vortex");
   }
 }
@@ -88,42 +87,20 @@ TYPED_TEST(ForceEvaluationTest, SumsOverForcesAndEnergies) {
     gradient += gradient_of(*force, q, v, model.mass);
     potential += energy_of(*force, q, v, model.mass);
   }
-  EXPECT_TRUE(compute_gradient(model, q, v).isApprox(gradient, 1e-15));
-  EXPECT_EQ(compute_force(model, q, v), -compute_gradient(model, q, v));
-  EXPECT_NEAR(compute_potential_energy(model, q, v), potential, 1e-14 * std::abs(potential));
+  const ForceSet forces(model);
+  EXPECT_TRUE(compute_gradient(forces, q, v).isApprox(gradient, 1e-15));
+  EXPECT_EQ(compute_force(forces, q, v), -compute_gradient(forces, q, v));
+  EXPECT_NEAR(compute_potential_energy(forces, q, v), potential, 1e-14 * std::abs(potential));
   double kinetic = 0.0;
   for (int dof = 0; dof < model.num_dofs(); ++dof)
     kinetic += 0.5 * model.mass[dof] * v[dof] * v[dof];
   EXPECT_NEAR(compute_kinetic_energy(model, v), kinetic, 1e-15 * kinetic);
 }
 
-TYPED_TEST(ForceEvaluationTest, StepMatrixEliminatesFixedParticles) {
+TYPED_TEST(ForceEvaluationTest, ZeroFixedZeroesTheFixedParticlesDofs) {
   constexpr int D = TypeParam::value;
-  TestScene scene = symmetric_scene<D>(87);
-  scene.add_spring(0, 2, 3.0, 0.5, 2.0);  // damped: hessV and a non-symmetric hessX
+  const TestScene scene = symmetric_scene<D>(87);  // particle 1 is fixed
   const auto& model = scene.model;
-  const Vector& q = scene.state.q;
-  const Vector& v = scene.state.v;
-  const double h = 0.05;
-  Eigen::MatrixXd expected =
-      h * h * dense(compute_hessian_x(model, q, v)) + h * dense(compute_hessian_v(model, q, v));
-  expected.diagonal() += model.mass;
-  // Particle 1 is fixed: zero its rows and columns, 1 on its diagonal.
-  expected.middleRows(D, D).setZero();
-  expected.middleCols(D, D).setZero();
-  expected.block(D, D, D, D).setIdentity();
-  HessianBuilder scratch;
-  const Eigen::MatrixXd A = dense(assemble_step_matrix(model, q, v, h, scratch));
-  EXPECT_TRUE(A.isApprox(expected, 1e-15));
-  // Reusing the scratch gives the same matrix again.
-  EXPECT_EQ(dense(assemble_step_matrix(model, q, v, h, scratch)), A);
-  // Asked for it, the same entries also give h² hessX v, over every DOF (before elimination).
-  Vector hessian_x_times_v;
-  EXPECT_EQ(dense(assemble_step_matrix(model, q, v, h, scratch, &hessian_x_times_v)), A);
-  const Vector expected_product = h * h * (dense(compute_hessian_x(model, q, v)) * v);
-  EXPECT_TRUE(hessian_x_times_v.isApprox(expected_product, 1e-14));
-  EXPECT_NE(hessian_x_times_v.segment(D, D), Vector::Zero(D)) << "the fixed particle's too";
-
   Vector x = Vector::Ones(model.num_dofs());
   zero_fixed(model, x);
   Vector expected_x = Vector::Ones(model.num_dofs());

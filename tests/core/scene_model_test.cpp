@@ -1,14 +1,16 @@
 // Tests of SceneModel's derived quantities (core/scene_model.h).
 //
-// Checked: num_steps = ceil(duration / dt) in double precision (SPEC 1: 4.0 / 0.01 gives 400,
-// and a duration that is not a multiple of dt rounds up); has_fixed_particles; the
-// has_symmetric_jacobians flag is the conjunction over forces (a damped spring or a vortex
-// clears it); integrator_name gives the canonical XML names.
+// Checked: num_steps = ceil(duration / dt) in double precision (docs/scene-format.md: 4.0 / 0.01
+// gives 400, and a duration that is not a multiple of dt rounds up); has_fixed_particles and
+// is_fixed_dof; a model's ForceSet (core/force_set.h) has symmetric Jacobians when every force
+// has (a damped spring or a vortex clears it), and sums interaction forces after the model's.
 
 #include "core/scene_model.h"
 
 #include <gtest/gtest.h>
 
+#include "core/force_set.h"
+#include "core/forces/drag_spring_force.h"
 #include "core/forces/vortex_force.h"
 #include "test_support.h"
 
@@ -31,13 +33,13 @@ TEST(SceneModel, FlagsAreDerivedFromParticlesAndForces) {
   scene.add_particle(1.0, vec({0.0, 0.0}), vec({0.0, 0.0}));
   scene.add_particle(1.0, vec({1.0, 0.0}), vec({0.0, 0.0}));
   EXPECT_FALSE(scene.model.has_fixed_particles());
-  EXPECT_TRUE(scene.model.has_symmetric_jacobians());  // no forces at all
+  EXPECT_TRUE(ForceSet(scene.model).has_symmetric_jacobians());  // no forces at all
   scene.add_spring(0, 1, 1.0, 1.0);
   scene.add_gravitation(0, 1, 1.0);
   scene.add_drag(0.1);
-  EXPECT_TRUE(scene.model.has_symmetric_jacobians());
+  EXPECT_TRUE(ForceSet(scene.model).has_symmetric_jacobians());
   scene.add_spring(0, 1, 1.0, 1.0, 0.5);
-  EXPECT_FALSE(scene.model.has_symmetric_jacobians());
+  EXPECT_FALSE(ForceSet(scene.model).has_symmetric_jacobians());
 
   TestScene vortex(2);
   vortex.add_particle(1.0, vec({0.0, 0.0}), vec({0.0, 0.0}), /*fixed=*/true);
@@ -46,15 +48,24 @@ TEST(SceneModel, FlagsAreDerivedFromParticlesAndForces) {
   EXPECT_TRUE(vortex.model.has_fixed_particles());
   EXPECT_TRUE(vortex.model.is_fixed_dof(1));
   EXPECT_FALSE(vortex.model.is_fixed_dof(2));
-  EXPECT_FALSE(vortex.model.has_symmetric_jacobians());
+  EXPECT_FALSE(ForceSet(vortex.model).has_symmetric_jacobians());
 }
 
-TEST(SceneModel, IntegratorNamesAreTheCanonicalXmlNames) {
-  EXPECT_STREQ(integrator_name(IntegratorKind::kExplicitEuler), "explicit-euler");
-  EXPECT_STREQ(integrator_name(IntegratorKind::kSymplecticEuler), "symplectic-euler");
-  EXPECT_STREQ(integrator_name(IntegratorKind::kLinearizedImplicitEuler),
-               "linearized-implicit-euler");
-  EXPECT_STREQ(integrator_name(IntegratorKind::kImplicitEuler), "implicit-euler");
+TEST(ForceSet, InteractionForcesSumAfterTheModelsOwn) {
+  TestScene scene(2);
+  scene.add_particle(1.0, vec({0.0, 0.0}), vec({0.0, 0.0}));
+  scene.add_particle(1.0, vec({1.0, 0.0}), vec({0.0, 0.0}));
+  scene.add_spring(0, 1, 1.0, 1.0);
+  scene.add_drag(0.1);
+  DragSpringForce drag(2);
+  const ForceSet forces(scene.model, {&drag});
+  ASSERT_EQ(forces.forces().size(), 3u);
+  EXPECT_EQ(forces.forces()[0], scene.model.forces[0].get());
+  EXPECT_EQ(forces.forces()[1], scene.model.forces[1].get());
+  EXPECT_EQ(forces.forces()[2], &drag);
+  EXPECT_EQ(&forces.model(), &scene.model);
+  EXPECT_EQ(ForceSet(scene.model).forces().size(), 2u);
+  EXPECT_TRUE(forces.is_conservative() == false) << "drag is not conservative";
 }
 
 }  // namespace

@@ -42,7 +42,7 @@ FallingParticle::FallingParticle(int dim, unsigned seed) {
   g = random.uniform_vector(dim, -10.0, 10.0);
 }
 
-TestScene FallingParticle::scene(IntegratorKind kind, double h) const {
+TestScene FallingParticle::scene(std::string_view kind, double h) const {
   TestScene out(static_cast<int>(x.size()), kind, h);
   out.add_particle(2.0, x, w);
   out.add_simple_gravity(g);
@@ -59,7 +59,7 @@ AnchoredSpring::AnchoredSpring(int dim, unsigned seed, double m, double k, doubl
   w = random.uniform_vector(dim, -1.0, 1.0);
 }
 
-TestScene AnchoredSpring::scene(IntegratorKind kind, double h) const {
+TestScene AnchoredSpring::scene(std::string_view kind, double h) const {
   TestScene out(static_cast<int>(a.size()), kind, h);
   out.add_particle(5.0, a, u, /*fixed=*/true);
   out.add_particle(m, x, w);
@@ -77,7 +77,7 @@ void AnchoredSpring::expect_step(const State& next, double h, const Vector& x_ex
   expect_close(next.q.tail(dim), x_expected, tolerance, "free particle's position");
 }
 
-TestScene LinearAnchoredSystem::scene(IntegratorKind kind) const {
+TestScene LinearAnchoredSystem::scene(std::string_view kind) const {
   TestScene out(static_cast<int>(a.size()), kind, h);
   out.add_particle(3.0, a, u, /*fixed=*/true);
   out.add_particle(m, x, w);
@@ -97,7 +97,7 @@ State LinearAnchoredSystem::backward_euler_step() const {
   return out;
 }
 
-TestScene LinearPairSystem::scene(IntegratorKind kind) const {
+TestScene LinearPairSystem::scene(std::string_view kind) const {
   TestScene out(static_cast<int>(xa.size()), kind, h);
   out.add_particle(m, xa, va);
   out.add_particle(m, xb, vb);
@@ -120,7 +120,7 @@ State LinearPairSystem::backward_euler_step() const {
 
 State run_steps(const SceneModel& model, State state, std::int64_t steps) {
   const auto integrator = make_integrator(model);
-  for (std::int64_t s = 0; s < steps; ++s) integrator->step(model, state);
+  for (std::int64_t s = 0; s < steps; ++s) integrator->step(state);
   return state;
 }
 

@@ -12,12 +12,15 @@
 #include <initializer_list>
 #include <memory>
 #include <random>
+#include <span>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 
 #include "core/force.h"
 #include "core/integrators/integrator.h"
+#include "core/integrators/integrator_registry.h"
 #include "core/scene_model.h"
 #include "core/state.h"
 #include "core/types.h"
@@ -40,10 +43,10 @@ struct TestScene {
   SceneModel model;
   State state;
 
-  explicit TestScene(int dim, IntegratorKind kind = IntegratorKind::kExplicitEuler,
-                     double dt = 0.01) {
+  /// integrator: the canonical name of a method of the registry.
+  explicit TestScene(int dim, std::string_view integrator = "explicit-euler", double dt = 0.01) {
     model.dim = dim;
-    model.integrator.kind = kind;
+    model.integrator.use(integrator_method(integrator));
     model.integrator.dt = dt;
     state.q.resize(0);
     state.v.resize(0);
@@ -81,10 +84,9 @@ struct TestScene {
   void add_simple_gravity(const Vector& g);
 };
 
-/// The four integrators, in the order of IntegratorKind.
-constexpr IntegratorKind kAllIntegrators[] = {
-    IntegratorKind::kExplicitEuler, IntegratorKind::kSymplecticEuler,
-    IntegratorKind::kLinearizedImplicitEuler, IntegratorKind::kImplicitEuler};
+/// Every integrator of the registry, for tests that apply to all of them
+/// (core/integrators/integrator_registry.h).
+inline std::span<const IntegratorMethod* const> all_integrators() { return integrator_methods(); }
 
 /// Runs `steps` steps of the model's integrator from the scene's state and returns the result.
 State run_steps(const SceneModel& model, State state, std::int64_t steps);
@@ -96,8 +98,8 @@ Vector linear_momentum(const SceneModel& model, const Vector& v);
 void expect_close(const Vector& actual, const Vector& expected, double tolerance,
                   const std::string& what);
 
-/// Spring force on particle j of a spring from i to j (SPEC 3.2), written out for expected
-/// values: F_j = -k (l - l0) n - b (n·dv) n with d = x_j - x_i, n = d/l, dv = v_j - v_i.
+/// Spring force on particle j of a spring from i to j (docs/forces.md, 'Spring'), written out for
+/// expected values: F_j = -k (l - l0) n - b (n·dv) n with d = x_j - x_i, n = d/l, dv = v_j - v_i.
 Vector spring_force_on_j(const Vector& xi, const Vector& xj, const Vector& vi, const Vector& vj,
                          double k, double l0, double b);
 
@@ -107,7 +109,7 @@ struct FallingParticle {
   Vector x, w, g;
 
   FallingParticle(int dim, unsigned seed);
-  TestScene scene(IntegratorKind kind, double h) const;
+  TestScene scene(std::string_view kind, double h) const;
 };
 
 /// A spring (k, l0, damping b) from a fixed particle 0 of mass 5 at a, moving with velocity u,
@@ -118,7 +120,7 @@ struct AnchoredSpring {
   Vector a, u, x, w;
 
   AnchoredSpring(int dim, unsigned seed, double m, double k, double l0, double b, double c);
-  TestScene scene(IntegratorKind kind, double h) const;
+  TestScene scene(std::string_view kind, double h) const;
   /// Expects the fixed particle of `next` at a + h u with velocity exactly u, and the free one
   /// at (x_expected, v_expected), to the relative tolerance.
   void expect_step(const State& next, double h, const Vector& x_expected, const Vector& v_expected,
@@ -131,7 +133,7 @@ struct LinearAnchoredSystem {
   double h, m, k, c;
   Vector a, u, x, w;
 
-  TestScene scene(IntegratorKind kind) const;
+  TestScene scene(std::string_view kind) const;
   /// One step of backward Euler in closed form. With a' = a + h u and x' = x + h v',
   /// m (v' - w) = h (-k (x' - a') - c v') gives v' = (m w - h k (x - a) + h² k u) / (m + h c + h²
   /// k); the fixed particle ends at a' with velocity u. Linearized implicit Euler is exact here
@@ -145,7 +147,7 @@ struct LinearPairSystem {
   double h, m, k, c;
   Vector xa, va, xb, vb;
 
-  TestScene scene(IntegratorKind kind) const;
+  TestScene scene(std::string_view kind) const;
   /// One step of backward Euler in closed form, from the sum s = va + vb and the difference
   /// r = vb - va, d = xb - xa: m (s' - s) = -h c s' and m (r' - r) = h (-2k (d + h r') - c r'),
   /// so s' = m s / (m + h c), r' = (m r - 2 h k d) / (m + h c + 2 h² k); x' = x + h v'.
@@ -198,8 +200,9 @@ inline Eigen::MatrixXd dense(const SparseMatrix& A) { return Eigen::MatrixXd(A);
 /// ‖A - Aᵀ‖_F / ‖A‖_F, 0 for the zero matrix.
 double asymmetry(const Eigen::MatrixXd& A);
 
-/// The pair pattern of SPEC section 3 as a dense n×n matrix: +H on blocks (i,i), (j,j), -H on
-/// (i,j), (j,i). Written out here so tests do not depend on HessianBuilder for expected values.
+/// The pair pattern of pair forces (docs/forces.md) as a dense n×n matrix: +H on blocks (i,i),
+/// (j,j), -H on (i,j), (j,i). Written out here so tests do not depend on HessianBuilder for
+/// expected values.
 Eigen::MatrixXd dense_pair_pattern(int n, int dim, int i, int j, const Eigen::MatrixXd& H);
 
 /// The 90° rotation about a unit axis in 3D, R a = axis × a (the cross-product matrix).

@@ -7,23 +7,26 @@
 #include "core/analysis/derivative_check.h"
 #include "core/forces/constant_force.h"
 #include "core/forces/drag_damping_force.h"
+#include "core/forces/drag_spring_force.h"
 #include "core/forces/gravitational_force.h"
 #include "core/forces/vortex_force.h"
-#include "core/interaction/picking.h"
 #include "test_scenes.h"
+#include "viewer/particle_grab.h"
 
 namespace fosssim {
 namespace {
 
 TEST(Derivatives3D, EveryForceOfAPerturbedMovingClothScenePasses) {
-  Scene scene = testing::cloth(4, 60.0, IntegratorKind::kImplicitEuler, 0.01, true, "corners", 0.3);
+  Scene scene = testing::cloth(4, 60.0, "implicit-euler", 0.01, true, "corners", 0.3);
   scene.model.forces.push_back(std::make_unique<DragDampingForce<3>>(0.2));
   scene.model.forces.push_back(std::make_unique<ConstantForce<3>>(Vec<3>(0.1, -0.2, 0.3)));
   scene.model.forces.push_back(std::make_unique<GravitationalForce<3>>(0, 15, 0.5));
   Mat<3> rotation;
   rotation << 0.0, -1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0;
   scene.model.forces.push_back(std::make_unique<VortexForce<3>>(5, 10, 0.4, 0.7, rotation));
-  add_drag_spring(scene.model).grab(9, Eigen::Vector3d(0.1, 0.5, 0.2), 30.0);
+  auto drag = std::make_unique<DragSpringForce>(3);
+  drag->grab(9, Eigen::Vector3d(0.1, 0.5, 0.2), 30.0);
+  scene.model.forces.push_back(std::move(drag));
   std::mt19937 rng(5);
   std::normal_distribution<double> noise(0.0, 0.05);
   Vector q = scene.initial.q, v = scene.initial.v;

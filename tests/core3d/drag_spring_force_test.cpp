@@ -60,17 +60,16 @@ TEST(DragSpringForce, AddsNothingUntilGrabbedAndAfterRelease) {
   DragSpringForce force(3);
   Vector q = Vector::Ones(6);
   const Vector zero = Vector::Zero(6);
-  std::vector<AnchorTerm> anchors;
-  EXPECT_TRUE(force.append_anchors(anchors));
-  EXPECT_TRUE(anchors.empty());
+  EXPECT_FALSE(force.active());
+  EXPECT_EQ(force.particle(), -1);
   force.move_target(Eigen::Vector3d(5.0, 5.0, 5.0));  // ignored: nothing is grabbed
   EXPECT_FALSE(force.active());
+  EXPECT_EQ(force.target(), Eigen::Vector3d::Zero());
 
   force.grab(0, Eigen::Vector3d::Zero(), 3.0);
-  EXPECT_TRUE(force.append_anchors(anchors));
-  ASSERT_EQ(anchors.size(), 1u);
-  EXPECT_EQ(anchors[0].i, 0);
-  EXPECT_EQ(anchors[0].k, 3.0);
+  EXPECT_TRUE(force.active());
+  EXPECT_EQ(force.particle(), 0);
+  EXPECT_EQ(force.stiffness(), 3.0);
 
   force.release();
   Vector gradient = Vector::Zero(6);

@@ -19,10 +19,10 @@ TEST(LinearlyImplicitEuler, OneStepOfASpringMatchesTheHandComputedSolution) {
   Scene scene = testing::particles(3, {0, 0, 0, x * n.x(), x * n.y(), x * n.z()}, m, {true, false});
   scene.initial.v.segment<3>(3) = v * n;
   testing::add_spring(scene, 0, 1, k, l0);
-  scene.model.integrator = {IntegratorKind::kLinearlyImplicitEuler, h, {}, {}, {}};
-  LinearlyImplicitEuler integrator(scene.model);
+  scene.model.integrator.use(integrator_method("linearly-implicit-euler"));
+  scene.model.integrator.dt = h;
   State state = scene.initial;
-  integrator.step(scene.model, state);
+  make_integrator(scene.model)->step(state);
   const double v_next = (m * v - h * k * (x - l0)) / (m + h * h * k);
   EXPECT_LT((state.v.segment<3>(3) - v_next * n).norm(), 1e-14);
   EXPECT_LT((state.q.segment<3>(3) - (x + h * v_next) * n).norm(), 1e-14);
@@ -35,9 +35,10 @@ TEST(LinearlyImplicitEuler, TransverseMotionUsesTheFullSpringHessian) {
   Scene scene = testing::particles(3, {0, 0, 0, 1, 0, 0}, m, {true, false});
   scene.initial.v.segment<3>(3) << 0.0, 2.0, -1.0;
   testing::add_spring(scene, 0, 1, k, l0);
-  scene.model.integrator = {IntegratorKind::kLinearlyImplicitEuler, h, {}, {}, {}};
+  scene.model.integrator.use(integrator_method("linearly-implicit-euler"));
+  scene.model.integrator.dt = h;
   State state = scene.initial;
-  LinearlyImplicitEuler(scene.model).step(scene.model, state);
+  make_integrator(scene.model)->step(state);
   const Eigen::Matrix3d H = k * Eigen::Vector3d(1.0, 1.0 - l0, 1.0 - l0).asDiagonal();
   const Eigen::Vector3d v0(0.0, 2.0, -1.0), F(-k * (1.0 - l0), 0.0, 0.0);
   const Eigen::Vector3d dv =
@@ -46,43 +47,42 @@ TEST(LinearlyImplicitEuler, TransverseMotionUsesTheFullSpringHessian) {
 }
 
 TEST(LinearlyImplicitEuler, FixedParticlesStayExactlyInPlace) {
-  Scene scene =
-      testing::cloth(6, 80.0, IntegratorKind::kLinearlyImplicitEuler, 0.01, true, "top-row");
+  Scene scene = testing::cloth(6, 80.0, "linearly-implicit-euler", 0.01, true, "top-row");
   State state = scene.initial;
-  LinearlyImplicitEuler integrator(scene.model);
-  for (int step = 0; step < 50; ++step) integrator.step(scene.model, state);
+  const auto integrator = make_integrator(scene.model);
+  for (int step = 0; step < 50; ++step) integrator->step(state);
   EXPECT_EQ(state.q.head(18), scene.initial.q.head(18));
   EXPECT_EQ(state.v.head(18), Vector::Zero(18));
   EXPECT_LT(state.q[3 * 35 + 1], -0.05);
 }
 
 /// max |v_a - v_b| after one step of two integrators from the same moving cloth state.
-double one_step_difference(IntegratorKind a, IntegratorKind b, double h) {
-  Scene scene = testing::cloth(5, 1.0, IntegratorKind::kImplicitEuler, h);
-  scene.model.integrator.newton.tolerance = 1e-14;
+double one_step_difference(std::string_view a, std::string_view b, double h) {
+  Scene scene = testing::cloth(5, 1.0, "implicit-euler", h);
   State start = scene.initial;
   start.v = Vector::NullaryExpr(
       start.v.size(), [](Eigen::Index k) { return 0.1 * std::sin(0.7 * static_cast<double>(k)); });
   zero_fixed(scene.model, start.v);
   State sa = start, sb = start;
-  scene.model.integrator.kind = a;
-  make_integrator(scene.model)->step(scene.model, sa);
-  scene.model.integrator.kind = b;
-  make_integrator(scene.model)->step(scene.model, sb);
+  for (auto [method, state] : {std::pair{a, &sa}, std::pair{b, &sb}}) {
+    scene.model.integrator.use(integrator_method(method));
+    if (scene.model.integrator.options.has("newton-tolerance")) {
+      scene.model.integrator.options.set("newton-tolerance", 1e-14);
+    }
+    make_integrator(scene.model)->step(*state);
+  }
   return (sa.v - sb.v).lpNorm<Eigen::Infinity>();
 }
 
 TEST(LinearlyImplicitEuler, DiffersFromTheCompatLinearizationAndFromNewtonByOhCubedPerStep) {
-  for (IntegratorKind other :
-       {IntegratorKind::kLinearizedImplicitEuler, IntegratorKind::kImplicitEuler}) {
+  for (std::string_view other : {"linearized-implicit-euler", "implicit-euler"}) {
     // Both linearizations agree with the exact step up to O(h²) in the force, so velocities
     // differ by O(h³): halving h divides the difference by about 8.
-    const double coarse =
-        one_step_difference(IntegratorKind::kLinearlyImplicitEuler, other, 0.0025);
-    const double fine = one_step_difference(IntegratorKind::kLinearlyImplicitEuler, other, 0.00125);
-    EXPECT_GT(fine, 1e-9) << integrator_name(other) << ": a different method";
-    EXPECT_GT(coarse / fine, 7.0) << integrator_name(other);
-    EXPECT_LT(coarse / fine, 9.0) << integrator_name(other);
+    const double coarse = one_step_difference("linearly-implicit-euler", other, 0.0025);
+    const double fine = one_step_difference("linearly-implicit-euler", other, 0.00125);
+    EXPECT_GT(fine, 1e-9) << std::string(other) << ": a different method";
+    EXPECT_GT(coarse / fine, 7.0) << std::string(other);
+    EXPECT_LT(coarse / fine, 9.0) << std::string(other);
   }
 }
 
@@ -92,10 +92,11 @@ TEST(LinearlyImplicitEuler, ProjectedHessianChangesOnlyCompressedSprings) {
     Scene scene = testing::particles(3, {0, 0, 0, 0.5, 0, 0}, 1.0, {true, false});
     scene.initial.v.segment<3>(3) << 0.0, 1.0, 0.0;
     testing::add_spring(scene, 0, 1, 100.0, l0);
-    scene.model.integrator = {IntegratorKind::kLinearlyImplicitEuler, 0.1, {}, {}, {}};
-    scene.model.integrator.linearly_implicit.project_hessian = project;
+    scene.model.integrator.use(integrator_method("linearly-implicit-euler"));
+    scene.model.integrator.dt = 0.1;
+    scene.model.integrator.options.set("hessian", project ? "projected" : "exact");
     State state = scene.initial;
-    LinearlyImplicitEuler(scene.model).step(scene.model, state);
+    make_integrator(scene.model)->step(state);
     return state.v;
   };
   EXPECT_GT((step(true, 1.0) - step(false, 1.0)).norm(), 0.1);
@@ -113,19 +114,21 @@ TEST(LinearlyImplicitEuler, SolvesIndefiniteSystemsCorrectly) {
   scene.initial.v.head(3).setZero();
   testing::add_spring(scene, 0, 1, 1e4, 1.0);
   testing::add_spring(scene, 1, 2, 1e4, 1.0);
-  scene.model.integrator = {IntegratorKind::kLinearlyImplicitEuler, 0.01, {}, {}, {}};
+  scene.model.integrator.use(integrator_method("linearly-implicit-euler"));
+  scene.model.integrator.dt = 0.01;
   State state = scene.initial;
-  LinearlyImplicitEuler(scene.model).step(scene.model, state);
+  make_integrator(scene.model)->step(state);
   // Check (M + h² hessX) δv = h F - h² hessX v on the free DOFs directly.
   const double h = 0.01;
   const Vector& q = scene.initial.q;
   const Vector& v = scene.initial.v;
-  const SparseMatrix Hx = compute_hessian_x(scene.model, q, v);
+  const ForceSet forces(scene.model);
+  const SparseMatrix Hx = compute_hessian_x(forces, q, v);
   const Vector dv = state.v - v;
   Vector residual = scene.model.mass.cwiseProduct(dv) + h * h * (Hx * dv) -
-                    (h * compute_force(scene.model, q, v) - h * h * (Hx * v));
+                    (h * compute_force(forces, q, v) - h * h * (Hx * v));
   zero_fixed(scene.model, residual);
-  EXPECT_LT(residual.norm(), 1e-9 * (h * compute_force(scene.model, q, v)).norm());
+  EXPECT_LT(residual.norm(), 1e-9 * (h * compute_force(forces, q, v)).norm());
 }
 
 }  // namespace

@@ -10,9 +10,9 @@
 #include "core/forces/drag_spring_force.h"
 #include "core/integrators/implicit_euler.h"
 #include "core/integrators/linearly_implicit_euler.h"
-#include "core/interaction/picking.h"
-#include "core/simulation.h"
+#include "core/step/simulation.h"
 #include "test_scenes.h"
+#include "viewer/particle_grab.h"
 
 namespace fosssim {
 namespace {
@@ -21,19 +21,19 @@ constexpr double kPi = std::numbers::pi;
 
 /// A unit mass on a spring (k = 4π², so ω = 2π; rest length 1) to a fixed particle at the
 /// origin, released 0.1 m stretched along the unit direction `axis` (in dim dimensions).
-Scene oscillator(int dim, IntegratorKind kind, double dt, const Eigen::Vector3d& axis) {
+Scene oscillator(int dim, std::string_view kind, double dt, const Eigen::Vector3d& axis) {
   std::vector<double> positions(2 * dim, 0.0);
   for (int c = 0; c < dim; ++c) positions[dim + c] = 1.1 * axis[c];
   Scene scene = testing::particles(dim, positions, 1.0, {true, false});
   testing::add_spring(scene, 0, 1, 4.0 * kPi * kPi, 1.0);
-  scene.model.integrator.kind = kind;
+  scene.model.integrator.use(integrator_method(kind));
   scene.model.integrator.dt = dt;
   scene.model.duration = 1.0;
   return scene;
 }
 
 /// |x(1) - x_exact(1)| of the oscillator, x_exact(t) = (1 + 0.1 cos ωt) axis, after N steps.
-double oscillator_error(int dim, IntegratorKind kind, int steps) {
+double oscillator_error(int dim, std::string_view kind, int steps) {
   const Eigen::Vector3d axis =
       dim == 3 ? Eigen::Vector3d(1.0, 2.0, 2.0) / 3.0 : Eigen::Vector3d(0.6, 0.8, 0.0);
   Scene scene = oscillator(dim, kind, 1.0 / steps, axis);
@@ -50,17 +50,16 @@ double oscillator_error(int dim, IntegratorKind kind, int steps) {
 
 TEST(LocalGlobal, SingleSpringFollowsCosOmegaTWithFirstOrderError) {
   for (int dim : {2, 3}) {
-    for (IntegratorKind kind :
-         {IntegratorKind::kLocalGlobal, IntegratorKind::kLinearlyImplicitEuler}) {
+    for (std::string_view kind : {"local-global", "linearly-implicit-euler"}) {
       double previous = oscillator_error(dim, kind, 200);
       for (int steps : {400, 800, 1600}) {
         const double error = oscillator_error(dim, kind, steps);
         const double ratio = previous / error;
-        EXPECT_GT(ratio, 1.8) << integrator_name(kind) << " " << dim << "D, " << steps << " steps";
-        EXPECT_LT(ratio, 2.2) << integrator_name(kind) << " " << dim << "D, " << steps << " steps";
+        EXPECT_GT(ratio, 1.8) << std::string(kind) << " " << dim << "D, " << steps << " steps";
+        EXPECT_LT(ratio, 2.2) << std::string(kind) << " " << dim << "D, " << steps << " steps";
         previous = error;
       }
-      EXPECT_LT(previous, 2e-3) << integrator_name(kind) << " " << dim << "D";
+      EXPECT_LT(previous, 2e-3) << std::string(kind) << " " << dim << "D";
     }
   }
 }
@@ -68,9 +67,9 @@ TEST(LocalGlobal, SingleSpringFollowsCosOmegaTWithFirstOrderError) {
 TEST(LocalGlobal, SingleSpringMatchesNewtonsImplicitEulerStepByStep) {
   // Along the spring the system is linear, so one local/global iteration is exact.
   const Eigen::Vector3d axis = Eigen::Vector3d(2.0, -1.0, 2.0) / 3.0;
-  Scene lg = oscillator(3, IntegratorKind::kLocalGlobal, 0.01, axis);
-  lg.model.integrator.local_global.iterations = 1;
-  Scene newton = oscillator(3, IntegratorKind::kImplicitEuler, 0.01, axis);
+  Scene lg = oscillator(3, "local-global", 0.01, axis);
+  lg.model.integrator.options.set("iterations", 1);
+  Scene newton = oscillator(3, "implicit-euler", 0.01, axis);
   Simulation a(lg.model, lg.initial), b(newton.model, newton.initial);
   for (int step = 0; step < 100; ++step) {
     a.step();
@@ -83,8 +82,8 @@ TEST(LocalGlobal, SingleSpringMatchesNewtonsImplicitEulerStepByStep) {
 TEST(LocalGlobal, SpringDampingAlongTheSpringEqualsAxialDamping) {
   // Laplacian damping -b(v_i - v_j) equals SpringForce's b (n·dv) n when dv is along n.
   const Eigen::Vector3d axis = Eigen::Vector3d(1.0, 2.0, 2.0) / 3.0;
-  Scene lg = oscillator(3, IntegratorKind::kLocalGlobal, 0.01, axis);
-  Scene newton = oscillator(3, IntegratorKind::kImplicitEuler, 0.01, axis);
+  Scene lg = oscillator(3, "local-global", 0.01, axis);
+  Scene newton = oscillator(3, "implicit-euler", 0.01, axis);
   for (Scene* scene : {&lg, &newton}) {
     scene->model.forces.clear();
     testing::add_spring(*scene, 0, 1, 4.0 * kPi * kPi, 1.0, 1.5);
@@ -102,7 +101,8 @@ TEST(LocalGlobal, GravityAloneIsExact) {
   Scene scene = testing::particles(2, {0.0, 0.0, 1.0, 0.0}, 2.0, {false, false});
   scene.initial.v << 1.0, 3.0, -1.0, 0.0;
   testing::add_gravity(scene, 9.8);
-  scene.model.integrator = {IntegratorKind::kLocalGlobal, 0.05, {}, {}, {}};
+  scene.model.integrator.use(integrator_method("local-global"));
+  scene.model.integrator.dt = 0.05;
   Simulation simulation(scene.model, scene.initial);
   Vector q = scene.initial.q, v = scene.initial.v;
   for (int step = 0; step < 20; ++step) {
@@ -116,7 +116,7 @@ TEST(LocalGlobal, GravityAloneIsExact) {
 }
 
 TEST(LocalGlobal, EliminatedPinsStayExactlyAtRestAndMovingOnesMoveExactly) {
-  Scene scene = testing::cloth(6, 50.0, IntegratorKind::kLocalGlobal, 1.0 / 30.0);
+  Scene scene = testing::cloth(6, 50.0, "local-global", 1.0 / 30.0);
   scene.initial.v.segment<3>(0) << 0.25, 0.0, -0.125;  // pinned corner 0 moves on its own
   Simulation simulation(scene.model, scene.initial);
   for (int step = 0; step < 60; ++step) simulation.step();
@@ -132,8 +132,8 @@ TEST(LocalGlobal, EliminatedPinsStayExactlyAtRestAndMovingOnesMoveExactly) {
 }
 
 TEST(LocalGlobal, PenaltyPinsStayWithin1e8OfRest) {
-  Scene scene = testing::cloth(8, 50.0, IntegratorKind::kLocalGlobal, 1.0 / 30.0);
-  scene.model.integrator.local_global.pins = PinMethod::kPenalty;
+  Scene scene = testing::cloth(8, 50.0, "local-global", 1.0 / 30.0);
+  scene.model.integrator.options.set("pins", "penalty");
   Simulation simulation(scene.model, scene.initial);
   double worst = 0.0;
   for (int step = 0; step < 100; ++step) {
@@ -150,16 +150,15 @@ TEST(LocalGlobal, PenaltyPinsStayWithin1e8OfRest) {
 
 TEST(LocalGlobal, DenseAndSparseFactorizationsAgree) {
   std::vector<Vector> finals;
-  for (LinearSolverChoice solver :
-       {LinearSolverChoice::kDense, LinearSolverChoice::kSparse, LinearSolverChoice::kAuto}) {
-    Scene scene = testing::cloth(5, 30.0, IntegratorKind::kLocalGlobal, 1.0 / 30.0);
-    scene.model.integrator.local_global.solver = solver;
-    LocalGlobal<3> integrator(scene.model);
+  for (const char* solver : {"dense", "sparse", "auto"}) {
+    Scene scene = testing::cloth(5, 30.0, "local-global", 1.0 / 30.0);
+    scene.model.integrator.options.set("solver", solver);
+    const auto integrator = testing::bound_integrator<LocalGlobal<3>>(scene.model);
     State state = scene.initial;
-    for (int step = 0; step < 30; ++step) integrator.step(scene.model, state);
-    EXPECT_EQ(integrator.solver_method(), solver == LinearSolverChoice::kSparse
-                                              ? SpdSolver::Method::kSparse
-                                              : SpdSolver::Method::kDense);
+    for (int step = 0; step < 30; ++step) integrator->step(state);
+    EXPECT_EQ(integrator->solver_method(), std::string_view(solver) == "sparse"
+                                               ? SpdSolver::Method::kSparse
+                                               : SpdSolver::Method::kDense);
     finals.push_back(state.q);
   }
   EXPECT_LT((finals[0] - finals[1]).norm(), 1e-12);
@@ -167,49 +166,53 @@ TEST(LocalGlobal, DenseAndSparseFactorizationsAgree) {
 }
 
 TEST(LocalGlobal, ToleranceEndsTheIterationsEarly) {
-  Scene scene = testing::cloth(6, 30.0, IntegratorKind::kLocalGlobal, 1.0 / 30.0);
-  scene.model.integrator.local_global.iterations = 10000;
-  scene.model.integrator.local_global.tolerance = 1e-10;
-  LocalGlobal<3> integrator(scene.model);
+  Scene scene = testing::cloth(6, 30.0, "local-global", 1.0 / 30.0);
+  scene.model.integrator.options.set("iterations", 10000);
+  scene.model.integrator.options.set("tolerance", 1e-10);
+  const auto integrator = testing::bound_integrator<LocalGlobal<3>>(scene.model);
   State state = scene.initial;
   for (int step = 0; step < 5; ++step) {
-    integrator.step(scene.model, state);
-    EXPECT_LE(integrator.last_change(), 1e-10);
-    EXPECT_LT(integrator.last_iterations(), 10000);
-    EXPECT_GT(integrator.last_iterations(), 1);
+    integrator->step(state);
+    EXPECT_LE(integrator->last_change(), 1e-10);
+    EXPECT_LT(integrator->last_iterations(), 10000);
+    EXPECT_GT(integrator->last_iterations(), 1);
   }
 }
 
-TEST(LocalGlobal, FactorsOncePerTimeStepAndAgainOnlyWhenAnchorsChange) {
-  Scene scene = testing::cloth(6, 30.0, IntegratorKind::kLocalGlobal, 1.0 / 30.0);
-  DragSpringForce& drag = add_drag_spring(scene.model);
-  LocalGlobal<3> integrator(scene.model);
+TEST(LocalGlobal, FactorsInPrecomputeAndAgainOnlyWhenAnchorsChange) {
+  Scene scene = testing::cloth(6, 30.0, "local-global", 1.0 / 30.0);
+  DragSpringForce drag(3);
+  const auto integrator = testing::bound_integrator<LocalGlobal<3>>(scene.model, {&drag});
+  EXPECT_EQ(integrator->factorizations(), 1) << "precompute factors Q";
   State state = scene.initial;
-  for (int step = 0; step < 10; ++step) integrator.step(scene.model, state);
-  EXPECT_EQ(integrator.factorizations(), 1);
+  for (int step = 0; step < 10; ++step) integrator->step(state);
+  EXPECT_EQ(integrator->factorizations(), 1);
   drag.grab(20, Eigen::Vector3d(0.0, 0.5, 0.5), 40.0);
-  integrator.step(scene.model, state);
-  EXPECT_EQ(integrator.factorizations(), 2);
+  integrator->step(state);
+  EXPECT_EQ(integrator->factorizations(), 2);
   drag.move_target(Eigen::Vector3d(0.1, 0.5, 0.5));  // only the right-hand side changes
-  integrator.step(scene.model, state);
-  EXPECT_EQ(integrator.factorizations(), 2);
+  integrator->step(state);
+  EXPECT_EQ(integrator->factorizations(), 2);
   drag.release();
-  integrator.step(scene.model, state);
-  EXPECT_EQ(integrator.factorizations(), 3);
-  scene.model.integrator.dt = 0.01;
-  integrator.step(scene.model, state);
-  EXPECT_EQ(integrator.factorizations(), 4);
+  integrator->step(state);
+  EXPECT_EQ(integrator->factorizations(), 3);
+  scene.model.integrator.dt = 0.01;  // a bound model must not change
+  EXPECT_THROW(integrator->step(state), std::logic_error);
 }
 
 TEST(LocalGlobal, DraggingConvergesToNewtonWithTheSameDragSpring) {
   std::vector<Vector> finals;
-  for (IntegratorKind kind : {IntegratorKind::kLocalGlobal, IntegratorKind::kImplicitEuler}) {
+  for (std::string_view kind : {"local-global", "implicit-euler"}) {
     Scene scene = testing::cloth(4, 10.0, kind, 1.0 / 30.0);
-    scene.model.integrator.local_global.iterations = 20000;
-    scene.model.integrator.local_global.tolerance = 1e-13;
-    DragSpringForce& drag = add_drag_spring(scene.model);
+    if (scene.model.integrator.options.has("iterations")) {
+      scene.model.integrator.options.set("iterations", 20000);
+      scene.model.integrator.options.set("tolerance", 1e-13);
+    }
+    DragSpringForce drag(3);
     drag.grab(14, Eigen::Vector3d(0.2, 0.4, 0.6), 5.0);
-    Simulation simulation(scene.model, scene.initial);
+    StepAdditions additions;
+    additions.interaction_forces = {&drag};
+    Simulation simulation(scene.model, scene.initial, std::move(additions));
     for (int step = 0; step < 15; ++step) simulation.step();
     finals.push_back(simulation.state().q);
   }

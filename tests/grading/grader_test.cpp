@@ -13,7 +13,7 @@
 #include <limits>
 #include <sstream>
 
-#include "core/simulation.h"
+#include "core/step/simulation.h"
 #include "io/scene_loader.h"
 
 namespace fosssim {
@@ -176,8 +176,8 @@ TEST_F(Grader, RejectsAFileWithTooManyFrames) {
 }
 
 TEST_F(Grader, ReportsAReferenceStepThatCannotBeTaken) {
-  scene_->model.integrator.newton.max_iterations = 1;
-  scene_->model.integrator.newton.tolerance = 1e-300;
+  scene_->model.integrator.options.set("newton-max-iterations", 1);
+  scene_->model.integrator.options.set("newton-tolerance", 1e-300);
   auto report = grade();
   ASSERT_TRUE(report) << report.error();
   EXPECT_FALSE(report->passed());

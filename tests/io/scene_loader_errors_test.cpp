@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/integrators/integrator_registry.h"
 #include "io/scene_loader.h"
 
 namespace fosssim {
@@ -119,12 +120,19 @@ const Case kCases[] = {
 INSTANTIATE_TEST_SUITE_P(SceneLoader, MalformedScene, testing::ValuesIn(kCases),
                          [](const testing::TestParamInfo<Case>& info) { return info.param.name; });
 
-TEST(SceneLoaderErrors, UnknownIntegrator) {
+TEST(SceneLoaderErrors, UnknownIntegratorListsEveryTypeOfTheRegistry) {
+  const std::string error =
+      error_of("<scene>\n<duration time=\"1\"/>\n<integrator type=\"rk4\" dt=\"0.1\"/>\n</scene>");
   EXPECT_EQ(
-      error_of("<scene>\n<duration time=\"1\"/>\n<integrator type=\"rk4\" dt=\"0.1\"/>\n</scene>"),
+      error,
       "bad.xml:3: error: <integrator>: attribute \"type\" names an unknown integrator \"rk4\" "
-      "(expected explicit-euler, symplectic-euler, linearized-implicit-euler, "
-      "implicit-euler, local-global or linearly-implicit-euler, or an alias)");
+      "(expected one of explicit-euler, symplectic-euler (or forward-backward-euler, "
+      "semi-implicit-euler), linearized-implicit-euler (or linearized-implicit), "
+      "implicit-euler (or implicit), local-global (or fast-mass-springs), "
+      "linearly-implicit-euler)");
+  for (const IntegratorMethod* method : integrator_methods()) {
+    EXPECT_NE(error.find(std::string(method->name)), std::string::npos) << method->name;
+  }
 }
 
 TEST(SceneLoaderErrors, NonPositiveTimeStep) {

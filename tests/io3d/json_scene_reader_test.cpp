@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/force_evaluation.h"
+#include "core/forces/spring_set_force.h"
 #include "io/scene_loader.h"
 #include "temp_dir.h"
 
@@ -22,11 +23,11 @@ TEST(JsonScene, AppliesTheAssignmentsDefaults) {
   ASSERT_TRUE(scene.has_value()) << scene.error().what();
   const SceneModel& model = scene->model;
   EXPECT_EQ(model.dim, 3);
-  EXPECT_EQ(model.integrator.kind, IntegratorKind::kLocalGlobal);
+  EXPECT_EQ(model.integrator.method->name, "local-global");
   EXPECT_EQ(model.integrator.dt, 1.0 / 30.0);
-  EXPECT_EQ(model.integrator.local_global.iterations, 50);
-  EXPECT_EQ(model.integrator.local_global.pins, PinMethod::kPenalty);
-  EXPECT_EQ(model.integrator.local_global.penalty_weight, 1e10);
+  EXPECT_EQ(model.integrator.options.integer("iterations"), 50);
+  EXPECT_EQ(model.integrator.options.choice("pins"), "penalty");
+  EXPECT_EQ(model.integrator.options.number("penalty"), 1e10);
   EXPECT_EQ(model.duration, 10.0);
   EXPECT_EQ(model.fixed, (std::vector<bool>{true, false, false, true}));
   // Masses from areas: corners 0 and 2 touch both triangles (1/3 each of 1/2), 1 and 3 one.
@@ -35,11 +36,11 @@ TEST(JsonScene, AppliesTheAssignmentsDefaults) {
   // Springs: the 5 distinct edges of the two triangles, at rest; gravity -9.8 N on every vertex.
   EXPECT_EQ(model.edges.size(), 5u);
   ASSERT_EQ(model.forces.size(), 2u);
-  const Vector force = compute_force(model, scene->initial.q, scene->initial.v);
+  const Vector force = compute_force(ForceSet(model), scene->initial.q, scene->initial.v);
   for (int p = 0; p < 4; ++p) EXPECT_EQ(force.segment<3>(3 * p), Eigen::Vector3d(0.0, -9.8, 0.0));
-  std::vector<SpringTerm> springs;
-  ASSERT_TRUE(model.forces[0]->append_springs(springs));
-  EXPECT_EQ(springs[0].k, 250.0);
+  const auto* springs = dynamic_cast<const SpringSetForce<3>*>(model.forces[0].get());
+  ASSERT_NE(springs, nullptr);
+  EXPECT_EQ(springs->springs()[0].k, 250.0);
   EXPECT_TRUE(scene->warnings.empty());
 }
 
@@ -53,7 +54,7 @@ TEST(JsonScene, TakesUniformMassesAndOurOptionalKeys) {
   ASSERT_TRUE(scene.has_value()) << scene.error().what();
   EXPECT_EQ(scene->model.mass, Vector::Constant(12, 0.25));
   EXPECT_EQ(scene->model.integrator.dt, 0.01);
-  EXPECT_EQ(scene->model.integrator.local_global.iterations, 7);
+  EXPECT_EQ(scene->model.integrator.options.integer("iterations"), 7);
   EXPECT_EQ(scene->model.num_steps(), 200);
   EXPECT_EQ(scene->model.fixed, std::vector<bool>(4, false));
   ASSERT_EQ(scene->warnings.size(), 1u);
@@ -65,7 +66,7 @@ TEST(JsonScene, IsChosenByTheSceneLoaderForJsonFiles) {
   dir.write("square.obj", kSquare);
   const auto scene = load_scene_file(dir.write("s.json", R"({"obj": "square.obj", "k": 1})"));
   ASSERT_TRUE(scene.has_value()) << scene.error().what();
-  EXPECT_EQ(scene->model.integrator.kind, IntegratorKind::kLocalGlobal);
+  EXPECT_EQ(scene->model.integrator.method->name, "local-global");
 }
 
 struct Bad {

@@ -58,12 +58,12 @@ TEST(MeshElements, ReadMeshesInDocumentOrderAfterXmlParticlesWithSpringsAfterSpr
   EXPECT_EQ(model.forces[2]->label(), "clothmesh 0 (3 springs)");
   EXPECT_EQ(model.forces[3]->label(), "generate 0 (chain) (3 springs)");
   EXPECT_EQ(model.forces[4]->label(), "simplegravity");
-  const LocalGlobalSettings& lg = model.integrator.local_global;
-  EXPECT_EQ(lg.iterations, 12);
-  EXPECT_EQ(lg.tolerance, 1e-9);
-  EXPECT_EQ(lg.pins, PinMethod::kPenalty);
-  EXPECT_EQ(lg.penalty_weight, 1e8);
-  EXPECT_EQ(lg.solver, LinearSolverChoice::kSparse);
+  const OptionValues& lg = model.integrator.options;
+  EXPECT_EQ(lg.integer("iterations"), 12);
+  EXPECT_EQ(lg.number("tolerance"), 1e-9);
+  EXPECT_EQ(lg.choice("pins"), "penalty");
+  EXPECT_EQ(lg.number("penalty"), 1e8);
+  EXPECT_EQ(lg.choice("solver"), "sparse");
   EXPECT_TRUE(scene->warnings.empty()) << scene->warnings.front();
   EXPECT_EQ(scene->appearance.triangles.size(), 4u + 1u);
 }
@@ -82,9 +82,9 @@ TEST(MeshElements, GenerateEveryKindAndDefaultIntegratorOptions) {
                                      "all.xml");
   ASSERT_TRUE(scene.has_value()) << scene.error().what();
   const SceneModel& model = scene->model;
-  EXPECT_EQ(model.integrator.kind, IntegratorKind::kLocalGlobal);
-  EXPECT_EQ(model.integrator.local_global.iterations, 10);
-  EXPECT_EQ(model.integrator.local_global.pins, PinMethod::kElimination);
+  EXPECT_EQ(model.integrator.method->name, "local-global");
+  EXPECT_EQ(model.integrator.options.integer("iterations"), 10);
+  EXPECT_EQ(model.integrator.options.choice("pins"), "elimination");
   EXPECT_EQ(model.forces.size(), 6u);
   int pinned = 0;
   for (bool f : model.fixed) pinned += f;
@@ -176,14 +176,15 @@ TEST(IntegratorOptions, AreValidatedAndWarnedAboutForOtherMethods) {
   };
   const std::pair<const char*, const char*> bad[] = {
       {R"(<integrator type="local-global" dt="0.01" iterations="0"/>)",
-       "attribute \"iterations\" must be at least 1"},
+       "attribute \"iterations\" must be a whole number from 1 to 1000000, found 0"},
       {R"(<integrator type="local-global" dt="0.01" pins="glue"/>)",
        "must be \"elimination\" or \"penalty\""},
       {R"(<integrator type="local-global" dt="0.01" penalty="-1"/>)",
-       "attribute \"penalty\" must be positive"},
+       "attribute \"penalty\" must be a positive number, found -1"},
       {R"(<integrator type="local-global" dt="0.01" solver="cg"/>)",
-       "\"auto\" or \"dense\" or \"sparse\""},
-      {R"(<integrator type="local-global" dt="0.01" tolerance="-1"/>)", "must be non-negative"},
+       "\"auto\", \"dense\" or \"sparse\", found \"cg\""},
+      {R"(<integrator type="local-global" dt="0.01" tolerance="-1"/>)",
+       "must be a non-negative number"},
       {R"(<integrator type="linearly-implicit-euler" dt="0.01" hessian="clamped"/>)",
        "\"exact\" or \"projected\""},
   };
@@ -197,7 +198,7 @@ TEST(IntegratorOptions, AreValidatedAndWarnedAboutForOtherMethods) {
       base(R"(<integrator type="linearly-implicit-euler" dt="0.01" hessian="projected"/>)"),
       "p.xml");
   ASSERT_TRUE(projected.has_value());
-  EXPECT_TRUE(projected->model.integrator.linearly_implicit.project_hessian);
+  EXPECT_EQ(projected->model.integrator.options.choice("hessian"), "projected");
   const auto other = load_scene_text(
       base(R"(<integrator type="implicit-euler" dt="0.01" iterations="5"/>)"), "o.xml");
   ASSERT_TRUE(other.has_value());

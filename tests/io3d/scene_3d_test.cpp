@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "core/simulation.h"
+#include "core/step/simulation.h"
 #include "grading/grader.h"
 #include "io/scene_loader.h"
 #include "io/trajectory_file.h"

@@ -35,8 +35,9 @@ TEST(AppendMesh, AddsParticlesAfterExistingOnesWithSpringsAtRest) {
   EXPECT_EQ(scene.initial.v.segment<3>(3 * 1), Eigen::Vector3d::Zero()) << "pins start at rest";
   EXPECT_DOUBLE_EQ(scene.model.mass.tail(27).sum() / 3.0, 2.0);  // 1 m² at 2 kg/m²
   EXPECT_EQ(scene.model.mass[0], 5.0);
-  std::vector<SpringTerm> springs;
-  ASSERT_TRUE((*force)->append_springs(springs));
+  const auto* set = dynamic_cast<const SpringSetForce<3>*>(force->get());
+  ASSERT_NE(set, nullptr);
+  const std::vector<SpringTerm>& springs = set->springs();
   ASSERT_EQ(springs.size(), 12u + 8u);
   ASSERT_EQ(scene.model.edges.size(), springs.size());
   for (std::size_t s = 0; s < springs.size(); ++s) {

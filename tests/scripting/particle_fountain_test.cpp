@@ -46,15 +46,21 @@ TEST(HashedUniform, LooksUniform) {
   EXPECT_NEAR(sum_squares / n - mean * mean, 1.0 / 12.0, 0.005);
 }
 
+/// Applies the fountain as the step pipeline would at the end of `state`'s step.
+void apply(ParticleFountain& fountain, const SceneModel& model, State& state) {
+  const State start = state;
+  fountain.apply(StepContext{model, start, model.integrator.dt}, state);
+}
+
 TEST(ParticleFountain, TeleportsTaggedParticlesBelowTheFloorToTheOriginGoingUp) {
   const SceneModel model = model_of(2, 3);
-  const ParticleFountain fountain({0, 2});
+  ParticleFountain fountain({0, 2});
   State state;
   state.q.resize(6);
   state.q << 0.3, -1.3, 0.4, -1.4, 0.5, -1.2;  // 0 below (tagged), 1 below (untagged), 2 above
   state.v = Vector::Constant(6, -2.0);
   state.step = 17;
-  fountain.after_step(model, state);
+  apply(fountain, model, state);
 
   EXPECT_EQ(state.q.segment<2>(0), Vector::Zero(2));
   const Vector launched = state.v.segment<2>(0);
@@ -73,11 +79,11 @@ TEST(ParticleFountain, TeleportsTaggedParticlesBelowTheFloorToTheOriginGoingUp) 
 
 TEST(ParticleFountain, TheFloorItselfIsNotBelowIt) {
   const SceneModel model = model_of(2, 1);
-  const ParticleFountain fountain({0});
+  ParticleFountain fountain({0});
   State state;
   state.q = Vector::Constant(2, ParticleFountain::kFloorHeight);
   state.v = Vector::Zero(2);
-  fountain.after_step(model, state);
+  apply(fountain, model, state);
   EXPECT_DOUBLE_EQ(state.q[1], ParticleFountain::kFloorHeight);
 }
 
@@ -92,12 +98,12 @@ TEST(ParticleFountain, LaunchVelocityDependsOnlyOnStepAndParticle) {
 
 TEST(ParticleFountain, WorksInThreeDimensionsWithYUp) {
   const SceneModel model = model_of(3, 1);
-  const ParticleFountain fountain({0});
+  ParticleFountain fountain({0});
   State state;
   state.q = Vector(3);
   state.q << 0.2, -2.0, 0.7;
   state.v = Vector::Zero(3);
-  fountain.after_step(model, state);
+  apply(fountain, model, state);
   EXPECT_EQ(state.q, Vector::Zero(3));
   EXPECT_GE(state.v[1], ParticleFountain::kMinUpwardSpeed);
   EXPECT_GE(state.v[2], -ParticleFountain::kMaxSidewaysSpeed);

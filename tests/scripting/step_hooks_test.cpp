@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "app_render/program_runner.h"
-#include "core/simulation.h"
+#include "core/step/simulation.h"
 #include "grading/grader.h"
 #include "io/scene_loader.h"
 #include "io/trajectory_file.h"
@@ -48,7 +48,7 @@ TEST(MakeStepHook, NoTagOrAnUnknownTagSelectsNothing) {
 
 TEST(SimulationWithFountain, TaggedParticlesNeverEndAStepBelowTheFloor) {
   const Scene scene = load(kFountain);
-  Simulation simulation(scene.model, scene.initial, make_step_hook(scene));
+  Simulation simulation(scene.model, scene.initial, scripted_additions(scene));
   int teleports = 0;
   double lowest_untagged = 0.0;
   while (!simulation.finished()) {
@@ -66,8 +66,8 @@ TEST(SimulationWithFountain, TaggedParticlesNeverEndAStepBelowTheFloor) {
 
 TEST(SimulationWithFountain, TwoRunsAreBitIdentical) {
   const Scene scene = load(kFountain);
-  Simulation a(scene.model, scene.initial, make_step_hook(scene));
-  Simulation b(scene.model, scene.initial, make_step_hook(scene));
+  Simulation a(scene.model, scene.initial, scripted_additions(scene));
+  Simulation b(scene.model, scene.initial, scripted_additions(scene));
   while (!a.finished()) {
     a.step();
     b.step();
@@ -80,7 +80,8 @@ TEST(SimulationWithFountain, TwoRunsAreBitIdentical) {
 void write_run(const Scene& scene, bool with_hook, const std::string& path) {
   auto writer = TrajectoryWriter::open(path);
   ASSERT_TRUE(writer.has_value());
-  Simulation simulation(scene.model, scene.initial, with_hook ? make_step_hook(scene) : nullptr);
+  Simulation simulation(scene.model, scene.initial,
+                        with_hook ? scripted_additions(scene) : StepAdditions{});
   writer->write_frame(simulation.state());
   while (!simulation.finished()) {
     simulation.step();

@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "core/interaction/picking.h"
 #include "render/tiny_scene.h"
 #include "render/tiny_scene_3d.h"
+#include "viewer/particle_grab.h"
 
 namespace fosssim {
 namespace {
@@ -73,14 +73,14 @@ TEST(MouseControl, OrbitsPansAndZoomsA3DView) {
 
 TEST(MouseControl, CtrlDragPullsAParticleAndLetsGoOnRelease) {
   Scene scene = testing::particles_at({{0, 0, 0}, {1, 0, 0}});
-  DragSpringForce& spring = add_drag_spring(scene.model);
   SceneView view(scene, scene.initial, 512, 512);
   view.orbit_camera() = testing::front_camera();
   MouseControl without_grab(view, nullptr);
   EXPECT_FALSE(without_grab.press(MouseButton::kLeft, kCtrl, 256, 256, scene.initial));
   EXPECT_EQ(without_grab.action(), MouseAction::kNone);
 
-  ParticleGrab grab(scene, spring);
+  ParticleGrab grab(scene);
+  const DragSpringForce& spring = grab.force();
   MouseControl mouse(view, &grab);
   const OrbitCamera camera = view.orbit_camera();
   EXPECT_FALSE(mouse.press(MouseButton::kLeft, kCtrl, 10, 10, scene.initial));  // nothing there

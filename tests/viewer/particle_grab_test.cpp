@@ -7,9 +7,9 @@
 
 #include <numbers>
 
-#include "core/interaction/picking.h"
 #include "io/scene_loader.h"
 #include "render/tiny_scene_3d.h"
+#include "viewer/particle_grab.h"
 #include "viewer/stepper.h"
 
 namespace fosssim {
@@ -30,9 +30,9 @@ SceneView front_view(const Scene& scene) {
 TEST(ParticleGrab, PicksTheNearestParticleUnderTheCursorThroughTheCamerasRay) {
   Scene scene = row_of_particles();
   scene.model.fixed[4] = true;
-  DragSpringForce& spring = add_drag_spring(scene.model);
   const SceneView view = front_view(scene);
-  ParticleGrab grab(scene, spring);
+  ParticleGrab grab(scene);
+  const DragSpringForce& spring = grab.force();
   // The centre pixel: particles 1, 2 and 0 lie on its ray; 1 is nearest the eye.
   ASSERT_TRUE(grab.press(view, scene.initial, 256.0, 256.0));
   EXPECT_EQ(spring.particle(), 1);
@@ -51,9 +51,9 @@ TEST(ParticleGrab, PicksTheNearestParticleUnderTheCursorThroughTheCamerasRay) {
 
 TEST(ParticleGrab, PullsTowardTheCursorOnThePlaneFacingTheCamera) {
   Scene scene = row_of_particles();
-  DragSpringForce& spring = add_drag_spring(scene.model);
   SceneView view = front_view(scene);
-  ParticleGrab grab(scene, spring);
+  ParticleGrab grab(scene);
+  const DragSpringForce& spring = grab.force();
   // Grab particle 3 two pixels off its centre: the offset is kept.
   ASSERT_TRUE(grab.press(view, scene.initial, 256.0 + 51.2 + 2.0, 256.0));
   // 64 pixels right and 32 down at depth 5 (256 pixels per unit at depth 1).
@@ -84,9 +84,9 @@ TEST(ParticleGrab, PicksTheParticleNearestTheCursorIn2D) {
     <viewport cx="0" cy="0" size="1"/></scene>)",
                                "two.xml");
   ASSERT_TRUE(scene.has_value());
-  DragSpringForce& spring = add_drag_spring(scene->model);
   const SceneView view(*scene, scene->initial, 512, 512);
-  ParticleGrab grab(*scene, spring);
+  ParticleGrab grab(*scene);
+  const DragSpringForce& spring = grab.force();
   // World (0.08, 0): within both particles' radius (the pick distance), nearer particle 1.
   ASSERT_TRUE(grab.press(view, scene->initial, 256.0 + 20.48, 256.0));
   EXPECT_EQ(spring.particle(), 1);
@@ -99,9 +99,9 @@ TEST(DragStiffness, IsStableForExplicitIntegratorsAndStiffForImplicitOnes) {
   Scene scene = testing::particles_at({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}});
   scene.model.mass.segment<3>(3).setConstant(2.0);
   scene.model.fixed[2] = true;
-  scene.model.integrator.kind = IntegratorKind::kSymplecticEuler;
+  scene.model.integrator.use(integrator_method("symplectic-euler"));
   EXPECT_DOUBLE_EQ(drag_stiffness(scene.model, 1), 2.0 / 1e-4);
-  scene.model.integrator.kind = IntegratorKind::kLocalGlobal;  // the free mass: 1 + 2
+  scene.model.integrator.use(integrator_method("local-global"));  // the free mass: 1 + 2
   EXPECT_DOUBLE_EQ(drag_stiffness(scene.model, 1), 3.0 / 1e-4);
 }
 
@@ -116,10 +116,10 @@ double distance_after_pulling(const char* integrator, bool pull) {
     <simplegravity fx="0" fy="-9.8" fz="0"/></scene>)";
   auto scene = load_scene_text(text, "cloth.xml");
   EXPECT_TRUE(scene.has_value()) << scene.error().what();
-  DragSpringForce& spring = add_drag_spring(scene->model);
-  SimulationStepper stepper(*scene);
+  ParticleGrab grab(*scene);
+  const DragSpringForce& spring = grab.force();
+  SimulationStepper stepper(*scene, {&spring});
   const SceneView view(*scene, stepper.state(), 512, 512);
-  ParticleGrab grab(*scene, spring);
   const int vertex = 6 * 7 + 3;  // the middle of the bottom row
   const Eigen::Vector3d start = stepper.state().q.segment<3>(3 * vertex);
   const OrbitProjection projection(view.orbit_camera(), 512, 512);

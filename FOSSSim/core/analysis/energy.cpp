@@ -6,7 +6,7 @@ namespace fosssim {
 
 EnergyReport compute_energies(const SceneModel& model, const State& state) {
   return {compute_kinetic_energy(model, state.v),
-          compute_potential_energy(model, state.q, state.v)};
+          compute_potential_energy(ForceSet(model), state.q, state.v)};
 }
 
 }  // namespace fosssim

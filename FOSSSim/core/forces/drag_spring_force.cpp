@@ -42,9 +42,4 @@ std::string DragSpringForce::label() const {
   return "dragspring(" + std::to_string(particle_) + ")";
 }
 
-bool DragSpringForce::append_anchors(std::vector<AnchorTerm>& anchors) const {
-  if (active()) anchors.push_back({particle_, k_, target_});
-  return true;
-}
-
 }  // namespace fosssim

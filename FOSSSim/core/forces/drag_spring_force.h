@@ -12,11 +12,13 @@ namespace fosssim {
 /// particle with the mouse (SPEC section 7: "a picked vertex is dragged by a stiff
 /// zero-rest-length spring toward the mouse"). With p the grabbed particle and t the target:
 ///   U = ½ k |x_p - t|²,  F_p = -k (x_p - t),  hessX = k I on block (p, p),  hessV = 0.
-/// It adds nothing until grab() and after release(). Unlike other forces it changes while a
-/// simulation runs: the window calls grab, move_target and release between steps, and every
-/// integrator sees the change at the next step (the local/global solver through
-/// append_anchors). The dimension is a run-time value so that one handle serves 2D and 3D;
-/// in 2D the target's z is ignored.
+/// It adds nothing until grab() and after release(). Unlike other forces it belongs to no scene
+/// model: the window owns it and hands it to the simulation as an interaction force
+/// (core/force_set.h), and it changes while the simulation runs: the window calls grab,
+/// move_target and release between steps, and every integrator sees the change at the next
+/// step (the local/global solver takes it as an anchor, core/systems/local_global_system.h).
+/// The dimension is a run-time value so that one handle serves 2D and 3D; in 2D the target's z
+/// is ignored.
 class DragSpringForce final : public Force {
  public:
   /// dim: the scene's dimension, 2 or 3.
@@ -41,7 +43,6 @@ class DragSpringForce final : public Force {
   void add_hessian_v(const ForceInput&, HessianBuilder&) const override {}
   bool is_conservative() const override { return true; }
   std::string label() const override;
-  bool append_anchors(std::vector<AnchorTerm>& anchors) const override;
 
  private:
   int dim_;

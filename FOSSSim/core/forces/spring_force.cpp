@@ -37,7 +37,7 @@ template <int D>
 void SpringForce<D>::add_hessian_x(const ForceInput& in, HessianBuilder& hessian) const {
   hessian.add_pair<D>(i_, j_,
                       spring_hessian_x<D>(extension(in.q), relative_velocity(in.v), k_, l0_, b_,
-                                          hessian.project_definite()));
+                                          in.definite_hessian));
 }
 
 template <int D>
@@ -46,12 +46,6 @@ void SpringForce<D>::add_hessian_v(const ForceInput& in, HessianBuilder& hessian
   const Vec<D> d = extension(in.q);
   if (l0_ == 0.0 && d.norm() == 0.0) return;  // the damping direction is undefined: no entries
   hessian.add_pair<D>(i_, j_, spring_hessian_v<D>(d, l0_, b_));
-}
-
-template <int D>
-bool SpringForce<D>::append_springs(std::vector<SpringTerm>& springs) const {
-  springs.push_back({i_, j_, k_, l0_, b_});
-  return true;
 }
 
 template <int D>

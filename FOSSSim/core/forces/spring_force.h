@@ -4,6 +4,7 @@
 
 #include "core/force.h"
 #include "core/force_parameters.h"
+#include "core/spring_terms.h"
 
 namespace fosssim {
 
@@ -29,7 +30,8 @@ class SpringForce final : public Force {
   bool is_conservative() const override { return b_ == 0.0; }
   bool has_symmetric_jacobians() const override { return b_ == 0.0; }
   std::string label() const override;
-  bool append_springs(std::vector<SpringTerm>& springs) const override;
+  /// The spring as the local/global solver takes it (core/systems/local_global_system.h).
+  SpringTerm term() const { return {i_, j_, k_, l0_, b_}; }
 
  private:
   /// x_j - x_i.

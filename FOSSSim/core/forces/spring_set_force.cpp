@@ -34,13 +34,12 @@ void SpringSetForce<D>::add_gradient(const ForceInput& in, Vector& gradient) con
 
 template <int D>
 void SpringSetForce<D>::add_hessian_x(const ForceInput& in, HessianBuilder& hessian) const {
-  hessian.triplets().reserve(hessian.triplets().size() + 4 * D * D * springs_.size());
+  hessian.reserve(4 * D * D * springs_.size());
   for (const SpringTerm& s : springs_) {
     const Vec<D> d = particle_vec<D>(in.q, s.j) - particle_vec<D>(in.q, s.i);
     Vec<D> dv = Vec<D>::Zero();
     if (s.b != 0.0) dv = particle_vec<D>(in.v, s.j) - particle_vec<D>(in.v, s.i);
-    hessian.add_pair<D>(s.i, s.j,
-                        spring_hessian_x<D>(d, dv, s.k, s.l0, s.b, hessian.project_definite()));
+    hessian.add_pair<D>(s.i, s.j, spring_hessian_x<D>(d, dv, s.k, s.l0, s.b, in.definite_hessian));
   }
 }
 
@@ -57,12 +56,6 @@ void SpringSetForce<D>::add_hessian_v(const ForceInput& in, HessianBuilder& hess
 template <int D>
 std::string SpringSetForce<D>::label() const {
   return label_ + " (" + std::to_string(springs_.size()) + " springs)";
-}
-
-template <int D>
-bool SpringSetForce<D>::append_springs(std::vector<SpringTerm>& springs) const {
-  springs.insert(springs.end(), springs_.begin(), springs_.end());
-  return true;
 }
 
 template class SpringSetForce<2>;

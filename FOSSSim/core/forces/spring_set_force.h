@@ -29,7 +29,8 @@ class SpringSetForce final : public Force {
   bool is_conservative() const override { return !damped_; }
   bool has_symmetric_jacobians() const override { return !damped_; }
   std::string label() const override;
-  bool append_springs(std::vector<SpringTerm>& springs) const override;
+  /// The springs, in summation order.
+  const std::vector<SpringTerm>& springs() const { return springs_; }
 
  private:
   std::vector<SpringTerm> springs_;

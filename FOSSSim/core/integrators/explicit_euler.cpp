@@ -4,12 +4,21 @@
 
 namespace fosssim {
 
-void ExplicitEuler::advance(const SceneModel& model, State& state) {
-  const double h = model.integrator.dt;
-  Vector force = compute_force(model, state.q, state.v);
-  zero_fixed(model, force);
+void ExplicitEuler::advance(State& state) {
+  const double h = model().integrator.dt;
+  Vector force = compute_force(forces(), state.q, state.v);
+  zero_fixed(model(), force);
   state.q += h * state.v;
-  state.v += h * force.cwiseQuotient(model.mass);
+  state.v += h * force.cwiseQuotient(model().mass);
 }
+
+constinit const IntegratorMethod kExplicitEulerMethod{
+    .name = "explicit-euler",
+    .summary = "forward Euler, the course's first method",
+    .properties = {.order = 1, .course_reference = true, .energy = EnergyTrend::kGrows},
+    .create = [](const OptionValues&, int) -> std::unique_ptr<Integrator> {
+      return std::make_unique<ExplicitEuler>();
+    },
+};
 
 }  // namespace fosssim

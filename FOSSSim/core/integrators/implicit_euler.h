@@ -1,34 +1,41 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "core/hessian_builder.h"
 #include "core/integrators/integrator.h"
 #include "core/solvers/step_solver.h"
+#include "core/systems/backward_euler.h"
+#include "core/systems/step_matrix.h"
 
 namespace fosssim {
 
-/// Backward Euler solved by Newton's method on the velocity change (SPEC section 4):
-/// unknown dv = vⁿ⁺¹ - vⁿ, start dv = 0, dx = h vⁿ; repeat
+/// Settings of Newton's method in implicit Euler.
+struct NewtonSettings {
+  double tolerance = 1e-9;   ///< stop when the L2 norm of a correction is below this (course)
+  int max_iterations = 200;  ///< give up and report non-convergence after this many
+};
+
+/// Backward Euler solved by Newton's method on the velocity change, in the course's update
+/// order (docs/integrators.md): unknown dv = vⁿ⁺¹ - vⁿ, start dv = 0, dx = h vⁿ; repeat
 ///   rhs = h F(qⁿ + dx, vⁿ + dv) - M dv (fixed zeroed);  A Δ = rhs with A as in linearized
 ///   implicit Euler at (qⁿ + dx, vⁿ + dv);  dv += Δ;  dx = h (vⁿ + dv)
 /// until ‖Δ‖₂ < tolerance (at least one iteration); then qⁿ⁺¹ = qⁿ + dx, vⁿ⁺¹ = vⁿ + dv.
+/// The equations are those of BackwardEulerStep (core/systems/backward_euler.h).
 ///
 /// This plain Newton iteration is the course's and is always tried first, so every step it
 /// solves is bit-identical to the course's reference. Plain Newton is not globally convergent
 /// (a stiff, strongly stretched spring system with a large step can make it wander); when it
 /// does not converge within NewtonSettings::max_iterations, the step is solved again from
-/// dv = 0 with a backtracking (Armijo) line search. When every force is conservative, backward
-/// Euler is the minimization of the incremental potential Φ(dv) = ½ dvᵀM dv + U(qⁿ + h(vⁿ+dv))
-/// (gradient -rhs, Hessian A), so the search minimizes Φ, stepping along M⁻¹rhs where an
-/// indefinite A makes the Newton step climb; otherwise it reduces ‖rhs‖², for which the Newton
-/// step is always a descent direction. Only if that fails too is StepError thrown. Steps that
-/// needed the line search are counted (line_search_steps()).
+/// dv = 0 with a backtracking line search: on the incremental potential when every force is
+/// conservative (potential_line_search), otherwise on ‖rhs‖² (residual_line_search). Only if
+/// that fails too is StepError thrown. Steps that needed the line search are counted
+/// (line_search_steps()).
 class ImplicitEuler final : public Integrator {
  public:
-  explicit ImplicitEuler(const SceneModel& model) : solver_(model.has_symmetric_jacobians()) {}
+  explicit ImplicitEuler(NewtonSettings settings) : settings_(settings) {}
 
   /// Newton iterations taken by the last step (of the line-search solve, if it was needed).
   int last_iterations() const { return last_iterations_; }
@@ -37,7 +44,8 @@ class ImplicitEuler final : public Integrator {
   std::vector<std::string> notes() const override;
 
  protected:
-  void advance(const SceneModel& model, State& state) override;
+  void prepare() override;
+  void advance(State& state) override;
 
  private:
   struct NewtonResult {
@@ -45,24 +53,18 @@ class ImplicitEuler final : public Integrator {
     int iterations = 0;
     double last_correction_norm = 0.0;
   };
-  /// Runs Newton from dv = 0 on the step from `state`; dv receives the result.
-  NewtonResult solve(const SceneModel& model, const State& state, bool line_search, Vector& dv);
-  /// rhs(dv) = h F(qⁿ + h(vⁿ + dv), vⁿ + dv) - M dv with fixed DOFs zeroed.
-  Vector residual(const SceneModel& model, const State& state, const Vector& dv) const;
-  /// Φ(dv) = ½ dvᵀM dv + U(qⁿ + h(vⁿ + dv)), whose gradient is -rhs for conservative models.
-  double incremental_potential(const SceneModel& model, const State& state, const Vector& dv) const;
-  /// A step that decreases Φ enough (Armijo), along the Newton step or, failing descent, M⁻¹rhs.
-  Vector descent_step(const SceneModel& model, const State& state, const Vector& dv,
-                      const Vector& rhs, const Vector& newton_step) const;
-  /// A fraction of the Newton step that decreases ‖rhs‖² enough (Armijo); rhs becomes the
-  /// residual at dv plus that step.
-  Vector residual_step(const SceneModel& model, const State& state, const Vector& dv, Vector& rhs,
-                       const Vector& newton_step) const;
+  /// Runs Newton from dv = 0 on `problem`; dv receives the result.
+  NewtonResult solve(const BackwardEulerStep& problem, bool line_search, Vector& dv);
 
-  StepSolver solver_;
-  HessianBuilder scratch_;
+  NewtonSettings settings_;
+  std::optional<StepMatrix> matrix_;
+  std::optional<StepSolver> solver_;
   int last_iterations_ = 0;
   std::int64_t line_search_steps_ = 0;
 };
+
+/// Registry entry: "implicit-euler", also "implicit". Options: newton-tolerance,
+/// newton-max-iterations.
+extern const IntegratorMethod kImplicitEulerMethod;
 
 }  // namespace fosssim

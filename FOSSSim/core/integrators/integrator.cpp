@@ -1,31 +1,35 @@
 #include "core/integrators/integrator.h"
 
-#include "core/integrators/explicit_euler.h"
-#include "core/integrators/implicit_euler.h"
-#include "core/integrators/linearized_implicit_euler.h"
-#include "core/integrators/linearly_implicit_euler.h"
-#include "core/integrators/local_global.h"
-#include "core/integrators/symplectic_euler.h"
+#include <stdexcept>
 
 namespace fosssim {
 
-std::unique_ptr<Integrator> make_integrator(const SceneModel& model) {
-  switch (model.integrator.kind) {
-    case IntegratorKind::kExplicitEuler:
-      return std::make_unique<ExplicitEuler>();
-    case IntegratorKind::kSymplecticEuler:
-      return std::make_unique<SymplecticEuler>();
-    case IntegratorKind::kLinearizedImplicitEuler:
-      return std::make_unique<LinearizedImplicitEuler>(model);
-    case IntegratorKind::kImplicitEuler:
-      return std::make_unique<ImplicitEuler>(model);
-    case IntegratorKind::kLocalGlobal:
-      if (model.dim == 3) return std::make_unique<LocalGlobal<3>>(model);
-      return std::make_unique<LocalGlobal<2>>(model);
-    case IntegratorKind::kLinearlyImplicitEuler:
-      return std::make_unique<LinearlyImplicitEuler>(model);
+void Integrator::precompute(const SceneModel& model, std::vector<const Force*> interaction) {
+  if (is_bound()) throw std::logic_error("an integrator is bound to one model only");
+  forces_.emplace(model, std::move(interaction));
+  dt_ = model.integrator.dt;
+  prepare();
+}
+
+void Integrator::step(State& state) {
+  if (!is_bound()) throw std::logic_error("Integrator::step before precompute");
+  if (state.q.size() != model().num_dofs() || state.v.size() != model().num_dofs()) {
+    throw std::logic_error("Integrator::step: the state does not have the model's size");
   }
-  return nullptr;
+  if (model().integrator.dt != dt_) {
+    throw std::logic_error("Integrator::step: the model's time step changed after precompute");
+  }
+  advance(state);
+  ++state.step;
+  state.time = static_cast<double>(state.step) * model().integrator.dt;
+}
+
+std::unique_ptr<Integrator> make_integrator(const SceneModel& model,
+                                            std::vector<const Force*> interaction) {
+  const IntegratorSettings& settings = model.integrator;
+  std::unique_ptr<Integrator> integrator = settings.method->create(settings.options, model.dim);
+  integrator->precompute(model, std::move(interaction));
+  return integrator;
 }
 
 }  // namespace fosssim

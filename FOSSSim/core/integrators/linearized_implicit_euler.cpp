@@ -1,21 +1,46 @@
 #include "core/integrators/linearized_implicit_euler.h"
 
+#include <array>
+#include <string_view>
+
 #include "core/force_evaluation.h"
 #include "core/step_error.h"
 
 namespace fosssim {
 
-void LinearizedImplicitEuler::advance(const SceneModel& model, State& state) {
-  const double h = model.integrator.dt;
+void LinearizedImplicitEuler::prepare() {
+  matrix_.emplace(forces(), FixedParticleRule::kIdentityRows);
+  solver_.emplace(forces().has_symmetric_jacobians());
+}
+
+void LinearizedImplicitEuler::advance(State& state) {
+  const double h = model().integrator.dt;
   const Vector predicted_q = state.q + h * state.v;
-  Vector rhs = h * compute_force(model, predicted_q, state.v);
-  zero_fixed(model, rhs);
-  const SparseMatrix A = assemble_step_matrix(model, predicted_q, state.v, h, scratch_);
-  const auto dv = solver_.solve(A, rhs);
-  if (!dv)
+  const Vector rhs = matrix_->restrict(h * compute_force(forces(), predicted_q, state.v));
+  const SparseMatrix& A = matrix_->assemble(predicted_q, state.v, h);
+  const auto dv = solver_->solve(A, rhs);
+  if (!dv) {
     throw StepError(state.step + 1, "linearized implicit Euler: the step matrix is singular");
-  state.v += *dv;
+  }
+  matrix_->add_solution(*dv, state.v);
   state.q += h * state.v;
 }
+
+namespace {
+constexpr std::array<std::string_view, 1> kAliases = {"linearized-implicit"};
+}  // namespace
+
+constinit const IntegratorMethod kLinearizedImplicitEulerMethod{
+    .name = "linearized-implicit-euler",
+    .aliases = kAliases,
+    .summary = "one Newton step of implicit Euler from the predicted position (Baraff-Witkin)",
+    .properties = {.order = 1,
+                   .course_reference = true,
+                   .implicit = true,
+                   .energy = EnergyTrend::kDecays},
+    .create = [](const OptionValues&, int) -> std::unique_ptr<Integrator> {
+      return std::make_unique<LinearizedImplicitEuler>();
+    },
+};
 
 }  // namespace fosssim

@@ -1,30 +1,57 @@
 #include "core/integrators/local_global.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <string_view>
 
-#include "core/step_error.h"
+#include "core/error.h"
 
 namespace fosssim {
 
 template <int D>
-void LocalGlobal<D>::advance(const SceneModel& model, State& state) {
-  const double h = model.integrator.dt;
-  if (!prepared_) {
-    const std::vector<SpringTerm> springs = classify_forces(model);
-    choose_free_particles(model, state, springs);
-    prepared_ = true;
+void LocalGlobal<D>::prepare() {
+  const SceneModel& model = this->model();
+  split_ = sort_mass_spring_forces(forces());
+  const bool eliminate = settings_.pins == PinMethod::kElimination;
+  free_ = FreeDofs(eliminate ? model.fixed : std::vector<bool>(model.fixed.size(), false), D);
+  if (!eliminate) {
+    for (int p = 0; p < model.num_particles(); ++p) {
+      if (model.fixed[p]) pinned_.push_back(p);
+    }
   }
-  std::vector<std::pair<int, double>> signature = collect_anchors(model, state, h);
-  if (h != h_ || signature != factored_anchors_) {
-    h_ = h;
+  for (const SpringTerm& s : split_.springs) {
+    const int fi = free_.of_particle(s.i);
+    const int fj = free_.of_particle(s.j);
+    if (fi < 0 && fj < 0) continue;  // both ends eliminated: no effect on the unknowns
+    springs_.push_back({s.i, s.j, fi, fj, s.k, s.l0, s.b});
+  }
+  d_ = Points<D>::Zero(static_cast<Eigen::Index>(springs_.size()), D);
+  // Q for the anchors there are now (the pins; the drag spring, if already grabbed). The pins'
+  // targets only enter the right side, so they can wait for the first step.
+  anchors_.clear();
+  for (const DragSpringForce* drag : split_.anchors) {
+    if (drag->active() && !model.fixed[drag->particle()])
+      anchors_.push_back({drag->particle(), drag->stiffness(), drag->target()});
+  }
+  for (int p : pinned_) anchors_.push_back({p, settings_.penalty_weight, Eigen::Vector3d::Zero()});
+  for (const AnchorTerm& a : anchors_) factored_anchors_.emplace_back(a.i, a.k);
+  factor();
+}
+
+template <int D>
+void LocalGlobal<D>::advance(State& state) {
+  const double h = model().integrator.dt;
+  if (!pins_taken_) take_pins(state);
+  std::vector<std::pair<int, double>> signature = collect_anchors(state);
+  if (signature != factored_anchors_) {
     factored_anchors_ = std::move(signature);
-    factor(model, state.step + 1);
+    factor();
   }
   auto q = map_points<D>(state.q);
   auto v = map_points<D>(state.v);
   p_ = q + h * v;  // y = pⁿ + h vⁿ: the start, and where fixed particles go
-  assemble_constant_rhs(model, state);
+  assemble_constant_rhs(state);
   last_iterations_ = 0;
   for (int iteration = 1; iteration <= settings_.iterations; ++iteration) {
     rhs_ = constant_rhs_;
@@ -33,42 +60,17 @@ void LocalGlobal<D>::advance(const SceneModel& model, State& state) {
     last_iterations_ = iteration;
     if (settings_.tolerance > 0.0 && last_change_ <= settings_.tolerance) break;
   }
-  for (int p : free_) {
+  for (int p : free_.particles()) {
     v.row(p) = (p_.row(p) - q.row(p)) / h;
     q.row(p) = p_.row(p);
   }
-  for (int p = 0; p < model.num_particles(); ++p) {
-    if (free_index_[p] < 0) q.row(p) = p_.row(p);  // eliminated: moves with its own velocity
+  for (int p = 0; p < model().num_particles(); ++p) {
+    if (free_.of_particle(p) < 0) q.row(p) = p_.row(p);  // eliminated: moves with its own velocity
   }
 }
 
 template <int D>
-std::vector<SpringTerm> LocalGlobal<D>::classify_forces(const SceneModel& model) {
-  std::vector<SpringTerm> springs;
-  std::vector<AnchorTerm> ignored;
-  for (const auto& force : model.forces) {
-    if (force->append_springs(springs)) continue;
-    if (force->append_anchors(ignored)) {
-      anchor_forces_.push_back(force.get());
-    } else {
-      explicit_forces_.push_back(force.get());
-    }
-  }
-  return springs;
-}
-
-template <int D>
-void LocalGlobal<D>::choose_free_particles(const SceneModel& model, const State& state,
-                                           const std::vector<SpringTerm>& springs) {
-  const int n = model.num_particles();
-  const bool eliminate = settings_.pins == PinMethod::kElimination;
-  free_index_.assign(n, -1);
-  for (int p = 0; p < n; ++p) {
-    if (eliminate && model.fixed[p]) continue;
-    free_index_[p] = static_cast<int>(free_.size());
-    free_.push_back(p);
-    if (model.fixed[p]) pinned_.push_back(p);
-  }
+void LocalGlobal<D>::take_pins(const State& state) {
   const auto q = map_points<D>(state.q);
   const auto v = map_points<D>(state.v);
   pin_position_.resize(static_cast<Eigen::Index>(pinned_.size()), D);
@@ -78,20 +80,17 @@ void LocalGlobal<D>::choose_free_particles(const SceneModel& model, const State&
     pin_velocity_.row(k) = v.row(pinned_[k]);
   }
   pin_step_ = state.step;
-  for (const SpringTerm& s : springs) {
-    const int fi = free_index_[s.i];
-    const int fj = free_index_[s.j];
-    if (fi < 0 && fj < 0) continue;  // both ends eliminated: no effect on the unknowns
-    springs_.push_back({s.i, s.j, fi, fj, s.k, s.l0, s.b});
-  }
-  d_ = Points<D>::Zero(static_cast<Eigen::Index>(springs_.size()), D);
+  pins_taken_ = true;
 }
 
 template <int D>
-std::vector<std::pair<int, double>> LocalGlobal<D>::collect_anchors(const SceneModel& model,
-                                                                    const State& state, double h) {
+std::vector<std::pair<int, double>> LocalGlobal<D>::collect_anchors(const State& state) {
+  const SceneModel& model = this->model();
+  const double h = model.integrator.dt;
   anchors_.clear();
-  for (const Force* force : anchor_forces_) force->append_anchors(anchors_);
+  for (const DragSpringForce* drag : split_.anchors) {
+    if (drag->active()) anchors_.push_back({drag->particle(), drag->stiffness(), drag->target()});
+  }
   std::erase_if(anchors_, [&](const AnchorTerm& a) { return model.fixed[a.i]; });
   const double elapsed = static_cast<double>(state.step + 1 - pin_step_) * h;
   for (std::size_t k = 0; k < pinned_.size(); ++k) {
@@ -105,26 +104,11 @@ std::vector<std::pair<int, double>> LocalGlobal<D>::collect_anchors(const SceneM
 }
 
 template <int D>
-void LocalGlobal<D>::factor(const SceneModel& model, std::int64_t step) {
-  const int n = static_cast<int>(free_.size());
+void LocalGlobal<D>::factor() {
+  const int n = free_.num_particles();
   if (n == 0) return;
-  const double h2 = h_ * h_;
-  std::vector<Triplet> triplets;
-  triplets.reserve(n + 4 * springs_.size() + anchors_.size());
-  for (int f = 0; f < n; ++f) triplets.emplace_back(f, f, model.mass[D * free_[f]] / h2);
-  for (const Spring& s : springs_) {
-    const double w = s.k + s.b / h_;
-    if (s.fi >= 0) triplets.emplace_back(s.fi, s.fi, w);
-    if (s.fj >= 0) triplets.emplace_back(s.fj, s.fj, w);
-    if (s.fi >= 0 && s.fj >= 0) {
-      triplets.emplace_back(s.fi, s.fj, -w);
-      triplets.emplace_back(s.fj, s.fi, -w);
-    }
-  }
-  for (const AnchorTerm& a : anchors_)
-    triplets.emplace_back(free_index_[a.i], free_index_[a.i], a.k);
-  SparseMatrix Q(n, n);
-  Q.setFromTriplets(triplets.begin(), triplets.end());
+  const SparseMatrix Q = assemble_local_global_matrix(model().mass, free_, split_.springs, anchors_,
+                                                      model().integrator.dt);
   bool ok = false;
   if (factorizations_ > 0) {
     ok = solver_.refactor(Q);
@@ -135,25 +119,26 @@ void LocalGlobal<D>::factor(const SceneModel& model, std::int64_t step) {
     ok = solver_.factor(Q, dense ? SpdSolver::Method::kDense : SpdSolver::Method::kSparse);
   }
   if (!ok) {
-    throw StepError(step,
-                    "local/global: the system matrix M/h² + AᵀKA is not positive definite "
-                    "(a negative stiffness or mass?)");
+    throw Error(ErrorKind::kStepFailed,
+                "local/global: the system matrix M/h² + AᵀKA is not positive definite "
+                "(a negative stiffness or mass?)");
   }
   ++factorizations_;
 }
 
 template <int D>
-void LocalGlobal<D>::assemble_constant_rhs(const SceneModel& model, const State& state) {
-  const double h = h_;
+void LocalGlobal<D>::assemble_constant_rhs(const State& state) {
+  const SceneModel& model = this->model();
+  const double h = model.integrator.dt;
   const auto q = map_points<D>(state.q);
   explicit_gradient_.setZero(state.q.size());
   const ForceInput in{state.q, state.v, model.mass};
-  for (const Force* force : explicit_forces_) force->add_gradient(in, explicit_gradient_);
+  for (const Force* force : split_.others) force->add_gradient(in, explicit_gradient_);
   const auto gradient = map_points<D>(static_cast<const Vector&>(explicit_gradient_));
-  const int n = static_cast<int>(free_.size());
+  const int n = free_.num_particles();
   constant_rhs_.resize(n, D);
   for (int f = 0; f < n; ++f) {
-    const int p = free_[f];
+    const int p = free_.particles()[f];
     constant_rhs_.row(f) = (model.mass[D * p] / (h * h)) * p_.row(p);
     if (!model.fixed[p]) constant_rhs_.row(f) -= gradient.row(p);
   }
@@ -168,7 +153,7 @@ void LocalGlobal<D>::assemble_constant_rhs(const SceneModel& model, const State&
     if (s.fi < 0) constant_rhs_.row(s.fj) += w * p_.row(s.i);
   }
   for (const AnchorTerm& a : anchors_) {
-    constant_rhs_.row(free_index_[a.i]) += a.k * a.target.head<D>().transpose();
+    constant_rhs_.row(free_.of_particle(a.i)) += a.k * a.target.head<D>().transpose();
   }
 }
 
@@ -187,11 +172,11 @@ void LocalGlobal<D>::add_spring_directions(Points<D>& rhs) {
 
 template <int D>
 double LocalGlobal<D>::global_solve(Points<D>& rhs) {
-  if (free_.empty()) return 0.0;
+  if (free_.num_particles() == 0) return 0.0;
   solver_.solve_in_place<D>(rhs);
   double change = 0.0;
-  for (std::size_t f = 0; f < free_.size(); ++f) {
-    const int p = free_[f];
+  for (int f = 0; f < free_.num_particles(); ++f) {
+    const int p = free_.particles()[f];
     change = std::max(change, (rhs.row(f) - p_.row(p)).cwiseAbs().maxCoeff());
     p_.row(p) = rhs.row(f);
   }
@@ -200,5 +185,58 @@ double LocalGlobal<D>::global_solve(Points<D>& rhs) {
 
 template class LocalGlobal<2>;
 template class LocalGlobal<3>;
+
+namespace {
+constexpr std::array<std::string_view, 1> kAliases = {"fast-mass-springs"};
+constexpr std::array<std::string_view, 2> kPins = {"elimination", "penalty"};
+constexpr std::array<std::string_view, 3> kSolvers = {"auto", "dense", "sparse"};
+constexpr LocalGlobalSettings kDefaults;
+constexpr std::array kOptions = {
+    OptionSpec::integer("iterations", kDefaults.iterations, 1, 1000000,
+                        "local/global iterations per step (at most, with a tolerance)"),
+    OptionSpec::number("tolerance", kDefaults.tolerance, 0.0, /*excluded=*/false,
+                       "stop iterating once no coordinate moves more than this (m); 0: never"),
+    OptionSpec::choice("pins", kPins,
+                       "fixed particles: removed from the system (exact), or held by penalty "
+                       "springs as in Liu et al. 2013"),
+    OptionSpec::number("penalty", kDefaults.penalty_weight, 0.0, /*excluded=*/true,
+                       "stiffness w of penalty pins (N/m)"),
+    OptionSpec::choice("solver", kSolvers,
+                       "factorization of the constant matrix: dense up to 64 free particles "
+                       "(auto), dense, or sparse"),
+};
+
+std::unique_ptr<Integrator> make_local_global(const OptionValues& options, int dim) {
+  const LocalGlobalSettings settings = local_global_settings(options);
+  if (dim == 3) return std::make_unique<LocalGlobal<3>>(settings);
+  return std::make_unique<LocalGlobal<2>>(settings);
+}
+}  // namespace
+
+LocalGlobalSettings local_global_settings(const OptionValues& options) {
+  LocalGlobalSettings settings;
+  settings.iterations = options.integer("iterations");
+  settings.tolerance = options.number("tolerance");
+  settings.pins =
+      options.choice("pins") == "penalty" ? PinMethod::kPenalty : PinMethod::kElimination;
+  settings.penalty_weight = options.number("penalty");
+  const std::string_view solver = options.choice("solver");
+  settings.solver = solver == "dense"    ? LinearSolverChoice::kDense
+                    : solver == "sparse" ? LinearSolverChoice::kSparse
+                                         : LinearSolverChoice::kAuto;
+  return settings;
+}
+
+constinit const IntegratorMethod kLocalGlobalMethod{
+    .name = "local-global",
+    .aliases = kAliases,
+    .summary = "implicit Euler for springs by local/global iterations (Liu et al. 2013)",
+    .options = kOptions,
+    .properties = {.order = 1,
+                   .implicit = true,
+                   .velocity_from_positions = true,
+                   .energy = EnergyTrend::kDecays},
+    .create = &make_local_global,
+};
 
 }  // namespace fosssim

@@ -1,12 +1,40 @@
 #pragma once
 
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/integrators/integrator.h"
 #include "core/solvers/spd_solver.h"
 #include "core/spring_terms.h"
+#include "core/systems/free_dofs.h"
+#include "core/systems/local_global_system.h"
 
 namespace fosssim {
+
+/// How the local/global solver keeps fixed particles in place.
+enum class PinMethod {
+  kElimination,  ///< remove their rows and columns from the system: exact
+  kPenalty,      ///< a stiff spring w·CᵀC to their anchor, as in Liu et al. 2013
+};
+
+/// Which factorization the local/global solver uses for its constant matrix.
+enum class LinearSolverChoice {
+  kAuto,    ///< dense below LocalGlobalSettings::kDenseLimit free particles, sparse above
+  kDense,   ///< dense Cholesky (Eigen::LLT), for tiny systems
+  kSparse,  ///< sparse Cholesky (Eigen::SimplicialLLT), factored once and reused
+};
+
+/// Settings of the local/global solver (options of the "local-global" registry entry).
+struct LocalGlobalSettings {
+  /// kAuto solves systems of at most this many free particles densely.
+  static constexpr int kDenseLimit = 64;
+  int iterations = 10;     ///< local/global iterations per step (the most, with a tolerance)
+  double tolerance = 0.0;  ///< stop once no coordinate moved more than this (m); 0: never
+  PinMethod pins = PinMethod::kElimination;
+  double penalty_weight = 1e10;  ///< w of the penalty pins, N/m
+  LinearSolverChoice solver = LinearSolverChoice::kAuto;
+};
 
 /// Implicit Euler for mass-spring systems by the local/global solver of Liu, Bargteil, O'Brien
 /// and Kavan, "Fast Simulation of Mass-Spring Systems", ACM TOG 32(6), 2013.
@@ -16,20 +44,21 @@ namespace fosssim {
 /// with y = pⁿ + h vⁿ (= 2pⁿ - pⁿ⁻¹ when vⁿ = (pⁿ - pⁿ⁻¹)/h, so no history is kept). Writing
 /// each spring's energy as min over |d_s| = l_s of ½ k_s |p_i - p_j - d_s|², the solver
 /// alternates a local step, d_s = l_s (p_i - p_j)/|p_i - p_j| for every spring, and a global
-/// step, the linear solve  Q p = M y/h² + Aᵀ K d + f_ext  with the constant n×n matrix
-///   Q = M/h² + Aᵀ K A  (A: signed spring-particle incidence, K = diag(k_s)).
-/// Q is shared by the x, y and z columns, factored once per scene and time step (dense LLT for
-/// tiny systems, sparse Cholesky otherwise) and every iteration is one sweep down and up its
-/// factor for all columns. Then vⁿ⁺¹ = (pⁿ⁺¹ - pⁿ)/h. With enough iterations the result is
-/// implicit Euler's (the Newton solution of ImplicitEuler) for undamped springs.
+/// step, the linear solve  Q p = M y/h² + Aᵀ K d + f_ext  with the constant matrix Q of
+/// assemble_local_global_matrix (core/systems/local_global_system.h). Q is shared by the x, y
+/// and z columns and factored in precompute (dense LLT for tiny systems, sparse Cholesky
+/// otherwise); every iteration is one sweep down and up its factor for all columns. Then
+/// vⁿ⁺¹ = (pⁿ⁺¹ - pⁿ)/h. With enough iterations the result is implicit Euler's (the Newton
+/// solution of ImplicitEuler) for undamped springs.
 ///
-/// What else the solver takes implicitly, all of it keeping Q constant:
+/// What else the solver takes implicitly, all of it keeping Q constant (sort_mass_spring_forces
+/// says which forces are which):
 /// - spring damping b_s as Laplacian damping (Li, Liu and Kavan, "Laplacian Damping for
 ///   Projective Dynamics", VRIPHYS 2018): the force -b_s (v_i - v_j) acts along every
 ///   direction, not only along the spring as in SpringForce; Q gains Aᵀ diag(b_s/h) A;
-/// - anchors (AnchorTerm: zero-rest-length springs to points, such as DragSpringForce), which
-///   add k to Q's diagonal; Q is refactored (numerically only) when the set of anchored
-///   particles or their stiffnesses change, and a moving target only changes the right side;
+/// - anchors (DragSpringForce: a zero-rest-length spring to a point), which add k to Q's
+///   diagonal; Q is refactored (numerically only) when the set of anchored particles or their
+///   stiffnesses change, and a moving target only changes the right side;
 /// - fixed particles, either eliminated (their rows and columns removed from Q; they move
 ///   with their own velocity, exactly) or held by penalty springs of stiffness w to their
 ///   anchors (Liu et al.'s w·CᵀC): the positions they have at this integrator's first step,
@@ -40,19 +69,20 @@ namespace fosssim {
 template <int D>
 class LocalGlobal final : public Integrator {
  public:
-  explicit LocalGlobal(const SceneModel& model) : settings_(model.integrator.local_global) {}
+  explicit LocalGlobal(const LocalGlobalSettings& settings) : settings_(settings) {}
 
   /// Local/global iterations taken by the last step.
   int last_iterations() const { return last_iterations_; }
   /// The largest coordinate change of the last iteration of the last step (m).
   double last_change() const { return last_change_; }
-  /// How many times Q has been factored (once per scene and time step, plus anchor changes).
+  /// How many times Q has been factored (once in precompute, plus anchor changes).
   int factorizations() const { return factorizations_; }
-  /// The factorization in use (after the first step).
+  /// The factorization in use.
   SpdSolver::Method solver_method() const { return solver_.method(); }
 
  protected:
-  void advance(const SceneModel& model, State& state) override;
+  void prepare() override;
+  void advance(State& state) override;
 
  private:
   /// A spring with the solver's indices: fi, fj are its ends among the free particles (-1 for
@@ -62,32 +92,26 @@ class LocalGlobal final : public Integrator {
     double k, l0, b;
   };
 
-  /// Sorts the forces into anchor and explicit ones; returns the springs (solved implicitly).
-  std::vector<SpringTerm> classify_forces(const SceneModel& model);
-  void choose_free_particles(const SceneModel& model, const State& state,
-                             const std::vector<SpringTerm>& springs);
+  /// Remembers where penalty-pinned particles are at the first step, and how they move.
+  void take_pins(const State& state);
   /// Gathers this step's anchors; returns their (particle, stiffness) pairs, which Q depends on.
-  std::vector<std::pair<int, double>> collect_anchors(const SceneModel& model, const State& state,
-                                                      double h);
-  /// Assembles and factors Q over the free particles for anchors_ and h_.
-  void factor(const SceneModel& model, std::int64_t step);
-  void assemble_constant_rhs(const SceneModel& model, const State& state);
+  std::vector<std::pair<int, double>> collect_anchors(const State& state);
+  /// Assembles and factors Q for anchors_.
+  void factor();
+  void assemble_constant_rhs(const State& state);
   void add_spring_directions(Points<D>& rhs);
   double global_solve(Points<D>& rhs);
 
   LocalGlobalSettings settings_;
-  bool prepared_ = false;
-  double h_ = 0.0;                             // the time step Q was factored for
-  std::vector<const Force*> anchor_forces_;    // asked for anchors every step
-  std::vector<const Force*> explicit_forces_;  // evaluated at (pⁿ, vⁿ)
+  MassSpringForces split_;
+  FreeDofs free_;
   std::vector<Spring> springs_;
-  std::vector<int> free_;        // free particle -> particle
-  std::vector<int> free_index_;  // particle -> free particle, or -1
   // Penalty pins: anchors taken at the first step.
   std::vector<int> pinned_;
+  bool pins_taken_ = false;
   Points<D> pin_position_, pin_velocity_;
   std::int64_t pin_step_ = 0;
-  std::vector<AnchorTerm> anchors_;  // this step's anchors (free particles only)
+  std::vector<AnchorTerm> anchors_;                       // this step's anchors (free particles)
   std::vector<std::pair<int, double>> factored_anchors_;  // (particle, k) in Q
   SpdSolver solver_;
   Points<D> p_;             // the current iterate, every particle
@@ -99,5 +123,12 @@ class LocalGlobal final : public Integrator {
   double last_change_ = 0.0;
   int factorizations_ = 0;
 };
+
+/// Registry entry: "local-global", also "fast-mass-springs". Options: iterations, tolerance,
+/// pins, penalty, solver.
+extern const IntegratorMethod kLocalGlobalMethod;
+
+/// The settings the options of kLocalGlobalMethod hold.
+LocalGlobalSettings local_global_settings(const OptionValues& options);
 
 }  // namespace fosssim

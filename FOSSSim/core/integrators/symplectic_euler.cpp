@@ -1,15 +1,33 @@
 #include "core/integrators/symplectic_euler.h"
 
+#include <array>
+#include <string_view>
+
 #include "core/force_evaluation.h"
 
 namespace fosssim {
 
-void SymplecticEuler::advance(const SceneModel& model, State& state) {
-  const double h = model.integrator.dt;
-  Vector force = compute_force(model, state.q, state.v);
-  zero_fixed(model, force);
-  state.v += h * force.cwiseQuotient(model.mass);
+void SymplecticEuler::advance(State& state) {
+  const double h = model().integrator.dt;
+  Vector force = compute_force(forces(), state.q, state.v);
+  zero_fixed(model(), force);
+  state.v += h * force.cwiseQuotient(model().mass);
   state.q += h * state.v;
 }
+
+namespace {
+constexpr std::array<std::string_view, 2> kAliases = {"forward-backward-euler",
+                                                      "semi-implicit-euler"};
+}  // namespace
+
+constinit const IntegratorMethod kSymplecticEulerMethod{
+    .name = "symplectic-euler",
+    .aliases = kAliases,
+    .summary = "symplectic (forward-backward) Euler: velocity first, then position",
+    .properties = {.order = 1, .course_reference = true, .energy = EnergyTrend::kBounded},
+    .create = [](const OptionValues&, int) -> std::unique_ptr<Integrator> {
+      return std::make_unique<SymplecticEuler>();
+    },
+};
 
 }  // namespace fosssim

@@ -63,7 +63,7 @@ class FaultySpring final : public Force {
       if (fault_ == Fault::kHessianXNegated) value = -value;
       if (fault_ == Fault::kHessianXTransposed) std::swap(row, col);
       if (fault_ == Fault::kHessianXNaN && row == 0 && col == 0) value = std::nan("");
-      hessian.triplets().emplace_back(row, col, hessian.scale() * value);
+      hessian.add_entry(row, col, value);
     }
   }
   void add_hessian_v(const ForceInput& in, HessianBuilder& hessian) const override {
@@ -72,7 +72,7 @@ class FaultySpring final : public Force {
     spring_.add_hessian_v(in, own);
     const double factor = fault_ == Fault::kHessianVScaled ? 1.0 + 1e-4 : 1.0;
     for (const Triplet& t : own.triplets()) {
-      hessian.triplets().emplace_back(t.row(), t.col(), hessian.scale() * factor * t.value());
+      hessian.add_entry(t.row(), t.col(), factor * t.value());
     }
   }
   bool is_conservative() const override { return false; }

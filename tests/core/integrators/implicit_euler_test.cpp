@@ -1,11 +1,11 @@
-// Tests of ImplicitEuler (backward Euler by Newton's method, SPEC 4) in 2D and 3D.
+// Tests of ImplicitEuler (backward Euler by Newton's method, docs/integrators.md) in 2D and 3D.
 //
 // Math checked:
 // - a particle under gravity: the step is exact after one Newton iteration, δv = h g, and the
 //   second iteration's correction is zero, so it stops after 2; qⁿ⁺¹ = qⁿ + h vⁿ + h² g;
 // - a damped nonlinear spring (k, l0, b) from a moving fixed particle (a, u) to a free one
 //   (x, w), plus drag c: the result satisfies the backward Euler equations
-//   m (v' - w) = h F(q', v'), q' = q + h v' (F written out from SPEC 3.2 in the test) to
+//   m (v' - w) = h F(q', v'), q' = q + h v' (F written out from docs/forces.md in the test) to
 //   round-off, and the fixed particle moves to a + h u with velocity u;
 // - linear systems (zero-rest-length spring + drag): the closed forms of test_support.h to
 //   1e-14, in 2 Newton iterations (the first is exact, the second confirms);
@@ -29,7 +29,7 @@
 #include "core/forces/simple_gravity_force.h"
 #include "core/forces/spring_force.h"
 #include "core/forces/vortex_force.h"
-#include "core/simulation.h"
+#include "core/step/simulation.h"
 #include "core/step_error.h"
 #include "test_support.h"
 
@@ -38,13 +38,22 @@ namespace {
 
 FOSSSIM_TEST_SUITE_IN_2D_AND_3D(ImplicitEulerTest);
 
-constexpr IntegratorKind kKind = IntegratorKind::kImplicitEuler;
+constexpr std::string_view kKind = "implicit-euler";
+
+/// The model's implicit Euler (its registry entry and options), bound to it.
+std::unique_ptr<ImplicitEuler> implicit_euler(const SceneModel& model) {
+  std::unique_ptr<Integrator> integrator = make_integrator(model);
+  auto* implicit = dynamic_cast<ImplicitEuler*>(integrator.get());
+  EXPECT_NE(implicit, nullptr);
+  integrator.release();
+  return std::unique_ptr<ImplicitEuler>(implicit);
+}
 
 /// One step with a fresh ImplicitEuler; returns the state and the Newton iterations taken.
 std::pair<State, int> step_once(const SceneModel& model, State state) {
-  ImplicitEuler integrator(model);
-  integrator.step(model, state);
-  return {state, integrator.last_iterations()};
+  const auto integrator = implicit_euler(model);
+  integrator->step(state);
+  return {state, integrator->last_iterations()};
 }
 
 TYPED_TEST(ImplicitEulerTest, ParticleUnderGravity) {
@@ -112,25 +121,25 @@ TestScene stiff_chain(double k, double h, int links) {
   return scene;
 }
 
-// Plain Newton (the course's, SPEC 4) on stiff springs: quadratic convergence sets in after a
-// pre-asymptotic phase whose length grows with h²k/m. Measured on this chain (40 steps):
-// h = 0.1 (h²k/m = 1e4..1e6): at most 11..21 iterations, 6.8..8.1 on average; h = 0.01: at
-// most 4..6. The bounds below (30 and 9 at most, 10 on average) leave room above the worst
-// measured step and stay far below the cap of 200. (Plain Newton is not globally convergent; see
-// the ImplicitEulerFallback tests for a chain where it wanders and the line search takes over.)
+// Plain Newton (the course's, docs/integrators.md) on stiff springs: quadratic convergence sets in
+// after a pre-asymptotic phase whose length grows with h²k/m. Measured on this chain (40 steps): h
+// = 0.1 (h²k/m = 1e4..1e6): at most 11..21 iterations, 6.8..8.1 on average; h = 0.01: at most 4..6.
+// The bounds below (30 and 9 at most, 10 on average) leave room above the worst measured step and
+// stay far below the cap of 200. (Plain Newton is not globally convergent; see the
+// ImplicitEulerFallback tests for a chain where it wanders and the line search takes over.)
 TYPED_TEST(ImplicitEulerTest, NewtonConvergesOnStiffSpringsWithLargeSteps) {
   constexpr int D = TypeParam::value;
   for (double h : {0.1, 0.01}) {
     for (double k : {1e6, 1e7, 1e8}) {
       TestScene scene = stiff_chain<D>(k, h, 6);
-      ImplicitEuler integrator(scene.model);
+      const auto integrator = implicit_euler(scene.model);
       int most = 0, total = 0;
       const int steps = 40;
       for (int s = 0; s < steps; ++s) {
-        ASSERT_NO_THROW(integrator.step(scene.model, scene.state)) << "k = " << k << ", h = " << h;
+        ASSERT_NO_THROW(integrator->step(scene.state)) << "k = " << k << ", h = " << h;
         ASSERT_TRUE(scene.state.q.allFinite() && scene.state.v.allFinite());
-        most = std::max(most, integrator.last_iterations());
-        total += integrator.last_iterations();
+        most = std::max(most, integrator->last_iterations());
+        total += integrator->last_iterations();
       }
       std::printf(
           "implicit Euler, %dD chain, k = %.0e, h = %g: Newton iterations at most %d, "
@@ -154,7 +163,7 @@ SceneModel wandering_newton_chain(State& state, bool conservative) {
   model.mass = Vector::Ones(D * n);
   model.fixed.assign(n, false);
   model.fixed[0] = true;
-  model.integrator.kind = kKind;
+  model.integrator.use(integrator_method(kKind));
   model.integrator.dt = 0.1;
   state.q = Vector::Zero(D * n);
   state.v = Vector::Zero(D * n);
@@ -176,22 +185,22 @@ SceneModel wandering_newton_chain(State& state, bool conservative) {
 TEST(ImplicitEulerFallback, LineSearchOnTheIncrementalPotentialSolvesWherePlainNewtonWanders) {
   State state;
   const SceneModel model = wandering_newton_chain(state, /*conservative=*/true);
-  ImplicitEuler integrator(model);
+  const auto integrator = implicit_euler(model);
   const double h = model.integrator.dt;
   for (int step = 1; step <= 5; ++step) {
     const State start = state;
-    ASSERT_NO_THROW(integrator.step(model, state)) << "step " << step;
+    ASSERT_NO_THROW(integrator->step(state)) << "step " << step;
     // Whichever way it was solved, the step satisfies backward Euler:
     // m (v' - v) = h F(q', v') on free particles, with q' = q + h v'.
     EXPECT_EQ(state.q, start.q + h * state.v);
-    const Vector force = compute_force(model, state.q, state.v);
+    const Vector force = compute_force(ForceSet(model), state.q, state.v);
     Vector imbalance = model.mass.cwiseProduct(state.v - start.v) - h * force;
     zero_fixed(model, imbalance);
     EXPECT_LT(imbalance.norm(), 1e-8 * h * force.norm()) << "step " << step;
   }
-  EXPECT_EQ(integrator.line_search_steps(), 1);
-  ASSERT_EQ(integrator.notes().size(), 1u);
-  EXPECT_EQ(integrator.notes()[0],
+  EXPECT_EQ(integrator->line_search_steps(), 1);
+  ASSERT_EQ(integrator->notes().size(), 1u);
+  EXPECT_EQ(integrator->notes()[0],
             "implicit Euler: plain Newton did not converge on 1 step(s); they were solved with a "
             "line search and may differ from the course's reference, which has no line search");
 }
@@ -199,10 +208,10 @@ TEST(ImplicitEulerFallback, LineSearchOnTheIncrementalPotentialSolvesWherePlainN
 TEST(ImplicitEulerFallback, WhenEverythingFailsTheErrorSaysWhatWasTried) {
   State state;
   const SceneModel model = wandering_newton_chain(state, /*conservative=*/false);
-  ImplicitEuler integrator(model);
-  for (int step = 1; step <= 3; ++step) integrator.step(model, state);
+  const auto integrator = implicit_euler(model);
+  for (int step = 1; step <= 3; ++step) integrator->step(state);
   try {
-    integrator.step(model, state);
+    integrator->step(state);
     FAIL() << "expected StepError: the residual line search stalls on this step";
   } catch (const StepError& error) {
     EXPECT_EQ(error.step(), 4);
@@ -220,22 +229,22 @@ TEST(ImplicitEulerFallback, WhenEverythingFailsTheErrorSaysWhatWasTried) {
 TYPED_TEST(ImplicitEulerTest, PlainNewtonStepsReportNoFallback) {
   constexpr int D = TypeParam::value;
   TestScene scene = stiff_chain<D>(1e6, 0.01, 6);
-  ImplicitEuler integrator(scene.model);
-  for (int s = 0; s < 20; ++s) integrator.step(scene.model, scene.state);
-  EXPECT_EQ(integrator.line_search_steps(), 0);
-  EXPECT_TRUE(integrator.notes().empty());
+  const auto integrator = implicit_euler(scene.model);
+  for (int s = 0; s < 20; ++s) integrator->step(scene.state);
+  EXPECT_EQ(integrator->line_search_steps(), 0);
+  EXPECT_TRUE(integrator->notes().empty());
 }
 
 TYPED_TEST(ImplicitEulerTest, ImpossibleSettingsRaiseStepErrorNamingTheStep) {
   constexpr int D = TypeParam::value;
   TestScene scene = stiff_chain<D>(1e3, 0.01, 3);
-  ImplicitEuler integrator(scene.model);
-  integrator.step(scene.model, scene.state);
-  integrator.step(scene.model, scene.state);
-  scene.model.integrator.newton.max_iterations = 1;
-  scene.model.integrator.newton.tolerance = 1e-30;
+  const auto integrator = implicit_euler(scene.model);
+  integrator->step(scene.state);
+  integrator->step(scene.state);
+  ImplicitEuler impossible(NewtonSettings{1e-30, 1});
+  impossible.precompute(scene.model);
   try {
-    integrator.step(scene.model, scene.state);
+    impossible.step(scene.state);
     FAIL() << "expected StepError";
   } catch (const StepError& error) {
     EXPECT_EQ(error.step(), 3);
@@ -246,7 +255,8 @@ TYPED_TEST(ImplicitEulerTest, ImpossibleSettingsRaiseStepErrorNamingTheStep) {
 
   // Through Simulation, from the start: the first step fails and is named.
   TestScene fresh = stiff_chain<D>(1e3, 0.01, 3);
-  fresh.model.integrator.newton = {1e-30, 1};
+  fresh.model.integrator.options.set("newton-tolerance", 1e-30);
+  fresh.model.integrator.options.set("newton-max-iterations", 1);
   Simulation simulation(fresh.model, fresh.state);
   try {
     simulation.step();

@@ -1,4 +1,5 @@
-// Hand-computed single steps of LinearizedImplicitEuler (SPEC 4) in 2D and 3D.
+// Hand-computed single steps of LinearizedImplicitEuler (docs/integrators.md, 'Linearized implicit
+// Euler') in 2D and 3D.
 //
 // Math checked. The step evaluates at the predicted state q* = qⁿ + h vⁿ, solves
 // (M + h² hessX + h hessV) δv = h F(q*, vⁿ) with fixed particles eliminated, and sets
@@ -11,7 +12,7 @@
 //   δv = (rhs·n) n / (m + h c + h² k) + (rhs - (rhs·n) n) / (m + h c + h² k (l - l0)/l).
 // - The same with internal damping b > 0: the free block
 //   (m + h c) I + h² (k [P + ((l-l0)/l)(I - P)] + (b/l)[n dvᵀ + (n·dv) I](I - P)) + h b P
-//   written out from SPEC 3.2 and solved densely in the test (the non-symmetric, LU path).
+//   written out from docs/forces.md and solved densely in the test (the non-symmetric, LU path).
 // - Linear systems (zero-rest-length spring + drag), where the method is backward Euler and
 //   the step has the closed forms of test_support.h: to 1e-14, with a moving fixed particle and
 //   with two free particles.
@@ -29,7 +30,7 @@ namespace {
 
 FOSSSIM_TEST_SUITE_IN_2D_AND_3D(LinearizedImplicitEulerTest);
 
-constexpr IntegratorKind kKind = IntegratorKind::kLinearizedImplicitEuler;
+constexpr std::string_view kKind = "linearized-implicit-euler";
 
 TYPED_TEST(LinearizedImplicitEulerTest, ParticleUnderGravity) {
   constexpr int D = TypeParam::value;

@@ -1,4 +1,5 @@
-// Hand-computed single steps of SymplecticEuler (SPEC 4, compat order) in 2D and 3D.
+// Hand-computed single steps of SymplecticEuler (docs/integrators.md, 'Symplectic Euler') in 2D and
+// 3D.
 //
 // Math checked, with h the time step and F./m the acceleration:
 // - a particle under gravity g: vⁿ⁺¹ = vⁿ + h g, then qⁿ⁺¹ = qⁿ + h vⁿ⁺¹ (the NEW velocity),
@@ -7,7 +8,7 @@
 //   particle at x with velocity w, plus drag c: the fixed particle gets no force and moves
 //   straight on, a + h u, with velocity u; the free one gets
 //   vⁿ⁺¹ = w + (h/m)(F_spring(a, x, u, w) - c w) with F from the OLD state, written out from
-//   SPEC 3.2 in the test, and qⁿ⁺¹ = x + h vⁿ⁺¹;
+//   docs/forces.md in the test, and qⁿ⁺¹ = x + h vⁿ⁺¹;
 // - step and time bookkeeping: step = 1, time = h after one step.
 
 #include "core/integrators/symplectic_euler.h"
@@ -25,7 +26,7 @@ TYPED_TEST(SymplecticEulerTest, ParticleUnderGravityMovesWithTheNewVelocity) {
   constexpr int D = TypeParam::value;
   const double h = 0.1;
   const FallingParticle p(D, 111);
-  const TestScene scene = p.scene(IntegratorKind::kSymplecticEuler, h);
+  const TestScene scene = p.scene("symplectic-euler", h);
   const State next = run_steps(scene.model, scene.state, 1);
   expect_close(next.q, p.x + h * p.w + h * h * p.g, 1e-15, "position");
   expect_close(next.v, p.w + h * p.g, 1e-15, "velocity");
@@ -37,7 +38,7 @@ TYPED_TEST(SymplecticEulerTest, SpringFromAMovingFixedParticle) {
   constexpr int D = TypeParam::value;
   const double h = 0.05;
   const AnchoredSpring s(D, 112, 1.5, 40.0, 0.7, 0.9, 0.3);
-  const TestScene scene = s.scene(IntegratorKind::kSymplecticEuler, h);
+  const TestScene scene = s.scene("symplectic-euler", h);
   const State next = run_steps(scene.model, scene.state, 1);
   const Vector force = spring_force_on_j(s.a, s.x, s.u, s.w, s.k, s.l0, s.b) - s.c * s.w;
   const Vector velocity = s.w + (h / s.m) * force;

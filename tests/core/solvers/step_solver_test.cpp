@@ -21,6 +21,7 @@
 #include <Eigen/Dense>
 
 #include "core/force_evaluation.h"
+#include "core/systems/step_matrix.h"
 #include "test_support.h"
 
 namespace fosssim::testing {
@@ -55,8 +56,9 @@ SparseMatrix chain_step_matrix(int n, double l0_factor, double b, double h, unsi
     scene.add_spring(p - 1, p, 100.0, l0_factor * l, b);
   }
   if (gravity) scene.add_gravitation(0, n - 1, 50.0);
-  HessianBuilder scratch;
-  return assemble_step_matrix(scene.model, scene.state.q, scene.state.v, h, scratch);
+  const ForceSet forces(scene.model);
+  StepMatrix matrix(forces, FixedParticleRule::kIdentityRows);
+  return matrix.assemble(scene.state.q, scene.state.v, h);
 }
 
 TEST(StepSolver, SymmetricPositiveDefiniteSystemUsesLDLT) {

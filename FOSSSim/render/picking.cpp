@@ -1,23 +1,8 @@
-#include "core/interaction/picking.h"
+#include "render/picking.h"
 
 #include <limits>
-#include <memory>
 
 namespace fosssim {
-
-DragSpringForce& add_drag_spring(SceneModel& model) {
-  auto force = std::make_unique<DragSpringForce>(model.dim);
-  DragSpringForce& handle = *force;
-  model.forces.push_back(std::move(force));
-  return handle;
-}
-
-DragSpringForce* find_drag_spring(const SceneModel& model) {
-  for (auto it = model.forces.rbegin(); it != model.forces.rend(); ++it) {
-    if (auto* drag = dynamic_cast<DragSpringForce*>(it->get())) return drag;
-  }
-  return nullptr;
-}
 
 std::optional<int> pick_particle(const Vector& q, int dim, const Ray& ray, double radius) {
   const double length = ray.direction.norm();
@@ -50,11 +35,6 @@ std::optional<Eigen::Vector3d> drag_target(const Ray& ray, const Eigen::Vector3d
   const double t = plane_normal.dot(plane_point - ray.origin) / denominator;
   if (t < 0.0) return std::nullopt;
   return Eigen::Vector3d(ray.origin + t * ray.direction);
-}
-
-double suggest_drag_stiffness(const SceneModel& model, int particle) {
-  const double h = model.integrator.dt;
-  return model.mass[model.dim * particle] / (h * h);
 }
 
 }  // namespace fosssim

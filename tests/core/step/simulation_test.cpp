@@ -1,4 +1,5 @@
-// Tests of Simulation (core/simulation.h): the health check after every step, and determinism.
+// Tests of Simulation (core/step/simulation.h): the health check after every step, and
+// determinism.
 //
 // Checked:
 // - explicit Euler on a very stiff spring with a large step (k = 1e8, m = 1, h = 0.1, so the
@@ -8,10 +9,11 @@
 // - check_state_is_finite names the first bad particle and whether its position or its velocity
 //   is bad;
 // - running the same model twice from the same state gives bit-identical states (memcmp of q
-//   and v) with every integrator, on a 3D scene with all six kinds of force and a fixed particle;
+//   and v) with every integrator of the registry, on a 3D scene with all six kinds of force and
+//   a fixed particle;
 // - finished() after model.num_steps() steps.
 
-#include "core/simulation.h"
+#include "core/step/simulation.h"
 
 #include <gtest/gtest.h>
 
@@ -28,7 +30,7 @@ namespace fosssim::testing {
 namespace {
 
 TEST(SimulationHealthCheck, BlowUpIsReportedAtTheStepThatProducesIt) {
-  TestScene scene(2, IntegratorKind::kExplicitEuler, 0.1);
+  TestScene scene(2, "explicit-euler", 0.1);
   scene.add_particle(1.0, vec({0.0, 0.0}), vec({0.0, 0.0}), /*fixed=*/true);
   scene.add_particle(1.0, vec({1.2, 0.1}), vec({0.0, 0.0}));
   scene.add_spring(0, 1, 1e8, 1.0);
@@ -89,7 +91,7 @@ TEST(SimulationHealthCheck, NamesTheFirstBadParticleAndQuantity) {
 }
 
 /// Every kind of force in 3D, with damping, a vortex and a fixed particle.
-TestScene busy_scene(IntegratorKind kind) {
+TestScene busy_scene(std::string_view kind) {
   Random random(161);
   TestScene scene(3, kind, 0.005);
   for (int p = 0; p < 6; ++p) {
@@ -108,10 +110,9 @@ TestScene busy_scene(IntegratorKind kind) {
 }
 
 TEST(SimulationDeterminism, TwoRunsGiveIdenticalBytesWithEveryIntegrator) {
-  for (IntegratorKind kind :
-       {IntegratorKind::kExplicitEuler, IntegratorKind::kSymplecticEuler,
-        IntegratorKind::kLinearizedImplicitEuler, IntegratorKind::kImplicitEuler}) {
-    SCOPED_TRACE(integrator_name(kind));
+  for (const IntegratorMethod* method : all_integrators()) {
+    const std::string_view kind = method->name;
+    SCOPED_TRACE(std::string(kind));
     const TestScene scene = busy_scene(kind);
     ASSERT_EQ(scene.model.num_steps(), 200);
     Simulation first(scene.model, scene.state), second(scene.model, scene.state);

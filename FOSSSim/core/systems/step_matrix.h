@@ -1,0 +1,58 @@
+#pragma once
+// The matrix of an implicit Euler step, A = M + h² hessX + h hessV, with fixed particles.
+
+#include "core/force_set.h"
+#include "core/hessian_builder.h"
+#include "core/systems/free_dofs.h"
+#include "core/types.h"
+
+namespace fosssim {
+
+/// How a step's linear system keeps fixed particles in place (they receive no force and keep
+/// their velocity, docs/integrators.md).
+enum class FixedParticleRule {
+  /// The course's rule (compat): every DOF stays an unknown; a fixed DOF's row and column of A
+  /// are zero, its diagonal is 1 and its right-hand side 0, so its velocity change is exactly 0.
+  kIdentityRows,
+  /// Fixed DOFs are removed: with the selection P of the free DOFs (FreeDofs) the system is
+  /// P A Pᵀ x̂ = P b. Smaller, with the same solution on the free DOFs.
+  kElimination,
+};
+
+/// Assembles A = M + h² hessX(q, v) + h hessV(q, v) over the unknowns of a rule, keeping its
+/// triplet storage between steps so that stepping does not reallocate. The entries are summed
+/// in a fixed order (hessX, then hessV, force by force, then the diagonal), so the same input
+/// gives the same bits.
+class StepMatrix {
+ public:
+  /// forces: what A is assembled from (they and their model must outlive this);
+  /// definite_hessian: ask forces for semi-definite hessX blocks (ForceInput).
+  StepMatrix(const ForceSet& forces, FixedParticleRule rule, bool definite_hessian = false);
+
+  /// Assembles A at (q, v) for the time step h. When `rhs` is given, also subtracts
+  /// h² hessX(q, v) u from it (every DOF, before the fixed-particle rule), entry by entry from
+  /// the same blocks, for a right-hand side that needs hessX times a vector.
+  const SparseMatrix& assemble(const Vector& q, const Vector& v, double h,
+                               const Vector* u = nullptr, Vector* rhs = nullptr);
+  const SparseMatrix& matrix() const { return matrix_; }
+
+  /// A full right-hand side over the unknowns: b with fixed DOFs zeroed (kIdentityRows) or P b.
+  Vector restrict(const Vector& b) const;
+  /// full += the solution x over the unknowns (x itself, or Pᵀ x).
+  void add_solution(const Vector& x, Vector& full) const;
+
+  FixedParticleRule rule() const { return rule_; }
+  /// The number of unknowns: every DOF, or the free ones.
+  int size() const;
+
+ private:
+  const ForceSet* forces_;
+  FixedParticleRule rule_;
+  bool definite_hessian_;
+  FreeDofs free_;
+  bool any_fixed_ = false;
+  HessianBuilder scratch_;
+  SparseMatrix matrix_;
+};
+
+}  // namespace fosssim
