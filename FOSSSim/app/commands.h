@@ -10,16 +10,17 @@ namespace fosssim {
 /// Runs the scene to its end without a window, writing the trajectory if -o was given.
 int run_headless(const Scene& scene, const Options& options);
 
-/// Grades the trajectory of -i against the scene (SPEC section 5).
+/// Grades the trajectory of -i against the scene (docs/command-line.md, 'Grading').
 int run_grading(const Scene& scene, const Options& options);
 
 /// Prints the course's report of a finished grading, writes the residual file, explains a
 /// failure; returns the exit status (0 passed, 1 failed, 4 residual file not written).
 int report_grade(const Scene& scene, const Options& options, const GradeReport& report);
 
-/// Opens the interactive window (SPEC section 6) on the scene: a run, or with -i a step-by-step
-/// grading replay that rings the particles where the file disagrees with the reference. In a
-/// run the mouse pulls particles with a drag spring the window owns (viewer/particle_grab.h).
+/// Opens the interactive window (docs/viewing.md) on the scene: a run, or with -i a
+/// step-by-step grading replay that rings the particles where the file disagrees with the
+/// reference. In a run the mouse pulls particles with a drag spring the window owns
+/// (viewer/particle_grab.h).
 int run_window(const Scene& scene, const Options& options);
 
 /// Finite-difference check of every force at the scene's initial state.

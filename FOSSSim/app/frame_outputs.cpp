@@ -26,7 +26,7 @@ const Image& Frame::image() {
 
 namespace {
 
-/// -o: the trajectory file of SPEC section 5.
+/// -o: the trajectory file (docs/command-line.md, 'Trajectory files').
 class TrajectoryOutput final : public FrameOutput {
  public:
   explicit TrajectoryOutput(TrajectoryWriter writer) : writer_(std::move(writer)) {}

@@ -14,7 +14,7 @@ struct ForceKind {
 };
 
 /// All force kinds. Forces are summed grouped by kind in this order, each group in document
-/// order (SPEC section 1, compat): adding a force is one line here.
+/// order (course-compatible; docs/scene-format.md, 'Forces'): adding a force is one line here.
 std::span<const ForceKind> force_kinds();
 
 /// The kind with this tag, or nullptr.

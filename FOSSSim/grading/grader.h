@@ -1,6 +1,6 @@
 #pragma once
-// Grading by output comparison (SPEC section 5, compat): replays a trajectory file step by step
-// against the scene's own integrator.
+// Grading by output comparison (course-compatible; docs/command-line.md, 'Grading'): replays a
+// trajectory file step by step against the scene's own integrator.
 
 #include <array>
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-// Reads the fast mass-springs assignment's JSON scenes (SPEC section 7).
+// Reads the fast mass-springs assignment's JSON scenes (docs/scenes-3d.md, 'JSON scenes').
 
 #include <string>
 #include <string_view>

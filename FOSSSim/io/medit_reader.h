@@ -10,7 +10,7 @@
 
 namespace fosssim {
 
-/// Reads an ASCII MEDIT file (SPEC section 7: every tet edge is a spring):
+/// Reads an ASCII MEDIT file (docs/scenes-3d.md, 'Mesh files'; every tet edge is a spring):
 ///   MeshVersionFormatted 1
 ///   Dimension 3
 ///   Vertices  N   then N lines "x y z ref"

@@ -10,7 +10,7 @@
 
 namespace fosssim {
 
-/// Reads an OBJ file as a mass-spring mesh (SPEC section 7: springs from face edges).
+/// Reads an OBJ file as a mass-spring mesh (docs/scenes-3d.md, 'Mesh files').
 ///   v x y z [w]        a vertex (w, a homogeneous weight, must be 1 if present);
 ///                      "v x y z r g b" (vertex colours) is accepted and the colour ignored
 ///   f a b c ...        a face of 3 or more corners; "f a b" (2 corners) is one spring

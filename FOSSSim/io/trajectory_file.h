@@ -1,6 +1,6 @@
 #pragma once
-// The classic trajectory file of SPEC section 5: frames of positions then velocities, as
-// little-endian IEEE doubles, no header. Frame 0 is the initial state.
+// The course's trajectory file (docs/command-line.md, 'Trajectory files'): frames of positions
+// then velocities, as little-endian IEEE doubles, no header. Frame 0 is the initial state.
 
 #include <cstdint>
 #include <cstdio>

@@ -1,5 +1,5 @@
 #pragma once
-// The 2D orthographic camera of the window and the pictures (SPEC section 6).
+// The 2D orthographic camera of the window and the pictures (docs/viewing.md, 'Camera').
 
 #include <Eigen/Core>
 #include <array>

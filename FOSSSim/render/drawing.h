@@ -54,7 +54,7 @@ struct Triangle {
 /// One shape of a 3D picture.
 using Shape = std::variant<Triangle, Capsule, Disc, Ring>;
 
-/// One picture, painted in this order (SPEC section 6): background, paths, the 3D shapes,
+/// One picture, painted in this order (docs/viewing.md): background, paths, the 3D shapes,
 /// edges, particles, marks, guides, then the text lines at the top-left corner. 2D pictures
 /// have no shapes; 3D pictures have only shapes, depth-sorted, instead of paths, edges and
 /// particles.

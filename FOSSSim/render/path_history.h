@@ -24,7 +24,7 @@ struct Trail {
 };
 
 /// Records, for every <particlepath>, the last ceil(duration/dt) positions of its particle
-/// (SPEC section 1), one per recorded state.
+/// (docs/scene-format.md), one per recorded state.
 class PathHistory {
  public:
   /// One trail per path of the scene, sized with the scene's current time step.

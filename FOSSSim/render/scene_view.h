@@ -16,7 +16,7 @@ namespace fosssim {
 
 /// Follows a run of `scene` for a viewer (the window, picture and movie outputs): starts with
 /// the scene's initial camera and records the trails as states arrive. 2D scenes are seen
-/// through the 2D camera (SPEC section 6), 3D scenes through an orbit camera
+/// through the 2D camera (camera.h), 3D scenes through an orbit camera
 /// (initial_orbit_camera). The scene must outlive it.
 class SceneView {
  public:

@@ -1,5 +1,5 @@
 #pragma once
-// The ParticleFountain scene tag (SPEC section 6): tagged particles that fall too low come back.
+// The ParticleFountain scene tag (docs/viewing.md): tagged particles that fall too low come back.
 
 #include <cstdint>
 #include <vector>

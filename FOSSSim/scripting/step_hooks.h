@@ -1,5 +1,5 @@
 #pragma once
-// Scene tags that select scripted behaviour (SPEC section 1, `scenetag`).
+// Scene tags that select scripted behaviour (`<scenetag>`, docs/scene-format.md).
 
 #include <memory>
 #include <string>

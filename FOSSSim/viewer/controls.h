@@ -1,5 +1,5 @@
 #pragma once
-// The window's keys and mouse (SPEC section 6), as plain functions the window calls.
+// The window's keys and mouse (docs/viewing.md), as plain functions the window calls.
 
 #include "render/camera.h"
 #include "render/scene_view.h"

@@ -46,7 +46,7 @@ inline constexpr Color kFailColor{1.0, 0.6, 0.0};      ///< above the course's m
 /// A particle whose position or velocity residual exceeds this is ringed in kDisagreeColor.
 inline constexpr double kDisagreeResidual = 1e-9;
 
-/// Replays a trajectory file step by step against the scene (grading mode, SPEC section 5) and
+/// Replays a trajectory file step by step against the scene (grading mode, docs/viewing.md) and
 /// shows the file's frames. Particles whose step residual (position or velocity) exceeds 1e-9
 /// get a red ring; those above the course's maximum (1e-10) but not 1e-9 an orange one.
 class GradingStepper final : public Stepper {

@@ -1,5 +1,5 @@
 #pragma once
-// The interactive GLUT window (SPEC section 6).
+// The interactive GLUT window (docs/viewing.md).
 
 #include <cstdint>
 #include <functional>

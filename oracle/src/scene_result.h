@@ -33,7 +33,7 @@ const char* verdict_id(Verdict verdict);
 /// The verdict of an identifier, if it is one.
 std::optional<Verdict> verdict_from_id(std::string_view id);
 
-/// The course's four residual figures (SPEC section 5).
+/// The course's four residual figures (docs/command-line.md, 'Grading').
 struct Residuals {
   double accumulated_position = 0.0;
   double accumulated_velocity = 0.0;

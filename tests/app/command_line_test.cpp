@@ -1,4 +1,4 @@
-// The FOSSSim executable as the course's grading script and students use it (SPEC section 2):
+// The FOSSSim executable as the course's grading script and students use it (docs/command-line.md):
 // flags, messages, exit statuses and the files it leaves behind.
 
 #include <gtest/gtest.h>

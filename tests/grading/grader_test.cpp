@@ -1,6 +1,6 @@
-// Grading by output comparison (SPEC section 5): a run passes its own grading, a perturbation
-// of one double at one step fails at exactly that step and particle, and the report's lines and
-// residual file match the course's format.
+// Grading by output comparison (docs/command-line.md, 'Grading'): a run passes its own grading,
+// a perturbation of one double at one step fails at exactly that step and particle, and the
+// report's lines and residual file match the course's format.
 
 #include "grading/grader.h"
 

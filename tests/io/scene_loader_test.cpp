@@ -1,5 +1,5 @@
-// Scenes that load: every element and attribute of SPEC section 1, its defaults, the integrator
-// aliases, and the compat force summation order.
+// Scenes that load: every element and attribute of docs/scene-format.md, its defaults, the
+// integrator aliases, and the course-compatible force summation order.
 
 #include "io/scene_loader.h"
 

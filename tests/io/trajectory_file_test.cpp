@@ -1,5 +1,5 @@
-// The classic trajectory file (SPEC section 5): byte layout, round trip, and the guarantee that
-// an unfinished run never leaves a file that looks complete.
+// The course's trajectory file (docs/command-line.md): byte layout, round trip, and the guarantee
+// that an unfinished run never leaves a file that looks complete.
 
 #include "io/trajectory_file.h"
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Summarises a scene's trajectory by numbers: energy at start and end (kinetic plus the
-potentials of SPEC section 3: springs, simple gravity, Newtonian gravity, constant force), the
+potentials of docs/forces.md: springs, simple gravity, Newtonian gravity, constant force), the
 largest spring strain and the closest approach of Newtonian and vortex pairs.
 
 Usage: scene_summary.py SCENE.xml TRAJECTORY.bin

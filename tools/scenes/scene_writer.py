@@ -1,4 +1,4 @@
-"""Builds FOSSSim scene files (the XML format of SPEC section 1) from Python.
+"""Builds FOSSSim scene files (the XML format of docs/scene-format.md) from Python.
 
 A Scene collects particles, edges, forces and appearance, and renders them in a fixed element
 order with numbers printed exactly (shortest round-trip form), so regenerating a file that did

@@ -1,5 +1,6 @@
-"""Reads FOSSSim trajectory files (SPEC section 5): frames of 2N positions then 2N velocities,
-little-endian IEEE doubles, no header; frame 0 is the initial state."""
+"""Reads FOSSSim trajectory files (docs/command-line.md, 'Trajectory files'): frames of 2N
+positions then 2N velocities, little-endian IEEE doubles, no header; frame 0 is the initial
+state."""
 
 import struct
 

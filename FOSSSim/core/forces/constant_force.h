@@ -7,7 +7,7 @@
 
 namespace fosssim {
 
-/// The same force f on every particle, not scaled by mass (SPEC 3.6).
+/// The same force f on every particle, not scaled by mass (docs/forces.md, 'Constant force').
 ///   U = -Σ_p f·x_p,  F_p = f;  both Hessians are zero.
 template <int D>
 class ConstantForce final : public Force {

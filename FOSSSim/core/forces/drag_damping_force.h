@@ -7,7 +7,7 @@
 
 namespace fosssim {
 
-/// Linear drag on every particle (SPEC 3.4).
+/// Linear drag on every particle (docs/forces.md, 'Drag').
 ///   F_p = -b v_p;  hessV = b I;  no energy, no position dependence.
 template <int D>
 class DragDampingForce final : public Force {

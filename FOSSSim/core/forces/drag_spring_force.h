@@ -9,8 +9,8 @@
 namespace fosssim {
 
 /// A stiff zero-rest-length spring that pulls one particle toward a point, for dragging a
-/// particle with the mouse (SPEC section 7: "a picked vertex is dragged by a stiff
-/// zero-rest-length spring toward the mouse"). With p the grabbed particle and t the target:
+/// particle with the mouse, as in the CSC417 assignment (docs/forces.md, 'The mouse's pulling
+/// spring'). With p the grabbed particle and t the target:
 ///   U = ½ k |x_p - t|²,  F_p = -k (x_p - t),  hessX = k I on block (p, p),  hessV = 0.
 /// It adds nothing until grab() and after release(). Unlike other forces it belongs to no scene
 /// model: the window owns it and hands it to the simulation as an interaction force

@@ -7,7 +7,7 @@
 
 namespace fosssim {
 
-/// Newtonian attraction between particles i and j (SPEC 3.3).
+/// Newtonian attraction between particles i and j (docs/forces.md, 'Newtonian gravity').
 ///
 /// With d = x_j - x_i, l = |d|, n = d/l, P = n nᵀ:
 ///   U = -G m_i m_j / l,  F_i = (G m_i m_j / l²) n,  F_j = -F_i,

@@ -7,7 +7,7 @@
 
 namespace fosssim {
 
-/// A uniform gravitational acceleration g on every particle (SPEC 3.1).
+/// A uniform gravitational acceleration g on every particle (docs/forces.md, 'Simple gravity').
 ///   U = -Σ_p m_p g·x_p,  F_p = m_p g;  both Hessians are zero.
 template <int D>
 class SimpleGravityForce final : public Force {

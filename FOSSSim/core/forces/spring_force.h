@@ -8,7 +8,7 @@
 
 namespace fosssim {
 
-/// A Hookean spring with internal damping between particles i and j (SPEC 3.2).
+/// A Hookean spring with internal damping between particles i and j (docs/forces.md, 'Spring').
 ///
 /// With d = x_j - x_i, l = |d|, n = d/l, P = n nᵀ and dv = v_j - v_i:
 ///   U = ½ k (l - l0)²,  F_i = k (l - l0) n + b (n·dv) n,  F_j = -F_i.

@@ -1,6 +1,6 @@
 #pragma once
-// One spring's energy, force and Jacobians as small fixed-size functions (SPEC 3.2), shared by
-// every force made of springs.
+// One spring's energy, force and Jacobians as small fixed-size functions (docs/forces.md,
+// 'Spring'), shared by every force made of springs.
 
 #include <algorithm>
 

@@ -9,8 +9,8 @@
 namespace fosssim {
 
 /// Many Hookean springs with internal damping held in one force, for meshes: the same energy,
-/// forces and Jacobians as one SpringForce per spring (SPEC 3.2, spring_kernel.h), evaluated in
-/// one loop over a flat array instead of one virtual call and one heap object per spring.
+/// forces and Jacobians as one SpringForce per spring (spring_kernel.h, docs/forces.md), evaluated
+/// in one loop over a flat array instead of one virtual call and one heap object per spring.
 ///
 /// Per spring s = (i, j, k, l0, b), with d = x_j - x_i, l = |d|, n = d/l, dv = v_j - v_i:
 ///   U_s = ½ k (l - l0)²,  F_i = k (l - l0) n + b (n·dv) n,  F_j = -F_i.

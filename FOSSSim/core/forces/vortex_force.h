@@ -7,8 +7,8 @@
 
 namespace fosssim {
 
-/// A vortex centred on particle i that swirls particle j (SPEC 3.5). Meant for a heavy i and a
-/// light j.
+/// A vortex centred on particle i that swirls particle j (docs/forces.md, 'Vortex'). Meant for a
+/// heavy i and a light j.
 ///
 /// With d = x_j - x_i, l = |d|, n = d/l, dv = v_j - v_i and R the 90° rotation about the
 /// vortex axis (R a = (-a_y, a_x) in 2D, R a = axis × a in 3D):

@@ -1,4 +1,4 @@
-// Tests of ConstantForce (SPEC 3.6) in 2D and 3D.
+// Tests of ConstantForce (docs/forces.md) in 2D and 3D.
 //
 // Math checked: F_p = f on every particle whatever its mass, U = -Σ f·x_p, both Hessians zero;
 // gradE against U and zero Hessians against differences of gradE by the library checker and the

@@ -1,4 +1,4 @@
-// Tests of DragDampingForce (SPEC 3.4) in 2D and 3D.
+// Tests of DragDampingForce (docs/forces.md) in 2D and 3D.
 //
 // Math checked: F_p = -b v_p on every particle, no energy, hessX = 0, hessV = b I (symmetric);
 // the derivatives against differences of gradE by the library checker and the full-matrix

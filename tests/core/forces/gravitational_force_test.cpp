@@ -1,4 +1,4 @@
-// Tests of GravitationalForce (SPEC 3.3) in 2D and 3D.
+// Tests of GravitationalForce (docs/forces.md) in 2D and 3D.
 //
 // Math checked:
 // - values: U = -G m_i m_j / l, F_i = (G m_i m_j / l²) n, F_j = -F_i on a 3-4-5 triangle worked

@@ -1,4 +1,4 @@
-// Tests of SimpleGravityForce (SPEC 3.1) in 2D and 3D.
+// Tests of SimpleGravityForce (docs/forces.md) in 2D and 3D.
 //
 // Math checked: F_p = m_p g (an acceleration, scaled by each particle's mass, fixed particles
 // included), U = -Σ m_p g·x_p, both Hessians zero; gradE against U and zero Hessians against

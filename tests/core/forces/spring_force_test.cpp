@@ -1,4 +1,4 @@
-// Tests of SpringForce (SPEC 3.2) in 2D and 3D.
+// Tests of SpringForce (docs/forces.md) in 2D and 3D.
 //
 // Math checked:
 // - values: F_i = k (l - l0) n + b (n·dv) n, F_j = -F_i, U = ½ k (l - l0)², on a 3-4-5 triangle

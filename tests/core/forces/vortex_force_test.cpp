@@ -1,4 +1,4 @@
-// Tests of VortexForce (SPEC 3.5) in 2D and 3D.
+// Tests of VortexForce (docs/forces.md) in 2D and 3D.
 //
 // Math checked:
 // - values: w = (kvc / l²)(kbs R n - dv), F_j = w, F_i = -w, worked out by hand in 2D, in 3D
