@@ -27,7 +27,7 @@ const Color kNote{0.33, 0.33, 0.33};
 void set_color(cairo_t* cr, const Color& c) { cairo_set_source_rgb(cr, c.r, c.g, c.b); }
 
 /// Shows `text` so that the point (align_x, align_y) of its box, each in [0, 1] from the left
-/// and the top, lies at (x, y). Returns the text's width.
+/// and the top, lies at (x, y). Returns how far the text advances along x.
 double show_text(cairo_t* cr, const std::string& text, double x, double y, double align_x,
                  double align_y) {
   cairo_text_extents_t extents;
