@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <iostream>
 
-#include "app/exit_codes.h"
-#include "app/parse_command_line.h"
+#include "cli/exit_codes.h"
+#include "cli/parse_command_line.h"
 #include "core/text.h"
 #include "io/mesh_writer.h"
 #include "io/output_file.h"

@@ -6,10 +6,10 @@
 #include <iostream>
 
 #include "app/commands.h"
-#include "app/exit_codes.h"
 #include "app/interrupt.h"
 #include "app/options.h"
-#include "app/parse_command_line.h"
+#include "cli/exit_codes.h"
+#include "cli/parse_command_line.h"
 #include "core/error.h"
 #include "io/scene_loader.h"
 #include "scripting/step_hooks.h"

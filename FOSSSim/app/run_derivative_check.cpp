@@ -2,7 +2,7 @@
 #include <iostream>
 
 #include "app/commands.h"
-#include "app/exit_codes.h"
+#include "cli/exit_codes.h"
 #include "core/analysis/derivative_check.h"
 
 namespace fosssim {

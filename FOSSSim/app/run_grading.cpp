@@ -1,8 +1,8 @@
 #include <iostream>
 
 #include "app/commands.h"
-#include "app/exit_codes.h"
 #include "app/progress_bar.h"
+#include "cli/exit_codes.h"
 #include "grading/grader.h"
 #include "io/trajectory_file.h"
 

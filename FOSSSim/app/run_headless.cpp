@@ -1,10 +1,10 @@
 #include <iostream>
 
 #include "app/commands.h"
-#include "app/exit_codes.h"
 #include "app/frame_outputs.h"
 #include "app/interrupt.h"
 #include "app/progress_bar.h"
+#include "cli/exit_codes.h"
 #include "core/step/simulation.h"
 #include "core/step_error.h"
 #include "render/scene_view.h"

@@ -4,9 +4,9 @@
 #include <iostream>
 
 #include "app/commands.h"
-#include "app/exit_codes.h"
 #include "app/frame_outputs.h"
 #include "app/interrupt.h"
+#include "cli/exit_codes.h"
 #include "io/trajectory_file.h"
 #include "viewer/stepper.h"
 #include "viewer/window.h"

@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "app/commands.h"
-#include "app/exit_codes.h"
+#include "cli/exit_codes.h"
 
 namespace fosssim {
 

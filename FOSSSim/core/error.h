@@ -7,7 +7,7 @@
 namespace fosssim {
 
 /// What went wrong, which is all the command line needs to choose its exit status
-/// (app/exit_codes.h): only `main` turns an Error into a status.
+/// (cli/exit_codes.h): only `main` turns an Error into a status.
 enum class ErrorKind {
   kBadInput,     ///< a scene, mesh, trajectory file or command-line value is wrong
   kStepFailed,   ///< the simulation could not take a step (non-finite state, no convergence)

@@ -19,14 +19,11 @@ struct EnergyPlotStyle {
   std::string title;              ///< drawn above the plot, e.g. the scene and integrator
 };
 
-/// Plots kinetic, potential and total energy against time, with axes, ticks, labels and a
-/// legend, as a PNG, or an SVG when `path` ends in ".svg". Written under a temporary name and
-/// renamed. Non-finite samples are left out. Throws std::runtime_error on an I/O error.
+/// Plots kinetic, potential and total energy against time (a LinePlot, pictures/line_plot.h),
+/// with axes, ticks, labels and a legend, as a PNG, or an SVG when `path` ends in ".svg". Written
+/// under a temporary name and renamed. Non-finite samples are left out. Throws std::runtime_error
+/// on an I/O error.
 void write_energy_plot(const std::vector<EnergySample>& samples, const std::string& path,
                        const EnergyPlotStyle& style = {});
-
-/// Tick positions for an axis from `low` to `high`: multiples of 1, 2 or 5 × 10^k chosen so that
-/// there are about `target` of them inside [low, high].
-std::vector<double> nice_ticks(double low, double high, int target = 6);
 
 }  // namespace fosssim

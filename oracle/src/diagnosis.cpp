@@ -1,6 +1,7 @@
 #include "diagnosis.h"
 
 #include <sstream>
+#include <stdexcept>
 
 #include "atomic_file.h"
 #include "core/text.h"
@@ -68,7 +69,12 @@ std::optional<std::string> write_diagnosis(const std::string& folder, const Scen
   plot.dt = result.dt;
   plot.limit = report->criteria.maximum_limit;
   if (report->first_divergence) plot.marked_step = report->first_divergence->step;
-  return write_file_atomically(stem + ".residuals.svg", residual_plot_svg(report->per_step, plot));
+  try {
+    write_line_plot(residual_plot(report->per_step, plot), stem + ".residuals.svg");
+  } catch (const std::runtime_error& error) {
+    return error.what();
+  }
+  return std::nullopt;
 }
 
 }  // namespace fosssim

@@ -8,11 +8,11 @@
 #include <cstring>
 #include <iostream>
 
-#include "app/exit_codes.h"
-#include "app/parse_command_line.h"
 #include "atomic_file.h"
 #include "batch.h"
 #include "child_process.h"
+#include "cli/exit_codes.h"
+#include "cli/parse_command_line.h"
 #include "gradescope_report.h"
 #include "junit_report.h"
 #include "manifest.h"

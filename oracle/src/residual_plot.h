@@ -1,6 +1,7 @@
 #pragma once
-// A self-contained SVG line plot of a trajectory's per-step residuals over time, on a
-// logarithmic axis, with the course's maximum limit and the first divergence marked.
+// The plot of a trajectory's per-step residuals over time, on a logarithmic axis, with the
+// course's maximum limit and the first divergence marked: a LinePlot (pictures/line_plot.h),
+// which write_line_plot() writes as SVG or PNG.
 
 #include <cstdint>
 #include <optional>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "grading/grader.h"
+#include "pictures/line_plot.h"
 
 namespace fosssim {
 
@@ -20,10 +22,12 @@ struct ResidualPlotOptions {
                                             ///< keeping its largest residual
 };
 
-/// The SVG document (UTF-8 text): max over particles of the position and of the velocity
-/// residual at every step, y = log10(residual). Exact zeros get a bottom line of their own,
-/// labelled 0, one decade below the smallest residual; non-finite ones sit on the top edge.
-std::string residual_plot_svg(const std::vector<StepResidual>& per_step,
-                              const ResidualPlotOptions& options);
+/// The plot of the max over particles of the position and of the velocity residual at every
+/// step against simulated time, y on a log10 axis spanning whole decades from below the smallest
+/// positive residual (or the limit) to above the largest finite one, at least two. Exact zeros
+/// get a bottom line of their own, labelled 0, one decade below the smallest residual;
+/// non-finite residuals sit on the top edge. The note says when either occurs.
+LinePlot residual_plot(const std::vector<StepResidual>& per_step,
+                       const ResidualPlotOptions& options);
 
 }  // namespace fosssim

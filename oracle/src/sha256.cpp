@@ -1,130 +1,58 @@
 #include "sha256.h"
 
-#include <cassert>
+#include <openssl/evp.h>
+
 #include <cstdio>
-#include <cstring>
 #include <memory>
+#include <stdexcept>
 
 namespace fosssim {
 
 namespace {
 
-// FIPS 180-4 section 4.2.2: the first 32 bits of the fractional parts of the cube roots of the
-// first 64 primes.
-constexpr std::array<std::uint32_t, 64> kRoundConstants = {
-    0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4, 0xab1c5ed5,
-    0xd807aa98, 0x12835b01, 0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe, 0x9bdc06a7, 0xc19bf174,
-    0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc, 0x2de92c6f, 0x4a7484aa, 0x5cb0a9dc, 0x76f988da,
-    0x983e5152, 0xa831c66d, 0xb00327c8, 0xbf597fc7, 0xc6e00bf3, 0xd5a79147, 0x06ca6351, 0x14292967,
-    0x27b70a85, 0x2e1b2138, 0x4d2c6dfc, 0x53380d13, 0x650a7354, 0x766a0abb, 0x81c2c92e, 0x92722c85,
-    0xa2bfe8a1, 0xa81a664b, 0xc24b8b70, 0xc76c51a3, 0xd192e819, 0xd6990624, 0xf40e3585, 0x106aa070,
-    0x19a4c116, 0x1e376c08, 0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3,
-    0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2};
+/// One SHA-256 computation through OpenSSL's EVP digest interface.
+class Sha256 {
+ public:
+  Sha256() : context_(EVP_MD_CTX_new()) {
+    check(context_ != nullptr && EVP_DigestInit_ex(context_.get(), EVP_sha256(), nullptr) == 1);
+  }
 
-// FIPS 180-4 section 5.3.3: the first 32 bits of the fractional parts of the square roots of the
-// first 8 primes.
-constexpr std::array<std::uint32_t, 8> kInitialHash = {
-    0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
+  void update(const void* data, std::size_t size) {
+    check(EVP_DigestUpdate(context_.get(), data, size) == 1);
+  }
 
-constexpr std::uint32_t rotr(std::uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
+  /// Finishes the digest: 64 lowercase hexadecimal digits.
+  std::string hex_digest() {
+    unsigned char digest[EVP_MAX_MD_SIZE];
+    unsigned int size = 0;
+    check(EVP_DigestFinal_ex(context_.get(), digest, &size) == 1);
+    static constexpr char kHex[] = "0123456789abcdef";
+    std::string hex;
+    for (unsigned int k = 0; k < size; ++k) {
+      hex.push_back(kHex[digest[k] >> 4]);
+      hex.push_back(kHex[digest[k] & 15]);
+    }
+    return hex;
+  }
+
+ private:
+  struct ContextDeleter {
+    void operator()(EVP_MD_CTX* context) const { EVP_MD_CTX_free(context); }
+  };
+
+  /// OpenSSL fails here only when it cannot allocate or finds no SHA-256 provider.
+  static void check(bool ok) {
+    if (!ok) throw std::runtime_error("OpenSSL cannot compute a SHA-256 digest");
+  }
+
+  std::unique_ptr<EVP_MD_CTX, ContextDeleter> context_;
+};
 
 }  // namespace
 
-Sha256::Sha256() : h_(kInitialHash) {}
-
-void Sha256::compress(const std::uint8_t* block) {
-  // Message schedule (section 6.2.2, step 1).
-  std::array<std::uint32_t, 64> w;
-  for (int t = 0; t < 16; ++t) {
-    w[t] = (std::uint32_t(block[4 * t]) << 24) | (std::uint32_t(block[4 * t + 1]) << 16) |
-           (std::uint32_t(block[4 * t + 2]) << 8) | std::uint32_t(block[4 * t + 3]);
-  }
-  for (int t = 16; t < 64; ++t) {
-    const std::uint32_t s0 = rotr(w[t - 15], 7) ^ rotr(w[t - 15], 18) ^ (w[t - 15] >> 3);
-    const std::uint32_t s1 = rotr(w[t - 2], 17) ^ rotr(w[t - 2], 19) ^ (w[t - 2] >> 10);
-    w[t] = w[t - 16] + s0 + w[t - 7] + s1;
-  }
-  // Steps 2-4: 64 rounds on the working variables a..h.
-  std::uint32_t a = h_[0], b = h_[1], c = h_[2], d = h_[3];
-  std::uint32_t e = h_[4], f = h_[5], g = h_[6], h = h_[7];
-  for (int t = 0; t < 64; ++t) {
-    const std::uint32_t big_sigma1 = rotr(e, 6) ^ rotr(e, 11) ^ rotr(e, 25);
-    const std::uint32_t choose = (e & f) ^ (~e & g);
-    const std::uint32_t t1 = h + big_sigma1 + choose + kRoundConstants[t] + w[t];
-    const std::uint32_t big_sigma0 = rotr(a, 2) ^ rotr(a, 13) ^ rotr(a, 22);
-    const std::uint32_t majority = (a & b) ^ (a & c) ^ (b & c);
-    const std::uint32_t t2 = big_sigma0 + majority;
-    h = g;
-    g = f;
-    f = e;
-    e = d + t1;
-    d = c;
-    c = b;
-    b = a;
-    a = t1 + t2;
-  }
-  h_[0] += a;
-  h_[1] += b;
-  h_[2] += c;
-  h_[3] += d;
-  h_[4] += e;
-  h_[5] += f;
-  h_[6] += g;
-  h_[7] += h;
-}
-
-void Sha256::update(const void* data, std::size_t size) {
-  assert(!finished_);
-  const auto* bytes = static_cast<const std::uint8_t*>(data);
-  length_bytes_ += size;
-  if (buffered_ > 0) {
-    const std::size_t take = std::min(size, buffer_.size() - buffered_);
-    std::memcpy(buffer_.data() + buffered_, bytes, take);
-    buffered_ += take;
-    bytes += take;
-    size -= take;
-    if (buffered_ < buffer_.size()) return;
-    compress(buffer_.data());
-    buffered_ = 0;
-  }
-  for (; size >= 64; bytes += 64, size -= 64) compress(bytes);
-  std::memcpy(buffer_.data(), bytes, size);
-  buffered_ = size;
-}
-
-std::array<std::uint8_t, 32> Sha256::digest() {
-  assert(!finished_);
-  // Section 5.1.1: append the bit 1, zeros up to 56 bytes mod 64, then the length in bits.
-  const std::uint64_t length_bits = length_bytes_ * 8;
-  const std::uint8_t one = 0x80;
-  const std::uint8_t zero = 0;
-  update(&one, 1);
-  while (buffered_ != 56) update(&zero, 1);
-  std::uint8_t length[8];
-  for (int k = 0; k < 8; ++k) length[k] = std::uint8_t(length_bits >> (56 - 8 * k));
-  update(length, 8);
-  assert(buffered_ == 0);
-  finished_ = true;
-  std::array<std::uint8_t, 32> out;
-  for (int k = 0; k < 8; ++k) {
-    for (int b = 0; b < 4; ++b) out[4 * k + b] = std::uint8_t(h_[k] >> (24 - 8 * b));
-  }
-  return out;
-}
-
-std::string Sha256::hex_digest() {
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string hex;
-  for (std::uint8_t byte : digest()) {
-    hex.push_back(kHex[byte >> 4]);
-    hex.push_back(kHex[byte & 15]);
-  }
-  return hex;
-}
-
 std::string sha256_hex(std::string_view bytes) {
   Sha256 hasher;
-  hasher.update(bytes);
+  hasher.update(bytes.data(), bytes.size());
   return hasher.hex_digest();
 }
 

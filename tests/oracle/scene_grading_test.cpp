@@ -86,8 +86,7 @@ TEST(GradeScene, PerturbedCandidateFailsAtExactlyThePerturbedStepAndParticle) {
   ASSERT_EQ(failing.size(), 8u);
   EXPECT_NEAR(std::stod(failing[2]), 1e-9, 1e-15);
   EXPECT_EQ(failing[3], "2");
-  const std::string svg = testing::read_bytes(stem + ".residuals.svg");
-  EXPECT_TRUE(contains(svg, "first divergence: step 17"));
+  testing::expect_residual_plot(stem + ".residuals.svg");  // marked at step 17
 }
 
 TEST(GradeScene, PerturbationBelowTheLimitPasses) {

@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include "test_support.h"
+
 namespace fosssim {
 namespace {
 
@@ -25,15 +27,24 @@ TEST(Sha256, MatchesTheFips180Vectors) {
             "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
 }
 
-TEST(Sha256, PaddingBoundariesAgreeBetweenWholeAndPiecewiseInput) {
-  // Lengths around the 55/56/64-byte padding boundaries, fed at once and one byte at a time.
-  for (std::size_t length : {0u, 1u, 55u, 56u, 57u, 63u, 64u, 65u, 119u, 120u, 128u, 1000u}) {
+TEST(Sha256, AFileStreamedInPiecesHasTheDigestOfItsBytes) {
+  // Lengths around the 55/56/64-byte padding boundaries and around the 64 KiB pieces the file
+  // is read in: the streamed digest must equal the digest of the whole byte string.
+  const testing::TemporaryFolder folder;
+  for (std::size_t length : {0u, 1u, 55u, 56u, 57u, 63u, 64u, 65u, 119u, 120u, 128u, 1000u, 65535u,
+                             65536u, 65537u, 2u * 65536u + 55u}) {
     std::string message;
     for (std::size_t k = 0; k < length; ++k) message.push_back(static_cast<char>(k * 7 + 3));
-    Sha256 piecewise;
-    for (char c : message) piecewise.update(&c, 1);
-    EXPECT_EQ(piecewise.hex_digest(), sha256_hex(message)) << "length " << length;
+    const std::string path = folder / ("message-" + std::to_string(length));
+    testing::write_bytes(path, message);
+    EXPECT_EQ(sha256_file_hex(path), sha256_hex(message)) << "length " << length;
   }
+}
+
+TEST(Sha256, AFileThatCannotBeReadHasNoDigest) {
+  const testing::TemporaryFolder folder;
+  EXPECT_EQ(sha256_file_hex(folder / "missing"), "");
+  EXPECT_EQ(sha256_file_hex(folder.path()), "");  // a folder: opens, but reading fails
 }
 
 TEST(Sha256, PaddingBoundariesMatchKnownDigests) {

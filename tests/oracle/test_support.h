@@ -2,8 +2,11 @@
 // Shared helpers of the oracle's tests: where things are, temporary folders, trajectories.
 
 #include <gtest/gtest.h>
+#include <tinyxml2.h>
 
+#include <cctype>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -105,6 +108,80 @@ inline void use_perturbing_candidate(int frame, int particle, int component,
   set_env("PERTURB_PARTICLE", std::to_string(particle));
   set_env("PERTURB_COMPONENT", std::to_string(component));
   set_env("PERTURB_DELTA", change);
+}
+
+/// A stroked path of an SVG written by Cairo: whether it is dashed, and its points.
+struct SvgStroke {
+  bool dashed = false;
+  std::vector<std::pair<double, double>> points;
+};
+
+/// The stroked paths of an SVG written by Cairo, in drawing order ("M x y L x y ..."; text is
+/// drawn as filled glyph outlines and is left out).
+inline std::vector<SvgStroke> svg_strokes(const std::string& svg) {
+  tinyxml2::XMLDocument document;
+  EXPECT_EQ(document.Parse(svg.c_str()), tinyxml2::XML_SUCCESS) << svg.substr(0, 500);
+  std::vector<SvgStroke> strokes;
+  std::vector<const tinyxml2::XMLElement*> pending{document.RootElement()};
+  while (!pending.empty()) {  // depth first, children in document order
+    const tinyxml2::XMLElement* element = pending.back();
+    pending.pop_back();
+    if (element == nullptr) continue;
+    const char* style = element->Attribute("style");
+    const char* d = element->Attribute("d");
+    if (std::strcmp(element->Name(), "path") == 0 && style && d &&
+        std::strstr(style, "stroke:rgb") != nullptr) {
+      SvgStroke stroke;
+      stroke.dashed = std::strstr(style, "stroke-dasharray") != nullptr;
+      std::istringstream words(d);
+      for (std::string word; words >> word;) {
+        if (std::isalpha(static_cast<unsigned char>(word[0]))) continue;  // M, L, Z
+        double y = 0.0;
+        words >> y;
+        stroke.points.emplace_back(std::stod(word), y);
+      }
+      strokes.push_back(std::move(stroke));
+    }
+    std::vector<const tinyxml2::XMLElement*> children;
+    for (auto* c = element->FirstChildElement(); c; c = c->NextSiblingElement())
+      children.push_back(c);
+    pending.insert(pending.end(), children.rbegin(), children.rend());
+  }
+  return strokes;
+}
+
+/// Checks the residual plot of a diagnosis (an SVG file). The plot draws its reference lines
+/// (dashed), then the position and the velocity curve, then the legend; Cairo merges collinear
+/// segments, so a curve has a vertex where it changes direction. Checked: the dashed vertical
+/// marker of the first divergence, the position curve rising there from the zero line it
+/// started on, and the velocity curve over the same steps.
+inline void expect_residual_plot(const std::string& path) {
+  const std::vector<SvgStroke> strokes = svg_strokes(read_bytes(path));
+  std::size_t last_dashed = strokes.size();
+  const SvgStroke* marker = nullptr;
+  for (std::size_t k = 0; k < strokes.size(); ++k) {
+    const SvgStroke& s = strokes[k];
+    if (!s.dashed) continue;
+    last_dashed = k;
+    if (s.points.size() == 2 && s.points[0].first == s.points[1].first) marker = &s;
+  }
+  ASSERT_NE(marker, nullptr) << path;
+  ASSERT_LT(last_dashed + 2, strokes.size()) << path;
+  const auto& position = strokes[last_dashed + 1].points;
+  const auto& velocity = strokes[last_dashed + 2].points;
+  ASSERT_GE(position.size(), 3u) << path;
+  ASSERT_GE(velocity.size(), 2u) << path;
+  EXPECT_EQ(position.front().first, velocity.front().first);
+  EXPECT_EQ(position.back().first, velocity.back().first);
+  const double zero_line = position.front().second;
+  bool rises_at_marker = false;
+  for (std::size_t k = 1; k < position.size(); ++k) {
+    rises_at_marker =
+        rises_at_marker || (std::abs(position[k].first - marker->points[0].first) <= 1.0 &&
+                            position[k - 1].second == zero_line &&
+                            position[k].second < zero_line - 50.0);  // pixels: y grows downwards
+  }
+  EXPECT_TRUE(rises_at_marker) << path;
 }
 
 }  // namespace fosssim::testing

@@ -41,18 +41,6 @@ std::pair<int, int> rows_of_color(const Image& image, const Color& color, int fi
   return {top, bottom};
 }
 
-TEST(NiceTicks, AreRoundNumbersInsideTheRange) {
-  EXPECT_EQ(nice_ticks(0.0, 1.0, 5), (std::vector<double>{0.0, 0.2, 0.4, 0.6, 0.8, 1.0}));
-  EXPECT_EQ(nice_ticks(-3.0, 7.0, 6), (std::vector<double>{-2.0, 0.0, 2.0, 4.0, 6.0}));
-  const auto small = nice_ticks(0.00123, 0.00177, 5);
-  ASSERT_FALSE(small.empty());
-  for (double t : small) {
-    EXPECT_GE(t, 0.00123);
-    EXPECT_LE(t, 0.00177);
-  }
-  EXPECT_TRUE(nice_ticks(1.0, 1.0).empty());
-}
-
 TEST(WriteEnergyPlot, DrawsEveryCurveOnAPictureOfTheRequestedSize) {
   const testing::ScratchFolder folder;
   EnergyPlotStyle style;

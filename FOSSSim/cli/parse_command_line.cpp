@@ -1,20 +1,13 @@
-#pragma once
-// The one way FOSSSim's programs parse their command lines and report usage errors.
+#include "cli/parse_command_line.h"
 
-#include <CLI/CLI.hpp>
 #include <iostream>
-#include <optional>
-#include <string>
 
-#include "app/exit_codes.h"
+#include "cli/exit_codes.h"
 
 namespace fosssim {
 
-/// Parses argv into `app`. Returns the status the program should exit with now: 0 after
-/// printing --help or --version, 2 after a usage error (reported on standard error as
-/// "NAME: error: ...", followed by `hint`); nullopt when the program should go on.
-inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv,
-                                             const std::string& hint = "") {
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv,
+                                      const std::string& hint) {
   try {
     app.parse(argc, argv);
     return std::nullopt;

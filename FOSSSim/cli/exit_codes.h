@@ -1,8 +1,10 @@
 #pragma once
+// What the exit status of a FOSSSim program means: FOSSSim, FOSSSim-generate and fosssim-oracle
+// share these numbers.
 
 namespace fosssim {
 
-/// Exit statuses of the FOSSSim command line (also listed in --help).
+/// Exit statuses (FOSSSim lists them in --help, fosssim-oracle in docs/grading.md).
 enum ExitCode : int {
   kExitOk = 0,                ///< the run finished, or the trajectory passed grading
   kExitGradingFailed = 1,     ///< grading mode: the trajectory failed the course's criteria
