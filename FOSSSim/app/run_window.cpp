@@ -59,7 +59,7 @@ int run_simulation_window(const Scene& scene, const Options& options) {
 
   WindowEvents events;
   events.stepped = [&](const State& state, const SceneView& v) {
-    guarded([&] { outputs.write(state, v); });
+    guarded([&] { outputs.write(state, v, &stepper.simulation().last_record()); });
   };
   events.finished = [&] {
     guarded([&] {

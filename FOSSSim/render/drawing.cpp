@@ -62,14 +62,14 @@ Drawing compose_drawing(const Scene& scene, const State& state, const PathHistor
   drawing.edges.reserve(edges.size());
   for (std::size_t e = 0; e < edges.size(); ++e) {
     drawing.edges.push_back({position(state, dim, mapping, edges[e].i),
-                             position(state, dim, mapping, edges[e].j), look.edge_radius[e] * ppu,
-                             look.edge_color[e]});
+                             position(state, dim, mapping, edges[e].j),
+                             scene.model.edge_radius[e] * ppu, look.edge_color[e]});
   }
   const int n = scene.model.num_particles();
   drawing.particles.reserve(n);
   for (int p = 0; p < n; ++p) {
-    drawing.particles.push_back(
-        {position(state, dim, mapping, p), look.particle_radius[p] * ppu, look.particle_color[p]});
+    drawing.particles.push_back({position(state, dim, mapping, p),
+                                 scene.model.particle_radius[p] * ppu, look.particle_color[p]});
   }
   for (const ParticleMark& mark : overlay.marks) {
     const Disc& disc = drawing.particles.at(mark.particle);

@@ -18,7 +18,7 @@ TEST(AppendMesh, AddsParticlesAfterExistingOnesWithSpringsAtRest) {
   scene.initial.q = Vector::Zero(3);
   scene.initial.v = Vector::Zero(3);
   scene.particle_tags = {""};
-  scene.appearance.particle_radius = {0.1};
+  scene.model.particle_radius = {0.1};
   scene.appearance.particle_color = {Appearance::kDefaultParticleColor};
   const GeneratedMesh cloth = generate_cloth(3, 3, 1.0, 1.0, false, false);
   MeshMaterial material;
@@ -51,7 +51,7 @@ TEST(AppendMesh, AddsParticlesAfterExistingOnesWithSpringsAtRest) {
   }
   EXPECT_EQ(scene.appearance.triangles.size(), 8u);
   EXPECT_EQ(scene.appearance.triangles[0][0], 1);
-  EXPECT_EQ(scene.appearance.particle_radius.size(), 10u);
+  EXPECT_EQ(scene.model.particle_radius.size(), 10u);
   EXPECT_EQ(scene.particle_tags.size(), 10u);
 }
 
@@ -75,7 +75,7 @@ TEST(AppendMesh, ListsTheTetMeshesInteriorVerticesAndGivesVerticesTheMeshColour)
   scene.model.fixed = {false};
   scene.initial.q = Vector::Zero(3);
   scene.initial.v = Vector::Zero(3);
-  scene.appearance.particle_radius = {0.1};
+  scene.model.particle_radius = {0.1};
   scene.appearance.particle_color = {Appearance::kDefaultParticleColor};
   MeshMaterial material;
   material.k = 1.0;

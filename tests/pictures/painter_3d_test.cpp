@@ -24,7 +24,7 @@ Scene triangle_scene() {
   scene.appearance.triangles = {{0, 1, 2}};
   scene.appearance.particle_color = {
       {0.2, 0.4, 0.8}, {0.2, 0.4, 0.8}, {0.2, 0.4, 0.8}, {1, 0, 0}, {0, 1, 0}};
-  scene.appearance.particle_radius = {0.05, 0.05, 0.05, 0.1, 0.1};
+  scene.model.particle_radius = {0.05, 0.05, 0.05, 0.1, 0.1};
   return scene;
 }
 

@@ -113,7 +113,7 @@ TEST(ComposeDrawing3D, RingsFixedParticlesAndDrawsPinsAsDots) {
   Scene scene = particles_at({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, -1, 0}});
   scene.appearance.triangles = {{0, 1, 2}};
   scene.model.fixed = {true, false, false, true};
-  scene.appearance.particle_radius[3] = 1e-4;  // tiny: drawn at kPinMinPixels
+  scene.model.particle_radius[3] = 1e-4;  // tiny: drawn at kPinMinPixels
   const Drawing d = draw(scene, front_camera());
   int rings = 0, dots = 0;
   for (const Shape& shape : d.shapes) {

@@ -32,7 +32,7 @@ inline Scene particles_at(const std::vector<Eigen::Vector3d>& points) {
   scene.initial.q.resize(3 * n);
   scene.initial.v = Vector::Zero(3 * n);
   for (int p = 0; p < n; ++p) scene.initial.q.segment<3>(3 * p) = points[p];
-  scene.appearance.particle_radius.assign(n, 0.05);
+  scene.model.particle_radius.assign(n, 0.05);
   scene.appearance.particle_color.assign(n, Appearance::kDefaultParticleColor);
   return scene;
 }
@@ -40,7 +40,7 @@ inline Scene particles_at(const std::vector<Eigen::Vector3d>& points) {
 /// Adds an edge (radius 0.02, default colour) between particles i and j.
 inline void add_edge(Scene& scene, int i, int j) {
   scene.model.edges.push_back({i, j});
-  scene.appearance.edge_radius.push_back(0.02);
+  scene.model.edge_radius.push_back(0.02);
   scene.appearance.edge_color.push_back(Appearance::kDefaultEdgeColor);
 }
 
