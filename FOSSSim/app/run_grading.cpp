@@ -9,7 +9,7 @@
 namespace fosssim {
 
 int run_grading(const Scene& scene, const Options& options) {
-  auto file = TrajectoryReader::open(options.input, scene.model.num_dofs());
+  auto file = open_trajectory(options.input, scene.model);
   if (!file) {
     std::cerr << "FOSSSim: error: " << file.error() << "\n";
     return kExitBadInput;

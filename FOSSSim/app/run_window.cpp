@@ -98,7 +98,7 @@ int run_simulation_window(const Scene& scene, const Options& options) {
 /// Replays the -i trajectory in the window, ringing the particles where it disagrees with the
 /// reference; prints the course's report when the last step has been graded.
 int run_grading_window(const Scene& scene, const Options& options) {
-  auto file = TrajectoryReader::open(options.input, scene.model.num_dofs());
+  auto file = open_trajectory(options.input, scene.model);
   if (!file) {
     std::cerr << "FOSSSim: error: " << file.error() << "\n";
     return kExitBadInput;

@@ -46,6 +46,26 @@ struct FirstDivergence {
   Vector previous_position, previous_velocity;    ///< the file's frame `step - 1`, the start
 };
 
+/// The comparison of a step's collisions, polynomials and sync record (docs/collisions.md,
+/// 'Grading'), for trajectories whose layout has them.
+struct CollisionGrade {
+  /// The course's report lines, in the order found: "  Missed collision: Particle 0 - Particle 1
+  /// with normal = 0.4 0", "Wrong number of polynomials!", and FOSSSim's own sync-record lines.
+  std::vector<std::string> lines;
+  std::int64_t missed = 0;
+  std::int64_t superfluous = 0;
+  std::int64_t wrong_normal = 0;
+  std::int64_t polynomial_failures = 0;  ///< steps whose polynomial log is wrong
+  std::int64_t sync_failures = 0;        ///< steps whose sync record differs from FOSSSim's
+  double max_sync_residual = 0.0;       ///< max over steps and particles of ‖Δx‖ and ‖Δv‖
+  std::int64_t first_failing_step = 0;  ///< 0 when every step passed
+
+  bool passed() const {
+    return missed == 0 && superfluous == 0 && wrong_normal == 0 && polynomial_failures == 0 &&
+           sync_failures == 0;
+  }
+};
+
 struct GradeReport {
   GradingCriteria criteria;
   std::int64_t steps = 0;
@@ -58,6 +78,9 @@ struct GradeReport {
   /// Set when the reference integrator could not take a step from the file's state; the
   /// comparison stops there and the grade is a failure.
   std::optional<std::string> reference_failure;
+  /// Set when the trajectory's layout records collisions (collision types simple,
+  /// continuous-time and hybrid); it must pass too.
+  std::optional<CollisionGrade> collisions;
 
   bool accumulated_position_passed() const;
   bool accumulated_velocity_passed() const;
@@ -97,8 +120,9 @@ Expected<GradeReport, std::string> grade_trajectory(const Scene& scene, Trajecto
                                                     const GradingCriteria& criteria = {},
                                                     const GradingProgress& progress = {});
 
-/// Prints the course's report lines: four "<criterion>: <value>   Passed." lines, then
-/// "Overall success: Passed." or "Failed.".
+/// Prints the course's report lines: the collision report's lines (if any), four
+/// "<criterion>: <value>   Passed." lines, "Collisions Passed: Yes." or "No." for trajectories
+/// with collisions, then "Overall success: Passed." or "Failed.".
 void print_grade_report(std::ostream& out, const GradeReport& report);
 
 /// Writes residual.txt: one "<1|0>   <value>" line per criterion, in the report's order. The file

@@ -20,6 +20,10 @@ namespace fosssim {
 /// pipeline (core/step/step_pipeline.h: the integrator, then the stages a run has, such as the
 /// scene tag's hook) and compares with the file's frame k, for every particle, fixed ones
 /// included. Non-finite reference states are compared, not rejected.
+/// Trajectories whose layout records collisions (docs/collisions.md) are also compared step by
+/// step on their collisions (as sets, normals to 1e-9), their polynomial logs (up to a positive
+/// factor) and their sync records, against FOSSSim's own sync state (FOSSSim's addition: the
+/// course's grader adopts the file's sync record instead).
 /// The report accumulates over the steps graded so far.
 class StepGrader {
  public:
@@ -51,10 +55,12 @@ class StepGrader {
  private:
   StepGrader(const Scene& scene, TrajectoryReader& file, const GradingCriteria& criteria);
   void compare(const State& reference, const Vector& previous_q, const Vector& previous_v);
+  void compare_records(std::int64_t step);
 
   const Scene* scene_;
   TrajectoryReader* file_;
   StepPipeline pipeline_;
+  StepRecord record_;  // what the reference step reported
   GradeReport report_;
   State file_state_;
   std::vector<double> position_residuals_, velocity_residuals_;

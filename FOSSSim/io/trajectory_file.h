@@ -129,6 +129,12 @@ class TrajectoryReader {
   std::vector<std::int64_t> offsets_;  // start of every record, for layouts with collisions
 };
 
+/// Opens a trajectory of `model`'s scene in the layout of its collision method.
+inline Expected<TrajectoryReader, std::string> open_trajectory(const std::string& path,
+                                                               const SceneModel& model) {
+  return TrajectoryReader::open(path, model.num_dofs(), model.dim, trajectory_layout(model));
+}
+
 /// Bytes in one frame of `dofs` positions and velocities.
 inline std::int64_t trajectory_frame_bytes(int dofs) {
   return 2 * static_cast<std::int64_t>(dofs) * 8;

@@ -48,7 +48,7 @@ ManifestEntry compute_entry(const SceneEntry& scene, const CandidateRunOptions& 
     }
     // A trajectory that cannot be opened, or read through for its digest, is "unreadable": an
     // empty digest must never pass for "ok".
-    auto file = TrajectoryReader::open(run.trajectory_path, model.num_dofs());
+    auto file = open_trajectory(run.trajectory_path, model);
     const std::string digest = file ? sha256_file_hex(run.trajectory_path) : "";
     if (digest.empty()) {
       entry.status = "unreadable";

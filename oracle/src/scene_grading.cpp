@@ -74,7 +74,7 @@ std::optional<std::string> replay_checking_frames(StepGrader& grader, Trajectory
 std::optional<GradeReport> grade_file(const Scene& scene, const std::string& path,
                                       SceneResult& result) {
   const int dim = scene.model.dim;
-  auto file = TrajectoryReader::open(path, scene.model.num_dofs());
+  auto file = open_trajectory(path, scene.model);
   if (!file) {
     result.verdict = Verdict::kNoOutput;
     result.reason = file.error();

@@ -17,7 +17,7 @@
 namespace fosssim::testing {
 
 void TestScene::add_spring(int i, int j, double k, double l0, double b) {
-  model.edges.push_back({i, j});
+  add_edge(i, j);
   add_force(make_for_dim<SpringForce>(model.dim, i, j, k, l0, b));
 }
 

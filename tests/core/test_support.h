@@ -53,7 +53,8 @@ struct TestScene {
   }
 
   /// Appends a particle of mass m at x with velocity v (both of size dim); returns its index.
-  int add_particle(double m, const Vector& x, const Vector& v, bool fixed = false) {
+  int add_particle(double m, const Vector& x, const Vector& v, bool fixed = false,
+                   double radius = SceneModel::kDefaultParticleRadius) {
     const int dim = model.dim;
     const Eigen::Index n = state.q.size();
     state.q.conservativeResize(n + dim);
@@ -63,7 +64,20 @@ struct TestScene {
     state.v.tail(dim) = v;
     model.mass.tail(dim).setConstant(m);
     model.fixed.push_back(fixed);
+    model.particle_radius.push_back(radius);
     return model.num_particles() - 1;
+  }
+
+  /// Appends the edge (i, j) of this radius without a spring; returns its index.
+  int add_edge(int i, int j, double radius = SceneModel::kDefaultEdgeRadius) {
+    model.edges.push_back({i, j});
+    model.edge_radius.push_back(radius);
+    return static_cast<int>(model.edges.size()) - 1;
+  }
+
+  /// Appends the half-plane through `point` with outward `normal` (both of size dim).
+  void add_half_plane(const Vector& point, const Vector& normal) {
+    model.half_planes.push_back({point, normal});
   }
 
   /// Appends a force; forces are summed in the order they are added.
