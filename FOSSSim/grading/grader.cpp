@@ -1,5 +1,6 @@
 #include "grading/grader.h"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
