@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/analysis/energy.h"
+#include "core/error.h"
 #include "io/output_file.h"
 #include "io/trajectory_file.h"
 #include "pictures/cairo_painter.h"
@@ -100,7 +101,7 @@ class EnergyOutput final : public FrameOutput {
   std::string abandon() override {
     try {
       write_files(".incomplete");
-    } catch (const std::runtime_error&) {
+    } catch (const Error&) {
       return "";
     }
     return "the energies so far are in " + join_names(".incomplete");
@@ -127,7 +128,7 @@ class EnergyOutput final : public FrameOutput {
     return buffer;
   }
   void write_csv(const std::string& path) const {
-    const auto problem = write_output_file(path, [this](std::ostream& out) {
+    write_output_file(path, [this](std::ostream& out) {
       out << "time,kinetic,potential,total\n";
       char line[128];
       for (const EnergySample& s : samples_) {
@@ -136,7 +137,6 @@ class EnergyOutput final : public FrameOutput {
         out << line;
       }
     });
-    if (problem) throw std::runtime_error(*problem);
   }
 
   const Scene& scene_;
@@ -144,11 +144,13 @@ class EnergyOutput final : public FrameOutput {
   std::vector<EnergySample> samples_;
 };
 
-std::optional<std::string> make_directory(const std::string& directory) {
+void make_directory(const std::string& directory) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
-  if (error) return "cannot create the folder " + directory + ": " + error.message();
-  return std::nullopt;
+  if (error) {
+    throw Error(ErrorKind::kCannotWrite,
+                "cannot create the folder " + directory + ": " + error.message());
+  }
 }
 
 }  // namespace
@@ -161,30 +163,22 @@ int movie_stride(const Options& options, double dt) {
              : 1;
 }
 
-Expected<FrameOutputs, std::string> FrameOutputs::open(const Scene& scene, const Options& options) {
+FrameOutputs FrameOutputs::open(const Scene& scene, const Options& options) {
   FrameOutputs outputs;
   if (!options.output.empty()) {
-    auto writer = TrajectoryWriter::open(options.output);
-    if (!writer) return writer.error();
-    outputs.outputs_.push_back(std::make_unique<TrajectoryOutput>(std::move(writer).value()));
+    outputs.outputs_.push_back(
+        std::make_unique<TrajectoryOutput>(TrajectoryWriter::open(options.output)));
   }
-  auto add_sequence = [&](const std::string& directory,
-                          PictureFormat format) -> std::optional<std::string> {
-    if (auto problem = make_directory(directory)) return problem;
+  auto add_sequence = [&](const std::string& directory, PictureFormat format) {
+    make_directory(directory);
     outputs.outputs_.push_back(std::make_unique<PictureSequenceOutput>(directory, format));
-    return std::nullopt;
   };
-  if (options.png == 1) {
-    if (auto problem = add_sequence(options.png_directory, PictureFormat::kPng)) return *problem;
-  }
-  if (!options.svg_directory.empty()) {
-    if (auto problem = add_sequence(options.svg_directory, PictureFormat::kSvg)) return *problem;
-  }
+  if (options.png == 1) add_sequence(options.png_directory, PictureFormat::kPng);
+  if (!options.svg_directory.empty()) add_sequence(options.svg_directory, PictureFormat::kSvg);
   if (!options.movie.empty()) {
-    auto writer = MovieWriter::open(options.movie, movie_settings(options));
-    if (!writer) return writer.error();
-    outputs.outputs_.push_back(std::make_unique<MovieOutput>(
-        std::move(writer).value(), movie_stride(options, scene.model.integrator.dt)));
+    outputs.outputs_.push_back(
+        std::make_unique<MovieOutput>(MovieWriter::open(options.movie, movie_settings(options)),
+                                      movie_stride(options, scene.model.integrator.dt)));
   }
   if (!options.energy_plot.empty() || !options.energy_csv.empty()) {
     outputs.outputs_.push_back(

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "app/options.h"
-#include "core/expected.h"
 #include "core/scene.h"
 #include "pictures/image.h"
 #include "render/drawing.h"
@@ -38,9 +37,9 @@ class Frame {
 class FrameOutput {
  public:
   virtual ~FrameOutput() = default;
-  /// Takes the next state. Throws std::runtime_error on an I/O error.
+  /// Takes the next state. Throws Error (kCannotWrite) on an I/O error.
   virtual void write(Frame& frame) = 0;
-  /// The run reached its end. Throws std::runtime_error on an I/O error.
+  /// The run reached its end. Throws Error (kCannotWrite) on an I/O error.
   virtual void commit() = 0;
   /// The run stopped early; returns a note on what was kept ("out.bin.incomplete holds the 12
   /// frames computed"), or "" when there is nothing to say.
@@ -51,8 +50,9 @@ class FrameOutput {
 class FrameOutputs {
  public:
   /// Opens every output of `options` (-o, -g, -m, --movie, --energy-plot, --energy-csv) for a
-  /// run of `scene`. Fails with a message (an unwritable folder, no ffmpeg for --movie).
-  static Expected<FrameOutputs, std::string> open(const Scene& scene, const Options& options);
+  /// run of `scene`. Throws Error: an unwritable file or folder (kCannotWrite), no ffmpeg for
+  /// --movie (kUnavailable).
+  static FrameOutputs open(const Scene& scene, const Options& options);
 
   bool empty() const { return outputs_.empty(); }
   void write(const State& state, const SceneView& view);
