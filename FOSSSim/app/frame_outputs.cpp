@@ -36,6 +36,9 @@ class TrajectoryOutput final : public FrameOutput {
     ++frames_;
   }
   void commit() override { writer_.commit(); }
+  std::string describe() const override {
+    return "the trajectory " + writer_.path() + " (" + std::to_string(frames_) + " frames)";
+  }
   std::string abandon() override {
     return "the " + std::to_string(frames_) + " frames computed so far are in " +
            writer_.abandon() + " (" + writer_.path() + " was not written)";
@@ -61,13 +64,19 @@ class PictureSequenceOutput final : public FrameOutput {
     } else {
       write_png(frame.image(), directory_ + name);
     }
+    ++pictures_;
   }
   void commit() override {}
+  std::string describe() const override {
+    return std::to_string(pictures_) + (format_ == PictureFormat::kSvg ? " SVG" : " PNG") +
+           " pictures in " + directory_ + "/";
+  }
   std::string abandon() override { return ""; }
 
  private:
   std::string directory_;
   PictureFormat format_;
+  std::int64_t pictures_ = 0;
 };
 
 /// --movie: every stride-th state as a movie frame.
@@ -75,9 +84,15 @@ class MovieOutput final : public FrameOutput {
  public:
   MovieOutput(MovieWriter writer, int stride) : writer_(std::move(writer)), stride_(stride) {}
   void write(Frame& frame) override {
-    if (frame.state().step % stride_ == 0) writer_.write_frame(frame.image());
+    if (frame.state().step % stride_ == 0) {
+      writer_.write_frame(frame.image());
+      ++frames_;
+    }
   }
   void commit() override { writer_.commit(); }
+  std::string describe() const override {
+    return "the movie " + writer_.path() + " (" + std::to_string(frames_) + " frames)";
+  }
   std::string abandon() override {
     const std::string kept = writer_.abandon();
     return kept.empty() ? "" : "the movie so far is in " + kept;
@@ -86,6 +101,7 @@ class MovieOutput final : public FrameOutput {
  private:
   MovieWriter writer_;
   int stride_;
+  std::int64_t frames_ = 0;
 };
 
 /// --energy-plot and --energy-csv: the energies of every state, written when the run ends.
@@ -98,6 +114,12 @@ class EnergyOutput final : public FrameOutput {
     samples_.push_back({frame.state().time, e.kinetic, e.potential});
   }
   void commit() override { write_files(""); }
+  std::string describe() const override {
+    std::string out;
+    if (!plot_.empty()) out = "the energy plot " + plot_;
+    if (!csv_.empty()) out += (out.empty() ? "" : " and ") + std::string("the energies ") + csv_;
+    return out;
+  }
   std::string abandon() override {
     try {
       write_files(".incomplete");
@@ -194,6 +216,15 @@ void FrameOutputs::write(const State& state, const SceneView& view) {
 
 void FrameOutputs::commit() {
   for (auto& output : outputs_) output->commit();
+}
+
+std::string FrameOutputs::describe() const {
+  std::string out;
+  for (std::size_t k = 0; k < outputs_.size(); ++k) {
+    if (k > 0) out += k + 1 == outputs_.size() ? " and " : ", ";
+    out += outputs_[k]->describe();
+  }
+  return out;
 }
 
 std::string FrameOutputs::abandon() {

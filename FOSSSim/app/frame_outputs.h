@@ -41,6 +41,8 @@ class FrameOutput {
   virtual void write(Frame& frame) = 0;
   /// The run reached its end. Throws Error (kCannotWrite) on an I/O error.
   virtual void commit() = 0;
+  /// What a committed output holds and where, for the user: "the movie run.mp4 (151 frames)".
+  virtual std::string describe() const = 0;
   /// The run stopped early; returns a note on what was kept ("out.bin.incomplete holds the 12
   /// frames computed"), or "" when there is nothing to say.
   virtual std::string abandon() = 0;
@@ -50,13 +52,16 @@ class FrameOutput {
 class FrameOutputs {
  public:
   /// Opens every output of `options` (-o, -g, -m, --movie, --energy-plot, --energy-csv) for a
-  /// run of `scene`. Throws Error: an unwritable file or folder (kCannotWrite), no ffmpeg for
-  /// --movie (kUnavailable).
+  /// run of `scene`. Throws Error (kCannotWrite): an unwritable file or folder, no ffmpeg for
+  /// --movie.
   static FrameOutputs open(const Scene& scene, const Options& options);
 
   bool empty() const { return outputs_.empty(); }
   void write(const State& state, const SceneView& view);
   void commit();
+  /// After commit(): what was written and where, one phrase per output ("the trajectory
+  /// out.bin (101 frames)"), joined as a sentence; "" when there were no outputs.
+  std::string describe() const;
   /// Abandons every output; returns their notes joined with "; " (may be empty).
   std::string abandon();
 

@@ -50,6 +50,9 @@ int run_headless(const Scene& scene, const Options& options) {
     for (const std::string& note : simulation.integrator().notes()) {
       std::cerr << "FOSSSim: note: " << note << "\n";
     }
+    if (!outputs.empty() && !options.quiet && stderr_is_terminal()) {
+      std::cerr << "FOSSSim: wrote " << outputs.describe() << "\n";
+    }
     std::cout << "Simulation complete at time " << simulation.state().time << ". Exiting."
               << std::endl;
     return kExitOk;

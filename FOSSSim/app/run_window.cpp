@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "app/frame_outputs.h"
 #include "app/interrupt.h"
+#include "app/progress_bar.h"
 #include "cli/exit_codes.h"
 #include "io/trajectory_file.h"
 #include "viewer/stepper.h"
@@ -60,6 +61,9 @@ int run_simulation_window(const Scene& scene, const Options& options) {
     guarded([&] {
       outputs.commit();
       outputs_open = false;
+      if (!outputs.empty() && !options.quiet && stderr_is_terminal()) {
+        std::cerr << "FOSSSim: wrote " << outputs.describe() << "\n";
+      }
     });
     for (const std::string& note : stepper.simulation().integrator().notes()) {
       std::cerr << "FOSSSim: note: " << note << "\n";
