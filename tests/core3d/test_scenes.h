@@ -71,7 +71,7 @@ inline Scene cloth(int nx, double k, std::string_view kind, double dt, bool hori
   material.b = b;
   material.mass = {MassRule::kTotal, 0.1};
   auto springs = append_mesh(scene, generated.mesh, material, *generated.find_pins(pins), "cloth");
-  scene.model.forces.push_back(std::move(springs).value());
+  scene.model.forces.push_back(std::move(springs));
   add_gravity(scene, 9.8);
   return scene;
 }

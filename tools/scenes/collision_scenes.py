@@ -192,9 +192,9 @@ def particleparticle_cradle(integ):
 
 
 def particleparticle_break(integ):
-    s = Scene(integ, dt=0.005, duration=1.5, viewport=(0.3, 0, 1.2))
+    s = Scene(integ, dt=0.005, duration=1.5, viewport=(0, 0, 1.6))
     s.what = "a break of billiard balls, COR 1: momentum and energy conserved"
-    s.particle(1, -1.0, 0.01, 4, 0, radius=0.06, color=(0.95, 0.95, 0.95))
+    s.particle(1, -1.0, 0.01, 4, 0, radius=0.06, color=(0.8, 0.8, 0.8))
     k = 0
     for row in range(4):
         for j in range(row + 1):
