@@ -87,6 +87,9 @@ std::string describe_failure(const GradeReport& report, int dim) {
         << c.polynomial_failures << " step(s) with wrong polynomials; " << c.sync_failures
         << " sync record(s) differing from FOSSSim's (largest residual " << c.max_sync_residual
         << ")\n";
+    const std::size_t shown = std::min<std::size_t>(c.lines.size(), 10);
+    for (std::size_t k = 0; k < shown; ++k) out << c.lines[k] << "\n";
+    if (c.lines.size() > shown) out << "  (" << c.lines.size() - shown << " more lines)\n";
   }
   if (const auto& d = report.first_divergence) {
     out << "First divergence at step " << d->step << ", particle " << d->particle

@@ -239,5 +239,47 @@ TEST(CandidatePairs, NoOverlapMissedOnRandomScenes) {
   }
 }
 
+TEST(Collisions3D, HalfSpacesParticlesAndEdgesWithEveryMethodButHybrid) {
+  // A ball falls onto the half-space z ≤ 0 (normal of length 3) in 3D: simple impulses reflect
+  // it; continuous-time catches it even when it would pass the floor within one step; the
+  // penalty force pushes it up.
+  for (const CollisionMethod method :
+       {CollisionMethod::kSimple, CollisionMethod::kContinuousTime, CollisionMethod::kPenalty}) {
+    TestScene scene(3, "explicit-euler", 0.01);
+    const double speed = method == CollisionMethod::kContinuousTime ? 50.0 : 1.0;
+    scene.add_particle(1, vec({0.1, -0.2, 0.05}), vec({0.3, 0, -speed}), false, 0.1);
+    scene.add_half_plane(vec({0, 0, 0}), vec({0, 0, 3}));
+    scene.model.collisions.method = method;
+    StepPipeline pipeline(scene.model);
+    StepRecord record;
+    pipeline.step(scene.state, &record);
+    if (method == CollisionMethod::kPenalty) {
+      EXPECT_GT(scene.state.v[2], -speed) << "pushed up";
+      continue;
+    }
+    ASSERT_EQ(record.collisions.size(), 1u);
+    EXPECT_EQ(record.collisions[0].kind, CollisionKind::kParticleHalfPlane);
+    EXPECT_EQ(record.collisions[0].normal.size(), 3);
+    EXPECT_NEAR(scene.state.v[2], speed, 1e-9);
+    EXPECT_NEAR(scene.state.v[0], 0.3, 1e-15);
+  }
+  // A particle against a particle and an edge in 3D, with simple impulses.
+  TestScene scene(3, "explicit-euler", 0.01);
+  scene.add_particle(1, vec({0, 0, 0.15}), vec({0, 0, -1}), false, 0.1);
+  scene.add_particle(1, vec({-1, 0, 0}), vec({0, 0, 0}), true, 0.05);
+  scene.add_particle(1, vec({1, 0, 0}), vec({0, 0, 0}), true, 0.05);
+  scene.add_edge(1, 2, 0.1);
+  scene.add_particle(1, vec({0.12, 0, 0.25}), vec({-2, 0, 0}), false, 0.1);
+  scene.model.collisions.method = CollisionMethod::kSimple;
+  StepPipeline pipeline(scene.model);
+  StepRecord record;
+  pipeline.step(scene.state, &record);
+  // In the course's order: particle 0 against particle 3, then against the edge.
+  ASSERT_EQ(record.collisions.size(), 2u);
+  EXPECT_EQ(record.collisions[0].kind, CollisionKind::kParticleParticle);
+  EXPECT_EQ(record.collisions[0].second, 3);
+  EXPECT_EQ(record.collisions[1].kind, CollisionKind::kParticleEdge);
+}
+
 }  // namespace
 }  // namespace fosssim
