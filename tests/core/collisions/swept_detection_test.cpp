@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/collisions/impact_zones.h"
 #include "core/collisions/intervals.h"
 #include "core/step/step_pipeline.h"
 #include "test_support.h"
@@ -213,6 +214,50 @@ TEST(Hybrid, ZonesTouchingAHalfPlaneOrAFixedParticleStopDead) {
   pipeline.step(scene.state);
   EXPECT_EQ(scene.state.q[1], 0.3);
   EXPECT_EQ(scene.state.v[1], 0.0);
+}
+
+TEST(Hybrid, RigidFailsafeKeepsTheZonesShapeMomentumAndAngularMomentum) {
+  // Three particles (masses 1, 2, 3) whose integrated positions moved and deformed: the zone
+  // moves rigidly, its centre of mass goes where the integrated one went, and the rotation is
+  // ω = L/I, so the angular momentum of the displacements about the centre is kept.
+  TestScene scene(2, "explicit-euler", 0.1);
+  scene.add_particle(1, vec({-1, 0}), vec({0, 0}));
+  scene.add_particle(2, vec({1, 0}), vec({0, 0}));
+  scene.add_particle(3, vec({0, 1}), vec({0, 0}));
+  const Vector xs = scene.state.q;
+  Vector q = xs + vec({0.1, -0.05, 0.2, 0.15, -0.1, 0.1});
+  Vector v = Vector::Zero(6);
+  const ImpactZone zone = merge_impact_zones(
+      {impact_zone_of(scene.model, {CollisionKind::kParticleParticle, 0, 1}),
+       impact_zone_of(scene.model, {CollisionKind::kParticleParticle, 1, 2})})[0];
+  ASSERT_EQ(zone.particles, (std::vector<int>{0, 1, 2}));
+  const Vector integrated = q;
+  apply_rigid_failsafe(scene.model, zone, xs, 0.1, q, v);
+  const auto point = [](const Vector& x, int p) -> Vec<2> { return x.segment<2>(2 * p); };
+  for (int a = 0; a < 3; ++a) {
+    for (int b = a + 1; b < 3; ++b) {
+      EXPECT_NEAR((point(q, a) - point(q, b)).norm(), (point(xs, a) - point(xs, b)).norm(), 1e-14);
+    }
+    testing::expect_close(point(v, a), (point(q, a) - point(xs, a)) / 0.1, 1e-13, "velocity");
+  }
+  const double m[3] = {1, 2, 3};
+  Vec<2> cm_xs = Vec<2>::Zero(), cm_q = Vec<2>::Zero(), cm_int = Vec<2>::Zero();
+  for (int p = 0; p < 3; ++p) {
+    cm_xs += m[p] * point(xs, p) / 6.0;
+    cm_q += m[p] * point(q, p) / 6.0;
+    cm_int += m[p] * point(integrated, p) / 6.0;
+  }
+  EXPECT_NEAR((cm_q - cm_int).norm(), 0.0, 1e-14);
+  // The rotation angle is L/I with the displacements relative to the centre's.
+  double L = 0.0, I = 0.0;
+  for (int p = 0; p < 3; ++p) {
+    const Vec<2> r = point(xs, p) - cm_xs;
+    const Vec<2> d = point(integrated, p) - point(xs, p) - (cm_int - cm_xs);
+    L += m[p] * (r.x() * d.y() - r.y() * d.x());
+    I += m[p] * r.squaredNorm();
+  }
+  const Vec<2> r0 = point(xs, 0) - cm_xs, r0_now = point(q, 0) - cm_q;
+  EXPECT_NEAR(std::atan2(r0.x() * r0_now.y() - r0.y() * r0_now.x(), r0.dot(r0_now)), L / I, 1e-14);
 }
 
 }  // namespace
