@@ -42,6 +42,7 @@ bool read_int(std::FILE* file, std::int32_t& value) {
 }
 
 bool read_doubles(std::FILE* file, double* data, std::size_t count) {
+  if (count == 0) return true;  // an empty polynomial: data may be null
   if (std::fread(data, sizeof(double), count, file) != count) return false;
   to_little_endian(data, count);
   return true;
@@ -106,6 +107,7 @@ TrajectoryWriter TrajectoryWriter::open(const std::string& path) {
 }
 
 void TrajectoryWriter::write_doubles(const double* data, std::size_t count) {
+  if (count == 0) return;  // an empty polynomial: data may be null
   std::vector<double> swapped;
   if constexpr (std::endian::native == std::endian::big) {
     swapped.assign(data, data + count);
