@@ -9,7 +9,7 @@
 #include <iterator>
 
 #include "core/integrators/integrator_registry.h"
-#include "run_program.h"
+#include "support/run_program.h"
 
 namespace fosssim {
 namespace {

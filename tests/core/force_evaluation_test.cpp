@@ -16,7 +16,7 @@
 
 #include "core/forces/constant_force.h"
 #include "core/forces/vortex_force.h"
-#include "test_support.h"
+#include "support/test_support.h"
 
 namespace fosssim::testing {
 namespace {

@@ -12,7 +12,7 @@
 #include "core/force_set.h"
 #include "core/forces/drag_spring_force.h"
 #include "core/forces/vortex_force.h"
-#include "test_support.h"
+#include "support/test_support.h"
 
 namespace fosssim::testing {
 namespace {

@@ -4,10 +4,10 @@
 #include <gtest/gtest.h>
 #include <tinyxml2.h>
 
-#include "app_render/program_runner.h"
 #include "pictures/cairo_painter.h"
 #include "render/drawing_3d.h"
-#include "render/tiny_scene_3d.h"
+#include "support/program_runner.h"
+#include "support/tiny_scene_3d.h"
 
 namespace fosssim {
 namespace {

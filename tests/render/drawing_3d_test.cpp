@@ -7,7 +7,7 @@
 #include "io/scene_loader.h"
 #include "render/scene_view.h"
 #include "render/shading.h"
-#include "render/tiny_scene_3d.h"
+#include "support/tiny_scene_3d.h"
 
 namespace fosssim {
 namespace {

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "io/scene_loader.h"
-#include "render/tiny_scene_3d.h"
+#include "support/tiny_scene_3d.h"
 #include "viewer/particle_grab.h"
 #include "viewer/stepper.h"
 

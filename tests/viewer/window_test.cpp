@@ -7,13 +7,13 @@
 #include <filesystem>
 #include <set>
 
-#include "app_render/program_runner.h"
 #include "io/scene_loader.h"
 #include "io/trajectory_file.h"
 #include "pictures/cairo_painter.h"
-#include "render/tiny_scene.h"
-#include "render/tiny_scene_3d.h"
-#include "viewer/xvfb_server.h"
+#include "support/program_runner.h"
+#include "support/tiny_scene.h"
+#include "support/tiny_scene_3d.h"
+#include "support/xvfb_server.h"
 
 namespace fosssim {
 namespace {

@@ -21,7 +21,7 @@
 #include <cmath>
 
 #include "core/text.h"
-#include "test_support.h"
+#include "support/test_support.h"
 
 namespace fosssim::testing {
 namespace {

@@ -20,7 +20,7 @@
 
 #include "core/scene_model.h"
 #include "core/text.h"
-#include "test_support.h"
+#include "support/test_support.h"
 
 namespace fosssim::testing {
 namespace {

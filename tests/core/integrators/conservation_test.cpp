@@ -32,7 +32,7 @@
 
 #include "core/analysis/energy.h"
 #include "core/forces/vortex_force.h"
-#include "test_support.h"
+#include "support/test_support.h"
 
 namespace fosssim::testing {
 namespace {

@@ -25,7 +25,7 @@
 #include <functional>
 #include <limits>
 
-#include "test_support.h"
+#include "support/test_support.h"
 
 namespace fosssim::testing {
 namespace {

@@ -31,7 +31,7 @@
 #include "core/forces/vortex_force.h"
 #include "core/step/simulation.h"
 #include "core/step_error.h"
-#include "test_support.h"
+#include "support/test_support.h"
 
 namespace fosssim::testing {
 namespace {

@@ -26,7 +26,7 @@
 #include "core/integrators/linearly_implicit_euler.h"
 #include "core/integrators/local_global.h"
 #include "core/integrators/symplectic_euler.h"
-#include "test_support.h"
+#include "support/test_support.h"
 
 namespace fosssim::testing {
 namespace {

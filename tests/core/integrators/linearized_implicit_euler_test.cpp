@@ -23,7 +23,7 @@
 
 #include <Eigen/Dense>
 
-#include "test_support.h"
+#include "support/test_support.h"
 
 namespace fosssim::testing {
 namespace {

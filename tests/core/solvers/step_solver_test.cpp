@@ -22,7 +22,7 @@
 
 #include "core/force_evaluation.h"
 #include "core/systems/step_matrix.h"
-#include "test_support.h"
+#include "support/test_support.h"
 
 namespace fosssim::testing {
 namespace {

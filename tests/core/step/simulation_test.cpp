@@ -24,7 +24,7 @@
 #include "core/forces/constant_force.h"
 #include "core/forces/vortex_force.h"
 #include "core/step_error.h"
-#include "test_support.h"
+#include "support/test_support.h"
 
 namespace fosssim::testing {
 namespace {

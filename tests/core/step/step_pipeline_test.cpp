@@ -20,7 +20,7 @@
 
 #include "core/forces/drag_spring_force.h"
 #include "core/step_error.h"
-#include "test_support.h"
+#include "support/test_support.h"
 
 namespace fosssim::testing {
 namespace {

@@ -14,7 +14,7 @@
 
 #include <gtest/gtest.h>
 
-#include "test_support.h"
+#include "support/test_support.h"
 
 namespace fosssim::testing {
 namespace {

@@ -14,7 +14,7 @@
 
 #include "core/forces/simple_gravity_force.h"
 #include "core/forces/spring_set_force.h"
-#include "test_support.h"
+#include "support/test_support.h"
 
 namespace fosssim::testing {
 namespace {

@@ -19,7 +19,7 @@
 #include <Eigen/Dense>
 
 #include "core/force_evaluation.h"
-#include "test_support.h"
+#include "support/test_support.h"
 
 namespace fosssim::testing {
 namespace {

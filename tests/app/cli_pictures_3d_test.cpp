@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <set>
 
-#include "app_render/program_runner.h"
 #include "pictures/cairo_painter.h"
-#include "render/tiny_scene.h"
-#include "render/tiny_scene_3d.h"
+#include "support/program_runner.h"
+#include "support/tiny_scene.h"
+#include "support/tiny_scene_3d.h"
 
 namespace fosssim {
 namespace {

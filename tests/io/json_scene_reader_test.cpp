@@ -7,7 +7,7 @@
 #include "core/force_evaluation.h"
 #include "core/forces/spring_set_force.h"
 #include "io/scene_loader.h"
-#include "temp_dir.h"
+#include "support/temp_dir.h"
 
 namespace fosssim {
 namespace {

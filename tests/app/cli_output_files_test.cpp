@@ -6,8 +6,8 @@
 
 #include <filesystem>
 
-#include "app_render/program_runner.h"
-#include "render/tiny_scene.h"
+#include "support/program_runner.h"
+#include "support/tiny_scene.h"
 
 namespace fosssim {
 namespace {

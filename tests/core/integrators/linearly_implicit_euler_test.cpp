@@ -7,7 +7,7 @@
 #include "core/force_evaluation.h"
 #include "core/integrators/implicit_euler.h"
 #include "core/integrators/linearized_implicit_euler.h"
-#include "test_scenes.h"
+#include "support/test_scenes.h"
 
 namespace fosssim {
 namespace {

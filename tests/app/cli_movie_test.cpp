@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "app_render/program_runner.h"
+#include "support/program_runner.h"
 
 namespace fosssim {
 namespace {

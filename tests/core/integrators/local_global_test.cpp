@@ -11,7 +11,7 @@
 #include "core/integrators/implicit_euler.h"
 #include "core/integrators/linearly_implicit_euler.h"
 #include "core/step/simulation.h"
-#include "test_scenes.h"
+#include "support/test_scenes.h"
 #include "viewer/particle_grab.h"
 
 namespace fosssim {

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/step/simulation.h"
-#include "test_scenes.h"
+#include "support/test_scenes.h"
 #include "viewer/particle_grab.h"
 
 namespace fosssim {

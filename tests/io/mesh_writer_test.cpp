@@ -9,7 +9,7 @@
 #include "io/medit_reader.h"
 #include "io/obj_reader.h"
 #include "mesh/generators.h"
-#include "temp_dir.h"
+#include "support/temp_dir.h"
 
 namespace fosssim {
 namespace {

@@ -8,7 +8,7 @@
 #include "grading/grader.h"
 #include "io/scene_loader.h"
 #include "io/trajectory_file.h"
-#include "temp_dir.h"
+#include "support/temp_dir.h"
 
 namespace fosssim {
 namespace {
