@@ -5,7 +5,8 @@
 
 #include "pictures/cairo_painter.h"
 #include "support/pixel_counts.h"
-#include "support/program_runner.h"
+#include "support/run_program.h"
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {
@@ -25,7 +26,7 @@ TEST(CliEnergy, CsvHoldsTheEnergiesOfEveryState) {
   const auto result = testing::run_command(folder, testing::quoted(testing::fosssim_program()) +
                                                        " -s throw.xml -d 0 --energy-csv e.csv");
   ASSERT_EQ(result.status, 0) << result.err;
-  std::istringstream csv(testing::read_text(folder / "e.csv"));
+  std::istringstream csv(testing::read_file(folder / "e.csv"));
   std::string line;
   std::getline(csv, line);
   EXPECT_EQ(line, "time,kinetic,potential,total");

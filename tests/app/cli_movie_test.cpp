@@ -3,7 +3,8 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "support/program_runner.h"
+#include "support/run_program.h"
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {

@@ -6,8 +6,9 @@
 
 #include <filesystem>
 
-#include "support/program_runner.h"
-#include "support/tiny_scene.h"
+#include "support/run_program.h"
+#include "support/scratch_folder.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {
@@ -45,7 +46,7 @@ TEST_F(CliOutputFiles, ResidualFileToAFifoIsWrittenInPlace) {
   const auto result = fosssim_with_reader("-s scene.xml -d 0 -i run.bin --residual-file fifo");
   ASSERT_EQ(result.status, 0) << result.err;
   EXPECT_TRUE(fs::is_fifo(folder_ / "fifo"));
-  EXPECT_EQ(testing::read_text(folder_ / "copy").substr(0, 5), "1   0");
+  EXPECT_EQ(testing::read_file(folder_ / "copy").substr(0, 5), "1   0");
 }
 
 TEST_F(CliOutputFiles, EnergyCsvThroughASymbolicLinkReplacesTheTarget) {
@@ -55,7 +56,7 @@ TEST_F(CliOutputFiles, EnergyCsvThroughASymbolicLinkReplacesTheTarget) {
                                                         " -s scene.xml -d 0 --energy-csv link.csv");
   ASSERT_EQ(result.status, 0) << result.err;
   EXPECT_TRUE(fs::is_symlink(folder_ / "link.csv"));
-  EXPECT_EQ(testing::read_text(folder_ / "real.csv").substr(0, 4), "time");
+  EXPECT_EQ(testing::read_file(folder_ / "real.csv").substr(0, 4), "time");
 }
 
 }  // namespace

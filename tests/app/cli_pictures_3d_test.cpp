@@ -7,9 +7,9 @@
 #include <set>
 
 #include "pictures/cairo_painter.h"
-#include "support/program_runner.h"
-#include "support/tiny_scene.h"
-#include "support/tiny_scene_3d.h"
+#include "support/run_program.h"
+#include "support/scratch_folder.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {

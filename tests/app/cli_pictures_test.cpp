@@ -4,8 +4,9 @@
 #include <filesystem>
 
 #include "pictures/cairo_painter.h"
-#include "support/program_runner.h"
-#include "support/tiny_scene.h"
+#include "support/run_program.h"
+#include "support/scratch_folder.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {
@@ -106,7 +107,7 @@ TEST_F(CliPictures, FountainRunsAreReproducibleAndGradeAsPassed) {
     <simplegravity fx="0" fy="-9.81"/></scene>)");
   ASSERT_EQ(fosssim("-s fountain.xml -d 0 -o a.bin").status, 0);
   ASSERT_EQ(fosssim("-s fountain.xml -d 0 -o b.bin -g 1").status, 0);
-  EXPECT_EQ(testing::read_text(folder_ / "a.bin"), testing::read_text(folder_ / "b.bin"));
+  EXPECT_EQ(testing::read_file(folder_ / "a.bin"), testing::read_file(folder_ / "b.bin"));
   const auto graded = fosssim("-s fountain.xml -d 0 -i a.bin");
   EXPECT_EQ(graded.status, 0) << graded.out << graded.err;
   EXPECT_NE(graded.out.find("Overall success: Passed."), std::string::npos);

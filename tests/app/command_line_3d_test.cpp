@@ -1,73 +1,53 @@
 // FOSSSim and FOSSSim-generate on 3D scenes, run as a user would.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <memory>
 #include <string>
+
+#include "support/run_program.h"
+#include "support/scratch_folder.h"
 
 namespace {
 
-struct Outcome {
-  int status = -1;
-  std::string output;  // stdout and stderr
-};
-
-Outcome run(const std::string& command) {
-  Outcome result;
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen((command + " 2>&1").c_str(), "r"), pclose);
-  std::array<char, 4096> buffer;
-  while (std::fgets(buffer.data(), buffer.size(), pipe.get())) result.output += buffer.data();
-  const int status = pclose(pipe.release());
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+using fosssim::testing::ProgramResult;
 
 class CommandLine3D : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           (std::string("fosssim-app3d-") +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
+  /// Runs a shell command line in the test's folder.
+  ProgramResult run(const std::string& command) const {
+    return fosssim::testing::run_command(folder_, command);
   }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string path(const std::string& name) const { return folder_ / name; }
   std::string write(const std::string& name, const std::string& content) const {
-    std::ofstream(path(name)) << content;
-    return path(name);
+    return folder_.write(name, content);
   }
   static std::string asset(const std::string& name) {
     return std::string(FOSSSIM_SOURCE_DIR) + "/assets3d/" + name;
   }
 
-  std::filesystem::path dir_;
+  fosssim::testing::ScratchFolder folder_;
 };
 
-const std::string kFosssim = FOSSSIM_BIN;
-const std::string kGenerate = FOSSSIM_GENERATE_BIN;
+const std::string kFosssim = fosssim::testing::fosssim_program();
+const std::string kGenerate = fosssim::testing::fosssim_generate_program();
 
 TEST_F(CommandLine3D, WritesAndGradesTheTrajectoryOfAMeshScene) {
   const std::string scene = asset("scenes/tet_box.xml");
-  const Outcome simulate =
+  const ProgramResult simulate =
       run(kFosssim + " -s " + scene + " -d 0 -q --duration 0.05 -o " + path("out.bin"));
-  ASSERT_EQ(simulate.status, 0) << simulate.output;
-  EXPECT_NE(simulate.output.find("Simulation complete"), std::string::npos);
-  const Outcome grade = run(kFosssim + " -s " + scene + " -d 0 -q --duration 0.05 -i " +
-                            path("out.bin") + " --residual-file " + path("residual.txt"));
-  EXPECT_EQ(grade.status, 0) << grade.output;
-  EXPECT_NE(grade.output.find("Overall success: Passed."), std::string::npos) << grade.output;
+  ASSERT_EQ(simulate.status, 0) << simulate.output();
+  EXPECT_NE(simulate.output().find("Simulation complete"), std::string::npos);
+  const ProgramResult grade = run(kFosssim + " -s " + scene + " -d 0 -q --duration 0.05 -i " +
+                                  path("out.bin") + " --residual-file " + path("residual.txt"));
+  EXPECT_EQ(grade.status, 0) << grade.output();
+  EXPECT_NE(grade.output().find("Overall success: Passed."), std::string::npos) << grade.output();
 }
 
 TEST_F(CommandLine3D, RunsTheAssignmentsJsonScenes) {
-  const Outcome json = run(kFosssim + " -s " + asset("json/cloth_9x9.json") +
-                           " -d 0 -q --duration 0.2 -o " + path("j.bin"));
-  EXPECT_EQ(json.status, 0) << json.output;
+  const ProgramResult json = run(kFosssim + " -s " + asset("json/cloth_9x9.json") +
+                                 " -d 0 -q --duration 0.2 -o " + path("j.bin"));
+  EXPECT_EQ(json.status, 0) << json.output();
   EXPECT_EQ(std::filesystem::file_size(path("j.bin")), 7u * 2u * 81u * 3u * 8u);
 }
 
@@ -78,37 +58,37 @@ TEST_F(CommandLine3D, RejectsAMalformedMeshWithItsLineAndStatus2) {
   <integrator type="local-global" dt="0.01"/>
   <clothmesh file="broken.obj" k="1" m="1"/>
 </scene>)");
-  const Outcome result = run(kFosssim + " -s " + scene + " -d 0 -o " + path("out.bin"));
+  const ProgramResult result = run(kFosssim + " -s " + scene + " -d 0 -o " + path("out.bin"));
   EXPECT_EQ(result.status, 2);
-  EXPECT_NE(
-      result.output.find(path("broken.obj") + ":4: error: vertex index 4 is past the last vertex"),
-      std::string::npos)
-      << result.output;
+  EXPECT_NE(result.output().find(path("broken.obj") +
+                                 ":4: error: vertex index 4 is past the last vertex"),
+            std::string::npos)
+      << result.output();
   EXPECT_FALSE(std::filesystem::exists(path("out.bin")));
 }
 
 TEST_F(CommandLine3D, GeneratesMeshesAndJsonScenesThatRun) {
-  const Outcome cloth = run(kGenerate + " -o " + path("c.obj") + " --json " + path("c.json") +
-                            " --k 5000 cloth --nx 6 --ny 4");
-  ASSERT_EQ(cloth.status, 0) << cloth.output;
-  EXPECT_NE(cloth.output.find("24 vertices"), std::string::npos) << cloth.output;
-  const Outcome json = run(kFosssim + " -s " + path("c.json") + " -d 0 -q --duration 0.1");
-  EXPECT_EQ(json.status, 0) << json.output;
-  const Outcome ball = run(kGenerate + " -o " + path("b.mesh") + " tetball --cells 4");
-  ASSERT_EQ(ball.status, 0) << ball.output;
+  const ProgramResult cloth = run(kGenerate + " -o " + path("c.obj") + " --json " + path("c.json") +
+                                  " --k 5000 cloth --nx 6 --ny 4");
+  ASSERT_EQ(cloth.status, 0) << cloth.output();
+  EXPECT_NE(cloth.output().find("24 vertices"), std::string::npos) << cloth.output();
+  const ProgramResult json = run(kFosssim + " -s " + path("c.json") + " -d 0 -q --duration 0.1");
+  EXPECT_EQ(json.status, 0) << json.output();
+  const ProgramResult ball = run(kGenerate + " -o " + path("b.mesh") + " tetball --cells 4");
+  ASSERT_EQ(ball.status, 0) << ball.output();
   write("ball.xml", R"(<scene dim="3">
   <duration time="0.05"/>
   <integrator type="linearly-implicit-euler" dt="0.01"/>
   <tetmesh file="b.mesh" k="100" mass="volume" density="10"><pin axis="y" side="highest" within="0.01"/></tetmesh>
   <simplegravity fx="0" fy="-9.8" fz="0"/>
 </scene>)");
-  const Outcome ball_run = run(kFosssim + " -s " + path("ball.xml") + " -d 0 -q");
-  EXPECT_EQ(ball_run.status, 0) << ball_run.output;
-  const Outcome wrong = run(kGenerate + " -o " + path("b.obj") + " tetbox");
+  const ProgramResult ball_run = run(kFosssim + " -s " + path("ball.xml") + " -d 0 -q");
+  EXPECT_EQ(ball_run.status, 0) << ball_run.output();
+  const ProgramResult wrong = run(kGenerate + " -o " + path("b.obj") + " tetbox");
   EXPECT_EQ(wrong.status, 2);
-  EXPECT_NE(wrong.output.find("MEDIT (.mesh)"), std::string::npos) << wrong.output;
-  const Outcome bad_pins = run(kGenerate + " -o " + path("c2.obj") + " --json " + path("c2.json") +
-                               " --pins middle cloth");
+  EXPECT_NE(wrong.output().find("MEDIT (.mesh)"), std::string::npos) << wrong.output();
+  const ProgramResult bad_pins = run(kGenerate + " -o " + path("c2.obj") + " --json " +
+                                     path("c2.json") + " --pins middle cloth");
   EXPECT_EQ(bad_pins.status, 2);
 }
 

@@ -7,7 +7,7 @@
 #include "core/force_evaluation.h"
 #include "core/forces/spring_set_force.h"
 #include "io/scene_loader.h"
-#include "support/temp_dir.h"
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {
@@ -16,7 +16,7 @@ namespace {
 constexpr const char* kSquare = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
 
 TEST(JsonScene, AppliesTheAssignmentsDefaults) {
-  testing::TempDir dir;
+  testing::ScratchFolder dir;
   dir.write("meshes/square.obj", kSquare);
   const auto scene = load_json_scene_file(
       dir.write("scene.json", R"({"obj": "meshes/square.obj", "k": 250, "b": [1, 4]})"));
@@ -45,7 +45,7 @@ TEST(JsonScene, AppliesTheAssignmentsDefaults) {
 }
 
 TEST(JsonScene, TakesUniformMassesAndOurOptionalKeys) {
-  testing::TempDir dir;
+  testing::ScratchFolder dir;
   dir.write("square.obj", kSquare);
   const auto scene = load_json_scene_file(dir.write("scene.json", R"({
     "obj": "square.obj", "k": 10, "m": 0.25, "h": 0.01, "iterations": 7, "duration": 2,
@@ -62,7 +62,7 @@ TEST(JsonScene, TakesUniformMassesAndOurOptionalKeys) {
 }
 
 TEST(JsonScene, IsChosenByTheSceneLoaderForJsonFiles) {
-  testing::TempDir dir;
+  testing::ScratchFolder dir;
   dir.write("square.obj", kSquare);
   const auto scene = load_scene_file(dir.write("s.json", R"({"obj": "square.obj", "k": 1})"));
   ASSERT_TRUE(scene.has_value()) << scene.error().what();
@@ -76,7 +76,7 @@ struct Bad {
 };
 
 TEST(JsonScene, RejectsBadScenesNamingTheProblem) {
-  testing::TempDir dir;
+  testing::ScratchFolder dir;
   dir.write("square.obj", kSquare);
   dir.write("lines.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n");
   const Bad cases[] = {
@@ -108,12 +108,12 @@ TEST(JsonScene, RejectsBadScenesNamingTheProblem) {
 }
 
 TEST(JsonScene, PassesOnTheMeshFilesErrorsWithTheirLines) {
-  testing::TempDir dir;
+  testing::ScratchFolder dir;
   dir.write("broken.obj", "v 0 0 0\nv 1 0 0\nf 1 7\n");
   const auto scene =
       load_json_scene_file(dir.write("scene.json", R"({"obj": "broken.obj", "k": 1, "m": 1})"));
   ASSERT_FALSE(scene.has_value());
-  EXPECT_EQ(scene.error().file(), dir.path("broken.obj"));
+  EXPECT_EQ(scene.error().file(), (dir / "broken.obj"));
   EXPECT_EQ(scene.error().line(), 3);
   EXPECT_NE(scene.error().problem().find("the \"obj\" of"), std::string::npos);
 }

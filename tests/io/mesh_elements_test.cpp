@@ -6,7 +6,7 @@
 
 #include "core/force_evaluation.h"
 #include "io/scene_loader.h"
-#include "support/temp_dir.h"
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {
@@ -16,7 +16,7 @@ constexpr const char* kTet =
     "Tetrahedra 1\n1 2 3 4 0\nEnd\n";
 
 TEST(MeshElements, ReadMeshesInDocumentOrderAfterXmlParticlesWithSpringsAfterSpringforces) {
-  testing::TempDir dir;
+  testing::ScratchFolder dir;
   dir.write("meshes/tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   dir.write("tet.mesh", kTet);
   const auto scene = load_scene_file(dir.write("scene.xml", R"(<scene dim="3">
@@ -154,7 +154,7 @@ TEST(MeshElements, RejectBadDeclarationsWithTheirLine) {
 }
 
 TEST(MeshElements, AMalformedMeshFileIsReportedAtItsOwnLine) {
-  testing::TempDir dir;
+  testing::ScratchFolder dir;
   dir.write("broken.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices 2\n0 0 0 0\n1 0 0\n");
   const auto scene = load_scene_file(dir.write("s.xml", R"(<scene dim="3">
   <duration time="1"/>
@@ -162,9 +162,9 @@ TEST(MeshElements, AMalformedMeshFileIsReportedAtItsOwnLine) {
   <tetmesh file="broken.mesh" k="1" m="1"/>
 </scene>)"));
   ASSERT_FALSE(scene.has_value());
-  EXPECT_EQ(scene.error().file(), dir.path("broken.mesh"));
+  EXPECT_EQ(scene.error().file(), (dir / "broken.mesh"));
   EXPECT_EQ(scene.error().line(), 5);
-  EXPECT_NE(scene.error().problem().find("(the mesh of " + dir.path("s.xml") + ":4)"),
+  EXPECT_NE(scene.error().problem().find("(the mesh of " + (dir / "s.xml") + ":4)"),
             std::string::npos)
       << scene.error().what();
 }

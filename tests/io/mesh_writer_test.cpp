@@ -9,15 +9,15 @@
 #include "io/medit_reader.h"
 #include "io/obj_reader.h"
 #include "mesh/generators.h"
-#include "support/temp_dir.h"
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {
 
 TEST(MeshWriter, ObjRoundTripKeepsVerticesFacesAndSprings) {
-  testing::TempDir dir;
+  testing::ScratchFolder dir;
   const Mesh skirt = generate_skirt(9, 4, 0.3, 0.7, 1.1, true).mesh;  // irrational coordinates
-  const std::string path = dir.path("skirt.obj");
+  const std::string path = (dir / "skirt.obj");
   ASSERT_EQ(write_obj_file(path, skirt), std::nullopt);
   EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
   const auto read = read_obj_file(path);
@@ -28,9 +28,9 @@ TEST(MeshWriter, ObjRoundTripKeepsVerticesFacesAndSprings) {
 }
 
 TEST(MeshWriter, MeditRoundTripKeepsVerticesAndTets) {
-  testing::TempDir dir;
+  testing::ScratchFolder dir;
   const Mesh ball = generate_tet_ball(5, 0.7).mesh;
-  const std::string path = dir.path("ball.mesh");
+  const std::string path = (dir / "ball.mesh");
   ASSERT_EQ(write_medit_file(path, ball), std::nullopt);
   const auto read = read_medit_file(path);
   ASSERT_TRUE(read.has_value()) << read.error().what();
@@ -39,8 +39,8 @@ TEST(MeshWriter, MeditRoundTripKeepsVerticesAndTets) {
 }
 
 TEST(MeshWriter, ReportsAnUnwritablePath) {
-  testing::TempDir dir;
-  const auto error = write_obj_file(dir.path("missing/dir/cloth.obj"), generate_chain(2, 1.0).mesh);
+  testing::ScratchFolder dir;
+  const auto error = write_obj_file((dir / "missing/dir/cloth.obj"), generate_chain(2, 1.0).mesh);
   ASSERT_TRUE(error.has_value());
   EXPECT_NE(error->find("cannot create"), std::string::npos) << *error;
 }

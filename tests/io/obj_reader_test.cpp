@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "support/temp_dir.h"
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {
@@ -80,8 +80,8 @@ TEST(ObjReader, RejectsMalformedLinesWithTheirNumbers) {
 }
 
 TEST(ObjReader, ReportsMissingFiles) {
-  testing::TempDir dir;
-  const auto mesh = read_obj_file(dir.path("absent.obj"));
+  testing::ScratchFolder dir;
+  const auto mesh = read_obj_file((dir / "absent.obj"));
   ASSERT_FALSE(mesh.has_value());
   EXPECT_NE(std::string(mesh.error().what()).find("cannot open the file"), std::string::npos);
 }

@@ -8,22 +8,15 @@
 #include "grading/grader.h"
 #include "io/scene_loader.h"
 #include "io/trajectory_file.h"
-#include "support/temp_dir.h"
+#include "support/scratch_folder.h"
+#include "support/trajectories.h"
 
 namespace fosssim {
 namespace {
 
 /// Runs the scene, writes its trajectory, and grades it against the scene.
 GradeReport run_and_grade(const Scene& scene, const std::string& path) {
-  auto writer = TrajectoryWriter::open(path);
-  EXPECT_TRUE(writer.has_value());
-  Simulation simulation(scene.model, scene.initial);
-  writer->write_frame(simulation.state());
-  while (!simulation.finished()) {
-    simulation.step();
-    writer->write_frame(simulation.state());
-  }
-  writer->commit();
+  testing::write_simulated_trajectory(scene, path);
   auto file = TrajectoryReader::open(path, scene.model.num_dofs());
   EXPECT_TRUE(file.has_value());
   auto report = grade_trajectory(scene, *file);
@@ -50,11 +43,11 @@ TEST(Scene3D, ParticlesWithZComponentsRunAndGradeWithEveryIntegrator) {
 </scene>)";
     const auto scene = load_scene_text(text, "three.xml");
     ASSERT_TRUE(scene.has_value()) << scene.error().what();
-    testing::TempDir dir;
-    const GradeReport report = run_and_grade(scene.value(), dir.path("out.bin"));
+    testing::ScratchFolder dir;
+    const GradeReport report = run_and_grade(scene.value(), (dir / "out.bin"));
     EXPECT_TRUE(report.passed()) << type;
     EXPECT_EQ(report.steps, 50);
-    EXPECT_EQ(std::filesystem::file_size(dir.path("out.bin")), 51u * 2u * 9u * 8u) << type;
+    EXPECT_EQ(std::filesystem::file_size((dir / "out.bin")), 51u * 2u * 9u * 8u) << type;
   }
 }
 
@@ -64,8 +57,8 @@ TEST(Scene3D, MeshScenesFromTheAssetsRunAndGrade) {
     auto scene = load_scene_file(assets + name);
     ASSERT_TRUE(scene.has_value()) << scene.error().what();
     scene->model.duration = 10 * scene->model.integrator.dt;
-    testing::TempDir dir;
-    EXPECT_TRUE(run_and_grade(scene.value(), dir.path("out.bin")).passed()) << name;
+    testing::ScratchFolder dir;
+    EXPECT_TRUE(run_and_grade(scene.value(), (dir / "out.bin")).passed()) << name;
   }
 }
 

@@ -4,10 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 
 #include "core/integrators/integrator_registry.h"
 #include "io/scene_loader.h"
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {
@@ -33,7 +33,7 @@ struct Case {
   const char* message;
 };
 
-class MalformedScene : public testing::TestWithParam<Case> {};
+class MalformedScene : public ::testing::TestWithParam<Case> {};
 
 TEST_P(MalformedScene, NamesFileLineElementAndProblem) {
   const Case& c = GetParam();
@@ -117,8 +117,10 @@ const Case kCases[] = {
      "bad.xml:3: error: <viewport>: attribute \"size\" must be positive, found 0"},
 };
 
-INSTANTIATE_TEST_SUITE_P(SceneLoader, MalformedScene, testing::ValuesIn(kCases),
-                         [](const testing::TestParamInfo<Case>& info) { return info.param.name; });
+INSTANTIATE_TEST_SUITE_P(SceneLoader, MalformedScene, ::testing::ValuesIn(kCases),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           return info.param.name;
+                         });
 
 TEST(SceneLoaderErrors, UnknownIntegratorListsEveryTypeOfTheRegistry) {
   const std::string error =
@@ -203,12 +205,11 @@ TEST(SceneLoaderErrors, MissingFileAndDirectory) {
 }
 
 TEST(SceneLoaderErrors, EmptyFileOnDisk) {
-  const auto path = std::filesystem::temp_directory_path() / "fosssim_empty_scene.xml";
-  std::ofstream(path).close();
-  const auto scene = load_scene_file(path.string());
-  std::filesystem::remove(path);
+  const testing::ScratchFolder folder;
+  const std::string path = folder.write("empty.xml", "");
+  const auto scene = load_scene_file(path);
   ASSERT_FALSE(scene);
-  EXPECT_EQ(scene.error().file(), path.string());
+  EXPECT_EQ(scene.error().file(), path);
   EXPECT_EQ(scene.error().line(), 0);
   EXPECT_EQ(scene.error().problem(), "the file is empty (expected a <scene> element)");
 }

@@ -8,24 +8,17 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
+
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {
 
 namespace fs = std::filesystem;
 
-class TrajectoryFile : public testing::Test {
+class TrajectoryFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("fosssim_traj_" +
-            std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string path(const std::string& name) const { return folder_ / name; }
 
   static State state(double base) {
     State s;
@@ -33,12 +26,8 @@ class TrajectoryFile : public testing::Test {
     s.v = (Vector(4) << -base, 0.5, 1e-300, -0.0).finished();
     return s;
   }
-  static std::string bytes_of(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-  }
 
-  fs::path dir_;
+  testing::ScratchFolder folder_;
 };
 
 TEST_F(TrajectoryFile, FrameIsPositionsThenVelocitiesAsLittleEndianDoubles) {
@@ -49,7 +38,7 @@ TEST_F(TrajectoryFile, FrameIsPositionsThenVelocitiesAsLittleEndianDoubles) {
   s.v = (Vector(2) << -1.0, 0.5).finished();
   writer->write_frame(s);
   writer->commit();
-  const std::string bytes = bytes_of(path("t.bin"));
+  const std::string bytes = testing::read_file(path("t.bin"));
   const unsigned char expected[] = {
       0, 0, 0, 0, 0, 0, 0xf0, 0x3f,  // 1.0
       0, 0, 0, 0, 0, 0, 0x00, 0x40,  // 2.0
@@ -96,7 +85,7 @@ TEST_F(TrajectoryFile, UnfinishedRunKeepsFramesAsIncompleteAndLeavesEarlierFileA
     writer->write_frame(state(1));
     writer->write_frame(state(2));
   }  // destroyed without commit, as when a run fails
-  EXPECT_EQ(bytes_of(path("t.bin")), "an earlier complete run");
+  EXPECT_EQ(testing::read_file(path("t.bin")), "an earlier complete run");
   EXPECT_FALSE(fs::exists(path("t.bin.partial")));
   EXPECT_EQ(fs::file_size(path("t.bin.incomplete")), 2u * 8 * sizeof(double));
 }

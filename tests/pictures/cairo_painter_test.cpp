@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "support/program_runner.h"
-#include "support/tiny_scene.h"
+#include "support/scratch_folder.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {

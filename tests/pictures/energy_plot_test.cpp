@@ -10,7 +10,7 @@
 
 #include "pictures/cairo_painter.h"
 #include "support/pixel_counts.h"
-#include "support/program_runner.h"
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {

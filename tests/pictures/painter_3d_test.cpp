@@ -6,8 +6,9 @@
 
 #include "pictures/cairo_painter.h"
 #include "render/drawing_3d.h"
-#include "support/program_runner.h"
-#include "support/tiny_scene_3d.h"
+#include "support/scene_builder.h"
+#include "support/scratch_folder.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {

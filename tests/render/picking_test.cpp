@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/step/simulation.h"
-#include "support/test_scenes.h"
+#include "support/scene_builder.h"
 #include "viewer/particle_grab.h"
 
 namespace fosssim {

@@ -7,7 +7,7 @@
 #include "io/scene_loader.h"
 #include "io/trajectory_file.h"
 #include "scripting/particle_fountain.h"
-#include "support/program_runner.h"
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {

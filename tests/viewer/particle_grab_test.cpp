@@ -8,7 +8,8 @@
 #include <numbers>
 
 #include "io/scene_loader.h"
-#include "support/tiny_scene_3d.h"
+#include "support/scene_builder.h"
+#include "support/tiny_scenes.h"
 #include "viewer/particle_grab.h"
 #include "viewer/stepper.h"
 

@@ -8,7 +8,7 @@
 #include "core/step_error.h"
 #include "io/scene_loader.h"
 #include "io/trajectory_file.h"
-#include "support/program_runner.h"
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {

@@ -10,7 +10,7 @@
 #include "core/forces/drag_spring_force.h"
 #include "core/forces/gravitational_force.h"
 #include "core/forces/vortex_force.h"
-#include "support/test_scenes.h"
+#include "support/scene_builder.h"
 #include "viewer/particle_grab.h"
 
 namespace fosssim {

@@ -7,7 +7,7 @@
 #include "core/force_evaluation.h"
 #include "core/integrators/implicit_euler.h"
 #include "core/integrators/linearized_implicit_euler.h"
-#include "support/test_scenes.h"
+#include "support/scene_builder.h"
 
 namespace fosssim {
 namespace {
@@ -16,9 +16,10 @@ TEST(LinearlyImplicitEuler, OneStepOfASpringMatchesTheHandComputedSolution) {
   // Along the spring: (m + h²k) v⁺ = m v - h k (x - l0), x⁺ = x + h v⁺.
   const double m = 2.0, k = 50.0, l0 = 1.0, h = 0.1, x = 1.3, v = 0.4;
   const Eigen::Vector3d n = Eigen::Vector3d(2.0, 3.0, 6.0) / 7.0;
-  Scene scene = testing::particles(3, {0, 0, 0, x * n.x(), x * n.y(), x * n.z()}, m, {true, false});
+  testing::TestScene scene =
+      testing::particles(3, {0, 0, 0, x * n.x(), x * n.y(), x * n.z()}, m, {true, false});
   scene.initial.v.segment<3>(3) = v * n;
-  testing::add_spring(scene, 0, 1, k, l0);
+  scene.add_spring(0, 1, k, l0);
   scene.model.integrator.use(integrator_method("linearly-implicit-euler"));
   scene.model.integrator.dt = h;
   State state = scene.initial;
@@ -32,9 +33,9 @@ TEST(LinearlyImplicitEuler, OneStepOfASpringMatchesTheHandComputedSolution) {
 TEST(LinearlyImplicitEuler, TransverseMotionUsesTheFullSpringHessian) {
   // Moving across a stretched spring: (m I + h² H) δv = h F - h² H v, H = k[P + (1 - l0/l)(I - P)].
   const double m = 1.0, k = 10.0, l0 = 0.5, h = 0.05;
-  Scene scene = testing::particles(3, {0, 0, 0, 1, 0, 0}, m, {true, false});
+  testing::TestScene scene = testing::particles(3, {0, 0, 0, 1, 0, 0}, m, {true, false});
   scene.initial.v.segment<3>(3) << 0.0, 2.0, -1.0;
-  testing::add_spring(scene, 0, 1, k, l0);
+  scene.add_spring(0, 1, k, l0);
   scene.model.integrator.use(integrator_method("linearly-implicit-euler"));
   scene.model.integrator.dt = h;
   State state = scene.initial;
@@ -89,9 +90,9 @@ TEST(LinearlyImplicitEuler, DiffersFromTheCompatLinearizationAndFromNewtonByOhCu
 TEST(LinearlyImplicitEuler, ProjectedHessianChangesOnlyCompressedSprings) {
   // Two particles 0.5 apart on a spring of rest length 1 (compressed), moving sideways.
   auto step = [](bool project, double l0) {
-    Scene scene = testing::particles(3, {0, 0, 0, 0.5, 0, 0}, 1.0, {true, false});
+    testing::TestScene scene = testing::particles(3, {0, 0, 0, 0.5, 0, 0}, 1.0, {true, false});
     scene.initial.v.segment<3>(3) << 0.0, 1.0, 0.0;
-    testing::add_spring(scene, 0, 1, 100.0, l0);
+    scene.add_spring(0, 1, 100.0, l0);
     scene.model.integrator.use(integrator_method("linearly-implicit-euler"));
     scene.model.integrator.dt = 0.1;
     scene.model.integrator.options.set("hessian", project ? "projected" : "exact");
@@ -108,12 +109,12 @@ TEST(LinearlyImplicitEuler, ProjectedHessianChangesOnlyCompressedSprings) {
 TEST(LinearlyImplicitEuler, SolvesIndefiniteSystemsCorrectly) {
   // Strongly compressed stiff springs make M + h² hessX indefinite; the answer must still
   // satisfy the linear system (the LDLᵀ residual check falls back to LU when needed).
-  Scene scene =
+  testing::TestScene scene =
       testing::particles(3, {0, 0, 0, 0.1, 0, 0, 0.1, 0.1, 0}, 1e-3, {true, false, false});
   scene.initial.v.setConstant(0.3);
   scene.initial.v.head(3).setZero();
-  testing::add_spring(scene, 0, 1, 1e4, 1.0);
-  testing::add_spring(scene, 1, 2, 1e4, 1.0);
+  scene.add_spring(0, 1, 1e4, 1.0);
+  scene.add_spring(1, 2, 1e4, 1.0);
   scene.model.integrator.use(integrator_method("linearly-implicit-euler"));
   scene.model.integrator.dt = 0.01;
   State state = scene.initial;

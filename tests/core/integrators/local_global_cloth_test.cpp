@@ -7,7 +7,7 @@
 #include "core/integrators/implicit_euler.h"
 #include "core/integrators/local_global.h"
 #include "core/step/simulation.h"
-#include "support/test_scenes.h"
+#include "support/scene_builder.h"
 
 namespace fosssim {
 namespace {

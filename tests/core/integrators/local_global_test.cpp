@@ -11,7 +11,7 @@
 #include "core/integrators/implicit_euler.h"
 #include "core/integrators/linearly_implicit_euler.h"
 #include "core/step/simulation.h"
-#include "support/test_scenes.h"
+#include "support/scene_builder.h"
 #include "viewer/particle_grab.h"
 
 namespace fosssim {
@@ -21,11 +21,12 @@ constexpr double kPi = std::numbers::pi;
 
 /// A unit mass on a spring (k = 4π², so ω = 2π; rest length 1) to a fixed particle at the
 /// origin, released 0.1 m stretched along the unit direction `axis` (in dim dimensions).
-Scene oscillator(int dim, std::string_view kind, double dt, const Eigen::Vector3d& axis) {
+testing::TestScene oscillator(int dim, std::string_view kind, double dt,
+                              const Eigen::Vector3d& axis) {
   std::vector<double> positions(2 * dim, 0.0);
   for (int c = 0; c < dim; ++c) positions[dim + c] = 1.1 * axis[c];
-  Scene scene = testing::particles(dim, positions, 1.0, {true, false});
-  testing::add_spring(scene, 0, 1, 4.0 * kPi * kPi, 1.0);
+  testing::TestScene scene = testing::particles(dim, positions, 1.0, {true, false});
+  scene.add_spring(0, 1, 4.0 * kPi * kPi, 1.0);
   scene.model.integrator.use(integrator_method(kind));
   scene.model.integrator.dt = dt;
   scene.model.duration = 1.0;
@@ -82,11 +83,11 @@ TEST(LocalGlobal, SingleSpringMatchesNewtonsImplicitEulerStepByStep) {
 TEST(LocalGlobal, SpringDampingAlongTheSpringEqualsAxialDamping) {
   // Laplacian damping -b(v_i - v_j) equals SpringForce's b (n·dv) n when dv is along n.
   const Eigen::Vector3d axis = Eigen::Vector3d(1.0, 2.0, 2.0) / 3.0;
-  Scene lg = oscillator(3, "local-global", 0.01, axis);
-  Scene newton = oscillator(3, "implicit-euler", 0.01, axis);
-  for (Scene* scene : {&lg, &newton}) {
+  testing::TestScene lg = oscillator(3, "local-global", 0.01, axis);
+  testing::TestScene newton = oscillator(3, "implicit-euler", 0.01, axis);
+  for (testing::TestScene* scene : {&lg, &newton}) {
     scene->model.forces.clear();
-    testing::add_spring(*scene, 0, 1, 4.0 * kPi * kPi, 1.0, 1.5);
+    scene->add_spring(0, 1, 4.0 * kPi * kPi, 1.0, 1.5);
   }
   Simulation a(lg.model, lg.initial), b(newton.model, newton.initial);
   for (int step = 0; step < 100; ++step) {
@@ -98,9 +99,9 @@ TEST(LocalGlobal, SpringDampingAlongTheSpringEqualsAxialDamping) {
 }
 
 TEST(LocalGlobal, GravityAloneIsExact) {
-  Scene scene = testing::particles(2, {0.0, 0.0, 1.0, 0.0}, 2.0, {false, false});
+  testing::TestScene scene = testing::particles(2, {0.0, 0.0, 1.0, 0.0}, 2.0, {false, false});
   scene.initial.v << 1.0, 3.0, -1.0, 0.0;
-  testing::add_gravity(scene, 9.8);
+  scene.add_simple_gravity(testing::vec({0.0, -9.8}));
   scene.model.integrator.use(integrator_method("local-global"));
   scene.model.integrator.dt = 0.05;
   Simulation simulation(scene.model, scene.initial);
