@@ -11,7 +11,6 @@
 #include "core/forces/gravitational_force.h"
 #include "core/forces/vortex_force.h"
 #include "support/scene_builder.h"
-#include "viewer/particle_grab.h"
 
 namespace fosssim {
 namespace {

@@ -12,7 +12,6 @@
 #include "core/integrators/linearly_implicit_euler.h"
 #include "core/step/simulation.h"
 #include "support/scene_builder.h"
-#include "viewer/particle_grab.h"
 
 namespace fosssim {
 namespace {
