@@ -36,15 +36,13 @@ bool GradeReport::passed() const {
          max_position_passed() && max_velocity_passed();
 }
 
-Expected<GradeReport, std::string> grade_trajectory(const Scene& scene, TrajectoryReader& file,
-                                                    const GradingCriteria& criteria,
-                                                    const GradingProgress& progress) {
-  auto grader = StepGrader::open(scene, file, criteria);
-  if (!grader) return grader.error();
-  while (grader->grade_next_step()) {
-    if (progress) progress(grader->steps_graded(), grader->report().steps);
+GradeReport grade_trajectory(const Scene& scene, TrajectoryReader& file,
+                             const GradingCriteria& criteria, const GradingProgress& progress) {
+  StepGrader grader = StepGrader::open(scene, file, criteria);
+  while (grader.grade_next_step()) {
+    if (progress) progress(grader.steps_graded(), grader.report().steps);
   }
-  return grader->report();
+  return grader.report();
 }
 
 void print_grade_report(std::ostream& out, const GradeReport& report) {
@@ -55,12 +53,11 @@ void print_grade_report(std::ostream& out, const GradeReport& report) {
 }
 
 void write_residual_file(const std::string& path, const GradeReport& report) {
-  const auto problem = write_output_file(path, [&report](std::ostream& out) {
+  write_output_file(path, [&report](std::ostream& out) {
     for (const Criterion& c : criteria_of(report)) {
       out << (c.passed ? 1 : 0) << "   " << c.value << "\n";
     }
   });
-  if (problem) throw std::runtime_error(*problem);
 }
 
 std::string describe_failure(const GradeReport& report, int dim) {

@@ -76,10 +76,13 @@ class JsonSceneParser {
     material.k = non_negative(root, "k", -1.0);
     material.mass = root.contains("m") ? MassRule{MassRule::kUniform, positive(root, "m", 0.0)}
                                        : MassRule{MassRule::kArea, JsonSceneDefaults::kAreaDensity};
-    auto springs =
-        append_mesh(scene_, mesh, material, pinned(root, mesh.num_vertices()), "obj mesh");
-    if (!springs) fail(springs.error());
-    model.forces.push_back(std::move(springs).value());
+    std::unique_ptr<Force> springs;
+    try {
+      springs = append_mesh(scene_, mesh, material, pinned(root, mesh.num_vertices()), "obj mesh");
+    } catch (const Error& error) {
+      fail(error.what());
+    }
+    model.forces.push_back(std::move(springs));
     model.forces.push_back(
         std::make_unique<ConstantForce<3>>(Vec<3>(0.0, JsonSceneDefaults::kGravity, 0.0)));
     return std::move(scene_);
@@ -167,9 +170,9 @@ void KeyOptions::fail(std::string_view name, const std::string& problem) {
 
 }  // namespace
 
-Expected<Scene, SceneError> load_json_scene_text(std::string_view text, const std::string& name) {
+Scene load_json_scene_text(std::string_view text, const std::string& name) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
-    return SceneError(name, 0, "", "the file is empty (expected a JSON object)");
+    throw SceneError(name, 0, "", "the file is empty (expected a JSON object)");
   }
   json root;
   try {
@@ -178,14 +181,14 @@ Expected<Scene, SceneError> load_json_scene_text(std::string_view text, const st
     std::string what = error.what();
     if (const auto colon = what.find("syntax error"); colon != std::string::npos)
       what = what.substr(colon);
-    return SceneError(name, line_of(text, error.byte == 0 ? 0 : error.byte - 1), "",
-                      "not valid JSON: " + what);
+    throw SceneError(name, line_of(text, error.byte == 0 ? 0 : error.byte - 1), "",
+                     "not valid JSON: " + what);
   }
-  return catch_scene_error<Scene>([&] { return JsonSceneParser(name).parse(root); });
+  return JsonSceneParser(name).parse(root);
 }
 
-Expected<Scene, SceneError> load_json_scene_file(const std::string& path) {
-  return parse_text_file<Scene>(path, load_json_scene_text);
+Scene load_json_scene_file(const std::string& path) {
+  return parse_text_file(path, load_json_scene_text);
 }
 
 }  // namespace fosssim

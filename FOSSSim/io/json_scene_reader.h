@@ -4,7 +4,6 @@
 #include <string>
 #include <string_view>
 
-#include "core/expected.h"
 #include "core/scene.h"
 #include "io/scene_error.h"
 
@@ -29,12 +28,12 @@ struct JsonSceneDefaults {
 /// is 3D, runs the local/global integrator with the assignment's defaults (JsonSceneDefaults:
 /// h = 1/30 s, 50 iterations, pins by penalty w = 1e10) and applies a force of -9.8 N along y
 /// to every vertex (a constant force, not m·g, as in the assignment). Optional keys of ours:
-/// "h", "iterations", "duration". Other keys become warnings. Errors name the file (and, for
-/// malformed JSON, the line) and the problem.
-Expected<Scene, SceneError> load_json_scene_file(const std::string& path);
+/// "h", "iterations", "duration". Other keys become warnings. Errors (SceneError) name the
+/// file (and, for malformed JSON, the line) and the problem.
+Scene load_json_scene_file(const std::string& path);
 
 /// Reads JSON text; `name` stands for the file in messages and its directory is where a
 /// relative "obj" path starts.
-Expected<Scene, SceneError> load_json_scene_text(std::string_view text, const std::string& name);
+Scene load_json_scene_text(std::string_view text, const std::string& name);
 
 }  // namespace fosssim

@@ -189,9 +189,13 @@ std::vector<std::unique_ptr<Force>> read_mesh_elements(const XMLElement& root, S
     }
     std::sort(mesh.pinned.begin(), mesh.pinned.end());
     mesh.pinned.erase(std::unique(mesh.pinned.begin(), mesh.pinned.end()), mesh.pinned.end());
-    auto force = append_mesh(scene, mesh.mesh, material, mesh.pinned, mesh.label);
-    if (!force) r.fail(force.error());
-    forces.push_back(std::move(force).value());
+    std::unique_ptr<Force> force;
+    try {
+      force = append_mesh(scene, mesh.mesh, material, mesh.pinned, mesh.label);
+    } catch (const Error& error) {
+      r.fail(error.what());
+    }
+    forces.push_back(std::move(force));
     for (auto& warning : r.unknown_attribute_warnings()) scene.warnings.push_back(warning);
   }
   return forces;

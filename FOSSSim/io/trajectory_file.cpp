@@ -64,10 +64,13 @@ TrajectoryWriter::~TrajectoryWriter() {
   if (!finished_) abandon();
 }
 
-Expected<TrajectoryWriter, std::string> TrajectoryWriter::open(const std::string& path) {
+TrajectoryWriter TrajectoryWriter::open(const std::string& path) {
   OutputFile output(path);
   std::FILE* file = std::fopen(output.write_path().c_str(), "wb");
-  if (file == nullptr) return "cannot create " + output.write_path() + ": " + system_reason();
+  if (file == nullptr) {
+    throw Error(ErrorKind::kCannotWrite,
+                "cannot create " + output.write_path() + ": " + system_reason());
+  }
   std::setvbuf(file, nullptr, _IOFBF, 1 << 20);
   return TrajectoryWriter(path, std::move(output), file);
 }
@@ -80,7 +83,8 @@ void TrajectoryWriter::write_doubles(const double* data, std::size_t count) {
     data = swapped.data();
   }
   if (std::fwrite(data, sizeof(double), count, file_) != count) {
-    throw std::runtime_error("cannot write " + output_.write_path() + ": " + system_reason());
+    throw Error(ErrorKind::kCannotWrite,
+                "cannot write " + output_.write_path() + ": " + system_reason());
   }
 }
 
@@ -100,11 +104,11 @@ void TrajectoryWriter::commit() {
   const std::string& partial = output_.write_path();
   // fsync makes the renamed file durable; devices such as /dev/null do not support it.
   if (std::fflush(file_) != 0 || (!output_.in_place() && ::fsync(fileno(file_)) != 0)) {
-    throw std::runtime_error("cannot write " + partial + ": " + system_reason());
+    throw Error(ErrorKind::kCannotWrite, "cannot write " + partial + ": " + system_reason());
   }
   if (std::fclose(file_) != 0) {
     file_ = nullptr;
-    throw std::runtime_error("cannot write " + partial + ": " + system_reason());
+    throw Error(ErrorKind::kCannotWrite, "cannot write " + partial + ": " + system_reason());
   }
   file_ = nullptr;
   output_.commit();
@@ -123,20 +127,21 @@ std::string TrajectoryWriter::abandon() {
 TrajectoryReader::TrajectoryReader(std::string path, std::FILE* file, int dofs, std::int64_t frames)
     : path_(std::move(path)), file_(file), dofs_(dofs), num_frames_(frames) {}
 
-Expected<TrajectoryReader, std::string> TrajectoryReader::open(const std::string& path, int dofs) {
+TrajectoryReader TrajectoryReader::open(const std::string& path, int dofs) {
+  const auto fail = [](const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); };
   std::error_code error;
-  if (std::filesystem::is_directory(path, error)) return path + " is a directory, not a trajectory";
+  if (std::filesystem::is_directory(path, error)) fail(path + " is a directory, not a trajectory");
   const auto size = std::filesystem::file_size(path, error);
-  if (error) return "cannot read " + path + ": " + error.message();
+  if (error) fail("cannot read " + path + ": " + error.message());
   std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (file == nullptr) return "cannot open " + path + ": " + system_reason();
+  if (file == nullptr) fail("cannot open " + path + ": " + system_reason());
   const std::int64_t frame_bytes = trajectory_frame_bytes(dofs);
   const auto bytes = static_cast<std::int64_t>(size);
   if (frame_bytes == 0 || bytes % frame_bytes != 0) {
     std::fclose(file);
-    return path + " has " + std::to_string(bytes) + " bytes, not a whole number of frames of " +
-           std::to_string(frame_bytes) + " bytes (" + std::to_string(dofs) +
-           " positions and velocities); it was cut short or is for another scene";
+    fail(path + " has " + std::to_string(bytes) + " bytes, not a whole number of frames of " +
+         std::to_string(frame_bytes) + " bytes (" + std::to_string(dofs) +
+         " positions and velocities); it was cut short or is for another scene");
   }
   return TrajectoryReader(path, file, dofs, bytes / frame_bytes);
 }
@@ -149,7 +154,7 @@ void TrajectoryReader::read_frame(std::int64_t k, Vector& q, Vector& v) {
   if (std::fseek(file_.get(), static_cast<long>(offset), SEEK_SET) != 0 ||
       std::fread(q.data(), sizeof(double), count, file_.get()) != count ||
       std::fread(v.data(), sizeof(double), count, file_.get()) != count) {
-    throw std::runtime_error("cannot read frame " + std::to_string(k) + " of " + path_);
+    throw Error(ErrorKind::kBadInput, "cannot read frame " + std::to_string(k) + " of " + path_);
   }
   to_little_endian(q.data(), count);
   to_little_endian(v.data(), count);

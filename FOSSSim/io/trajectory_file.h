@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "core/expected.h"
+#include "core/error.h"
 #include "core/state.h"
 #include "io/output_file.h"
 
@@ -20,14 +20,15 @@ namespace fosssim {
 /// place, never renamed over (io/output_file.h).
 class TrajectoryWriter {
  public:
-  /// Creates "<path>.partial"; the error names the path and the system's reason.
-  static Expected<TrajectoryWriter, std::string> open(const std::string& path);
+  /// Creates "<path>.partial". Throws Error (kCannotWrite) naming the path and the system's
+  /// reason.
+  static TrajectoryWriter open(const std::string& path);
 
   TrajectoryWriter(TrajectoryWriter&&) noexcept;
   TrajectoryWriter& operator=(TrajectoryWriter&&) noexcept;
   ~TrajectoryWriter();
 
-  /// Appends state.q then state.v. Throws std::runtime_error on an I/O error (disk full).
+  /// Appends state.q then state.v. Throws Error (kCannotWrite) on an I/O error (disk full).
   void write_frame(const State& state);
   /// Flushes to disk and renames the file to its final name. Throws on an I/O error.
   void commit();
@@ -50,13 +51,15 @@ class TrajectoryWriter {
 /// Reads frames of a trajectory file with random access.
 class TrajectoryReader {
  public:
-  /// Opens a trajectory whose frames hold `dofs` positions and `dofs` velocities. Fails with a
-  /// message when the file is missing or its size is not a whole number of frames.
-  static Expected<TrajectoryReader, std::string> open(const std::string& path, int dofs);
+  /// Opens a trajectory whose frames hold `dofs` positions and `dofs` velocities. Throws Error
+  /// (kBadInput) when the file is missing or its size is not a whole number of frames.
+  static TrajectoryReader open(const std::string& path, int dofs);
 
   std::int64_t num_frames() const { return num_frames_; }
   int dofs() const { return dofs_; }
-  /// Reads frame k (0-based) into q and v (resized to dofs). Throws on an I/O error.
+  const std::string& path() const { return path_; }
+  /// Reads frame k (0-based) into q and v (resized to dofs). Throws Error (kBadInput) on an I/O
+  /// error.
   void read_frame(std::int64_t k, Vector& q, Vector& v);
 
  private:

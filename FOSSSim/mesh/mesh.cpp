@@ -95,10 +95,10 @@ double compute_triangle_area(const Mesh& mesh, const std::array<int, 3>& triangl
   return 0.5 * (mesh.vertices[triangle[1]] - a).cross(mesh.vertices[triangle[2]] - a).norm();
 }
 
-Expected<std::vector<double>, std::string> compute_vertex_masses(const Mesh& mesh,
-                                                                 const MassRule& rule) {
+std::vector<double> compute_vertex_masses(const Mesh& mesh, const MassRule& rule) {
+  const auto fail = [](const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); };
   const int n = mesh.num_vertices();
-  if (n == 0) return std::string("the mesh has no vertices");
+  if (n == 0) fail("the mesh has no vertices");
   std::vector<double> mass(n, 0.0);
   switch (rule.kind) {
     case MassRule::kUniform:
@@ -108,8 +108,7 @@ Expected<std::vector<double>, std::string> compute_vertex_masses(const Mesh& mes
       std::fill(mass.begin(), mass.end(), rule.value / n);
       return mass;
     case MassRule::kArea: {
-      if (mesh.faces.empty())
-        return std::string("masses from areas need faces, and the mesh has none");
+      if (mesh.faces.empty()) fail("masses from areas need faces, and the mesh has none");
       for (const auto& triangle : compute_face_triangles(mesh)) {
         const double share = rule.value * compute_triangle_area(mesh, triangle) / 3.0;
         for (int corner : triangle) mass[corner] += share;
@@ -117,8 +116,7 @@ Expected<std::vector<double>, std::string> compute_vertex_masses(const Mesh& mes
       break;
     }
     case MassRule::kVolume: {
-      if (mesh.tets.empty())
-        return std::string("masses from volumes need tets, and the mesh has none");
+      if (mesh.tets.empty()) fail("masses from volumes need tets, and the mesh has none");
       for (const auto& tet : mesh.tets) {
         const double share = rule.value * std::abs(compute_tet_volume(mesh, tet)) / 4.0;
         for (int corner : tet) mass[corner] += share;
@@ -128,9 +126,9 @@ Expected<std::vector<double>, std::string> compute_vertex_masses(const Mesh& mes
   }
   for (int v = 0; v < n; ++v) {
     if (!(mass[v] > 0.0)) {
-      return "vertex " + std::to_string(v) + " (0-based) gets no mass: it lies on no " +
-             (rule.kind == MassRule::kArea ? "face of positive area" : "tet of positive volume") +
-             "; give masses per vertex instead";
+      fail("vertex " + std::to_string(v) + " (0-based) gets no mass: it lies on no " +
+           (rule.kind == MassRule::kArea ? "face of positive area" : "tet of positive volume") +
+           "; give masses per vertex instead");
     }
   }
   return mass;

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/expected.h"
+#include "core/error.h"
 
 namespace fosssim {
 
@@ -54,11 +54,10 @@ struct MassRule {
   double value = 1.0;
 };
 
-/// Lumped vertex masses by the rule. Fails, naming the first such vertex, when a vertex would
-/// get no mass (a vertex on no face under kArea, on no tet under kVolume), or when the mesh
-/// has no face (kArea) or no tet (kVolume).
-Expected<std::vector<double>, std::string> compute_vertex_masses(const Mesh& mesh,
-                                                                 const MassRule& rule);
+/// Lumped vertex masses by the rule. Throws Error (kBadInput), naming the first such vertex,
+/// when a vertex would get no mass (a vertex on no face under kArea, on no tet under kVolume),
+/// or when the mesh has no face (kArea) or no tet (kVolume).
+std::vector<double> compute_vertex_masses(const Mesh& mesh, const MassRule& rule);
 
 /// The vertices whose coordinate along `axis` (0 x, 1 y, 2 z) is within `within` (≥ 0) of
 /// the lowest (or, with highest, the highest) value among all vertices: CSC417's "within 3

@@ -92,6 +92,27 @@ TEST_F(CommandLine, RunWritesTheTrajectoryAndSaysTheCompatMessage) {
   EXPECT_FALSE(exists("out.bin.partial"));
 }
 
+TEST_F(CommandLine, AtATerminalARunSaysWhatItWroteAndWhere) {
+  // `script` runs the program with a terminal as its standard error, as a person would.
+  const char* script = "/usr/bin/script";  // util-linux, on every Debian machine
+  if (!fs::exists(script)) GTEST_SKIP() << "no " << script;
+  const ProgramResult r = testing::run_program(
+      {script, "-qec",
+       testing::fosssim_program() + " -s spring.xml -d 0 -o out.bin --energy-csv e.csv",
+       "/dev/null"},
+      folder_.path().string());
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("FOSSSim: wrote the trajectory out.bin (101 frames) and the energies e.csv"),
+            std::string::npos)
+      << r.out;
+  // With -q, or when standard error is not a terminal (the course's scripts), it says nothing.
+  const ProgramResult quiet = testing::run_program(
+      {script, "-qec", testing::fosssim_program() + " -s spring.xml -d 0 -q -o out.bin",
+       "/dev/null"},
+      folder_.path().string());
+  EXPECT_EQ(quiet.out.find("FOSSSim: wrote"), std::string::npos) << quiet.out;
+}
+
 TEST_F(CommandLine, RunWithoutOutputFileStillCompletes) {
   const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "-q"});
   EXPECT_EQ(r.status, 0) << r.err;

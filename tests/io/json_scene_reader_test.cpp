@@ -8,6 +8,7 @@
 #include "core/forces/spring_set_force.h"
 #include "io/scene_loader.h"
 #include "support/scratch_folder.h"
+#include "support/thrown.h"
 
 namespace fosssim {
 namespace {
@@ -20,8 +21,7 @@ TEST(JsonScene, AppliesTheAssignmentsDefaults) {
   dir.write("meshes/square.obj", kSquare);
   const auto scene = load_json_scene_file(
       dir.write("scene.json", R"({"obj": "meshes/square.obj", "k": 250, "b": [1, 4]})"));
-  ASSERT_TRUE(scene.has_value()) << scene.error().what();
-  const SceneModel& model = scene->model;
+  const SceneModel& model = scene.model;
   EXPECT_EQ(model.dim, 3);
   EXPECT_EQ(model.integrator.method->name, "local-global");
   EXPECT_EQ(model.integrator.dt, 1.0 / 30.0);
@@ -36,12 +36,12 @@ TEST(JsonScene, AppliesTheAssignmentsDefaults) {
   // Springs: the 5 distinct edges of the two triangles, at rest; gravity -9.8 N on every vertex.
   EXPECT_EQ(model.edges.size(), 5u);
   ASSERT_EQ(model.forces.size(), 2u);
-  const Vector force = compute_force(ForceSet(model), scene->initial.q, scene->initial.v);
+  const Vector force = compute_force(ForceSet(model), scene.initial.q, scene.initial.v);
   for (int p = 0; p < 4; ++p) EXPECT_EQ(force.segment<3>(3 * p), Eigen::Vector3d(0.0, -9.8, 0.0));
   const auto* springs = dynamic_cast<const SpringSetForce<3>*>(model.forces[0].get());
   ASSERT_NE(springs, nullptr);
   EXPECT_EQ(springs->springs()[0].k, 250.0);
-  EXPECT_TRUE(scene->warnings.empty());
+  EXPECT_TRUE(scene.warnings.empty());
 }
 
 TEST(JsonScene, TakesUniformMassesAndOurOptionalKeys) {
@@ -51,22 +51,20 @@ TEST(JsonScene, TakesUniformMassesAndOurOptionalKeys) {
     "obj": "square.obj", "k": 10, "m": 0.25, "h": 0.01, "iterations": 7, "duration": 2,
     "colour": "red"
   })"));
-  ASSERT_TRUE(scene.has_value()) << scene.error().what();
-  EXPECT_EQ(scene->model.mass, Vector::Constant(12, 0.25));
-  EXPECT_EQ(scene->model.integrator.dt, 0.01);
-  EXPECT_EQ(scene->model.integrator.options.integer("iterations"), 7);
-  EXPECT_EQ(scene->model.num_steps(), 200);
-  EXPECT_EQ(scene->model.fixed, std::vector<bool>(4, false));
-  ASSERT_EQ(scene->warnings.size(), 1u);
-  EXPECT_NE(scene->warnings[0].find("unknown key \"colour\""), std::string::npos);
+  EXPECT_EQ(scene.model.mass, Vector::Constant(12, 0.25));
+  EXPECT_EQ(scene.model.integrator.dt, 0.01);
+  EXPECT_EQ(scene.model.integrator.options.integer("iterations"), 7);
+  EXPECT_EQ(scene.model.num_steps(), 200);
+  EXPECT_EQ(scene.model.fixed, std::vector<bool>(4, false));
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_NE(scene.warnings[0].find("unknown key \"colour\""), std::string::npos);
 }
 
 TEST(JsonScene, IsChosenByTheSceneLoaderForJsonFiles) {
   testing::ScratchFolder dir;
   dir.write("square.obj", kSquare);
   const auto scene = load_scene_file(dir.write("s.json", R"({"obj": "square.obj", "k": 1})"));
-  ASSERT_TRUE(scene.has_value()) << scene.error().what();
-  EXPECT_EQ(scene->model.integrator.method->name, "local-global");
+  EXPECT_EQ(scene.model.integrator.method->name, "local-global");
 }
 
 struct Bad {
@@ -99,23 +97,22 @@ TEST(JsonScene, RejectsBadScenesNamingTheProblem) {
   };
   for (const Bad& c : cases) {
     const std::string path = dir.write("bad.json", c.json);
-    const auto scene = load_json_scene_file(path);
-    ASSERT_FALSE(scene.has_value()) << c.json;
-    EXPECT_EQ(scene.error().file(), path);
-    EXPECT_EQ(scene.error().line(), c.line) << scene.error().what();
-    EXPECT_NE(scene.error().problem().find(c.problem), std::string::npos) << scene.error().what();
+    const SceneError scene_error = thrown_by<SceneError>([&] { load_json_scene_file(path); });
+    EXPECT_EQ(scene_error.file(), path);
+    EXPECT_EQ(scene_error.line(), c.line) << scene_error.what();
+    EXPECT_NE(scene_error.problem().find(c.problem), std::string::npos) << scene_error.what();
   }
 }
 
 TEST(JsonScene, PassesOnTheMeshFilesErrorsWithTheirLines) {
   testing::ScratchFolder dir;
   dir.write("broken.obj", "v 0 0 0\nv 1 0 0\nf 1 7\n");
-  const auto scene =
-      load_json_scene_file(dir.write("scene.json", R"({"obj": "broken.obj", "k": 1, "m": 1})"));
-  ASSERT_FALSE(scene.has_value());
-  EXPECT_EQ(scene.error().file(), (dir / "broken.obj"));
-  EXPECT_EQ(scene.error().line(), 3);
-  EXPECT_NE(scene.error().problem().find("the \"obj\" of"), std::string::npos);
+  const SceneError scene_error = thrown_by<SceneError>([&] {
+    load_json_scene_file(dir.write("scene.json", R"({"obj": "broken.obj", "k": 1, "m": 1})"));
+  });
+  EXPECT_EQ(scene_error.file(), (dir / "broken.obj"));
+  EXPECT_EQ(scene_error.line(), 3);
+  EXPECT_NE(scene_error.problem().find("the \"obj\" of"), std::string::npos);
 }
 
 }  // namespace

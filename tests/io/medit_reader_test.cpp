@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/thrown.h"
+
 namespace fosssim {
 namespace {
 
@@ -29,11 +31,10 @@ End
 
 TEST(MeditReader, ReadsVerticesAndTetsAndSkipsOtherSections) {
   const auto mesh = read_medit_text(kTwoTets, "two.mesh");
-  ASSERT_TRUE(mesh.has_value()) << mesh.error().what();
-  EXPECT_EQ(mesh->num_vertices(), 5);
-  EXPECT_EQ(mesh->vertices[4], Eigen::Vector3d(1.0, 1.0, 1.0));
-  EXPECT_EQ(mesh->tets, (std::vector<std::array<int, 4>>{{0, 1, 2, 3}, {1, 2, 3, 4}}));
-  EXPECT_TRUE(mesh->faces.empty());
+  EXPECT_EQ(mesh.num_vertices(), 5);
+  EXPECT_EQ(mesh.vertices[4], Eigen::Vector3d(1.0, 1.0, 1.0));
+  EXPECT_EQ(mesh.tets, (std::vector<std::array<int, 4>>{{0, 1, 2, 3}, {1, 2, 3, 4}}));
+  EXPECT_TRUE(mesh.faces.empty());
 }
 
 struct Malformed {
@@ -67,10 +68,10 @@ TEST(MeditReader, RejectsMalformedFilesWithLineNumbers) {
       {replaced(good, "Tetrahedra 2\n1 2 3 4 0\n2 3 4 5 0\n", ""), 0, "no Tetrahedra section"},
   };
   for (const Malformed& c : cases) {
-    const auto mesh = read_medit_text(c.text, "bad.mesh");
-    ASSERT_FALSE(mesh.has_value()) << c.text;
-    EXPECT_EQ(mesh.error().line(), c.line) << mesh.error().what();
-    EXPECT_NE(mesh.error().problem().find(c.problem), std::string::npos) << mesh.error().what();
+    const SceneError mesh_error =
+        thrown_by<SceneError>([&] { read_medit_text(c.text, "bad.mesh"); });
+    EXPECT_EQ(mesh_error.line(), c.line) << mesh_error.what();
+    EXPECT_NE(mesh_error.problem().find(c.problem), std::string::npos) << mesh_error.what();
   }
 }
 

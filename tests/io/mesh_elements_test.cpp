@@ -7,6 +7,7 @@
 #include "core/force_evaluation.h"
 #include "io/scene_loader.h"
 #include "support/scratch_folder.h"
+#include "support/thrown.h"
 
 namespace fosssim {
 namespace {
@@ -35,14 +36,13 @@ TEST(MeshElements, ReadMeshesInDocumentOrderAfterXmlParticlesWithSpringsAfterSpr
     <pin axis="x" side="lowest" within="0.6"/>
   </generate>
 </scene>)"));
-  ASSERT_TRUE(scene.has_value()) << scene.error().what();
-  const SceneModel& model = scene->model;
+  const SceneModel& model = scene.model;
   EXPECT_EQ(model.num_particles(), 2 + 4 + 3 + 4);
   // The tet mesh first (document order), shifted by tx.
-  EXPECT_EQ(scene->initial.q.segment<3>(3 * 3), Eigen::Vector3d(6.0, 0.0, 0.0));
+  EXPECT_EQ(scene.initial.q.segment<3>(3 * 3), Eigen::Vector3d(6.0, 0.0, 0.0));
   EXPECT_DOUBLE_EQ(model.mass[3 * 2], 600.0 / 6.0 / 4.0);
   // The cloth mesh, scaled, with vertices 0 and 2 pinned.
-  EXPECT_EQ(scene->initial.q.segment<3>(3 * 8), Eigen::Vector3d(0.0, 2.0, 0.0));
+  EXPECT_EQ(scene.initial.q.segment<3>(3 * 8), Eigen::Vector3d(0.0, 2.0, 0.0));
   EXPECT_TRUE(model.fixed[6] && !model.fixed[7] && model.fixed[8]);
   // The chain: the "ends" set plus the rule (x within 0.6 of the lowest: vertices 0 and 1).
   EXPECT_EQ(std::vector<bool>(model.fixed.begin() + 9, model.fixed.end()),
@@ -64,8 +64,8 @@ TEST(MeshElements, ReadMeshesInDocumentOrderAfterXmlParticlesWithSpringsAfterSpr
   EXPECT_EQ(lg.choice("pins"), "penalty");
   EXPECT_EQ(lg.number("penalty"), 1e8);
   EXPECT_EQ(lg.choice("solver"), "sparse");
-  EXPECT_TRUE(scene->warnings.empty()) << scene->warnings.front();
-  EXPECT_EQ(scene->appearance.triangles.size(), 4u + 1u);
+  EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+  EXPECT_EQ(scene.appearance.triangles.size(), 4u + 1u);
 }
 
 TEST(MeshElements, GenerateEveryKindAndDefaultIntegratorOptions) {
@@ -80,8 +80,7 @@ TEST(MeshElements, GenerateEveryKindAndDefaultIntegratorOptions) {
   <generate type="chain" links="2" k="1" m="0.1" vx="1" vy="2" vz="3"/>
 </scene>)",
                                      "all.xml");
-  ASSERT_TRUE(scene.has_value()) << scene.error().what();
-  const SceneModel& model = scene->model;
+  const SceneModel& model = scene.model;
   EXPECT_EQ(model.integrator.method->name, "local-global");
   EXPECT_EQ(model.integrator.options.integer("iterations"), 10);
   EXPECT_EQ(model.integrator.options.choice("pins"), "elimination");
@@ -89,7 +88,7 @@ TEST(MeshElements, GenerateEveryKindAndDefaultIntegratorOptions) {
   int pinned = 0;
   for (bool f : model.fixed) pinned += f;
   EXPECT_EQ(pinned, 2 + 8 + 6 + 4 + 0 + 1);
-  EXPECT_EQ(scene->initial.v.tail<3>(), Eigen::Vector3d(1.0, 2.0, 3.0));
+  EXPECT_EQ(scene.initial.v.tail<3>(), Eigen::Vector3d(1.0, 2.0, 3.0));
 }
 
 TEST(MeshElements, MeshesInA2DSceneMustLieInThePlane) {
@@ -102,15 +101,14 @@ TEST(MeshElements, MeshesInA2DSceneMustLieInThePlane) {
   std::string flat = text;
   flat.replace(flat.find("PLANE"), 5, "plane=\"xy\"");
   const auto ok = load_scene_text(flat, "flat.xml");
-  ASSERT_TRUE(ok.has_value()) << ok.error().what();
-  EXPECT_EQ(ok->model.dim, 2);
-  EXPECT_EQ(ok->model.num_particles(), 5 + 9);
+  EXPECT_EQ(ok.model.dim, 2);
+  EXPECT_EQ(ok.model.num_particles(), 5 + 9);
   std::string raised = text;
   raised.replace(raised.find("PLANE"), 5, "plane=\"xz\"");
-  const auto bad = load_scene_text(raised, "raised.xml");
-  ASSERT_FALSE(bad.has_value());
-  EXPECT_EQ(bad.error().line(), 5);
-  EXPECT_NE(bad.error().problem().find("the scene is 2D"), std::string::npos) << bad.error().what();
+  const SceneError bad_error =
+      thrown_by<SceneError>([&] { load_scene_text(raised, "raised.xml"); });
+  EXPECT_EQ(bad_error.line(), 5);
+  EXPECT_NE(bad_error.problem().find("the scene is 2D"), std::string::npos) << bad_error.what();
 }
 
 struct Bad {
@@ -144,11 +142,10 @@ TEST(MeshElements, RejectBadDeclarationsWithTheirLine) {
                                  "<scene dim=\"3\">\n<duration time=\"1\"/>\n<integrator "
                                  "type=\"local-global\" dt=\"0.01\"/>\n") +
                              c.element + "\n</scene>";
-    const auto scene = load_scene_text(text, "bad.xml");
-    ASSERT_FALSE(scene.has_value()) << c.element;
-    EXPECT_NE(scene.error().problem().find(c.problem), std::string::npos) << scene.error().what();
+    const SceneError scene_error = thrown_by<SceneError>([&] { load_scene_text(text, "bad.xml"); });
+    EXPECT_NE(scene_error.problem().find(c.problem), std::string::npos) << scene_error.what();
     if (std::string(c.problem) != "cannot open the file") {
-      EXPECT_EQ(scene.error().line(), 4) << scene.error().what();
+      EXPECT_EQ(scene_error.line(), 4) << scene_error.what();
     }
   }
 }
@@ -156,17 +153,18 @@ TEST(MeshElements, RejectBadDeclarationsWithTheirLine) {
 TEST(MeshElements, AMalformedMeshFileIsReportedAtItsOwnLine) {
   testing::ScratchFolder dir;
   dir.write("broken.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices 2\n0 0 0 0\n1 0 0\n");
-  const auto scene = load_scene_file(dir.write("s.xml", R"(<scene dim="3">
+  const SceneError scene_error = thrown_by<SceneError>([&] {
+    load_scene_file(dir.write("s.xml", R"(<scene dim="3">
   <duration time="1"/>
   <integrator type="linearly-implicit-euler" dt="0.01"/>
   <tetmesh file="broken.mesh" k="1" m="1"/>
 </scene>)"));
-  ASSERT_FALSE(scene.has_value());
-  EXPECT_EQ(scene.error().file(), (dir / "broken.mesh"));
-  EXPECT_EQ(scene.error().line(), 5);
-  EXPECT_NE(scene.error().problem().find("(the mesh of " + (dir / "s.xml") + ":4)"),
+  });
+  EXPECT_EQ(scene_error.file(), (dir / "broken.mesh"));
+  EXPECT_EQ(scene_error.line(), 5);
+  EXPECT_NE(scene_error.problem().find("(the mesh of " + (dir / "s.xml") + ":4)"),
             std::string::npos)
-      << scene.error().what();
+      << scene_error.what();
 }
 
 TEST(IntegratorOptions, AreValidatedAndWarnedAboutForOtherMethods) {
@@ -189,21 +187,19 @@ TEST(IntegratorOptions, AreValidatedAndWarnedAboutForOtherMethods) {
        "\"exact\" or \"projected\""},
   };
   for (const auto& [element, problem] : bad) {
-    const auto scene = load_scene_text(base(element), "opts.xml");
-    ASSERT_FALSE(scene.has_value()) << element;
-    EXPECT_EQ(scene.error().line(), 3);
-    EXPECT_NE(scene.error().problem().find(problem), std::string::npos) << scene.error().what();
+    const SceneError scene_error =
+        thrown_by<SceneError>([&] { load_scene_text(base(element), "opts.xml"); });
+    EXPECT_EQ(scene_error.line(), 3);
+    EXPECT_NE(scene_error.problem().find(problem), std::string::npos) << scene_error.what();
   }
   const auto projected = load_scene_text(
       base(R"(<integrator type="linearly-implicit-euler" dt="0.01" hessian="projected"/>)"),
       "p.xml");
-  ASSERT_TRUE(projected.has_value());
-  EXPECT_EQ(projected->model.integrator.options.choice("hessian"), "projected");
+  EXPECT_EQ(projected.model.integrator.options.choice("hessian"), "projected");
   const auto other = load_scene_text(
       base(R"(<integrator type="implicit-euler" dt="0.01" iterations="5"/>)"), "o.xml");
-  ASSERT_TRUE(other.has_value());
-  ASSERT_EQ(other->warnings.size(), 1u);
-  EXPECT_NE(other->warnings[0].find("unknown attribute \"iterations\""), std::string::npos);
+  ASSERT_EQ(other.warnings.size(), 1u);
+  EXPECT_NE(other.warnings[0].find("unknown attribute \"iterations\""), std::string::npos);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "support/scratch_folder.h"
+#include "support/thrown.h"
 
 namespace fosssim {
 namespace {
@@ -32,12 +33,11 @@ class TrajectoryFile : public ::testing::Test {
 
 TEST_F(TrajectoryFile, FrameIsPositionsThenVelocitiesAsLittleEndianDoubles) {
   auto writer = TrajectoryWriter::open(path("t.bin"));
-  ASSERT_TRUE(writer);
   State s;
   s.q = (Vector(2) << 1.0, 2.0).finished();
   s.v = (Vector(2) << -1.0, 0.5).finished();
-  writer->write_frame(s);
-  writer->commit();
+  writer.write_frame(s);
+  writer.commit();
   const std::string bytes = testing::read_file(path("t.bin"));
   const unsigned char expected[] = {
       0, 0, 0, 0, 0, 0, 0xf0, 0x3f,  // 1.0
@@ -51,15 +51,13 @@ TEST_F(TrajectoryFile, FrameIsPositionsThenVelocitiesAsLittleEndianDoubles) {
 
 TEST_F(TrajectoryFile, RoundTripsEveryBit) {
   auto writer = TrajectoryWriter::open(path("t.bin"));
-  ASSERT_TRUE(writer);
-  for (int k = 0; k < 5; ++k) writer->write_frame(state(0.1 * k));
-  writer->commit();
+  for (int k = 0; k < 5; ++k) writer.write_frame(state(0.1 * k));
+  writer.commit();
   auto reader = TrajectoryReader::open(path("t.bin"), 4);
-  ASSERT_TRUE(reader) << reader.error();
-  EXPECT_EQ(reader->num_frames(), 5);
+  EXPECT_EQ(reader.num_frames(), 5);
   Vector q, v;
   for (int k : {3, 0, 4}) {
-    reader->read_frame(k, q, v);
+    reader.read_frame(k, q, v);
     const State expected = state(0.1 * k);
     EXPECT_EQ(std::memcmp(q.data(), expected.q.data(), 4 * sizeof(double)), 0);
     EXPECT_EQ(std::memcmp(v.data(), expected.v.data(), 4 * sizeof(double)), 0);
@@ -68,11 +66,10 @@ TEST_F(TrajectoryFile, RoundTripsEveryBit) {
 
 TEST_F(TrajectoryFile, FinalNameAppearsOnlyOnCommit) {
   auto writer = TrajectoryWriter::open(path("t.bin"));
-  ASSERT_TRUE(writer);
-  writer->write_frame(state(1));
+  writer.write_frame(state(1));
   EXPECT_FALSE(fs::exists(path("t.bin")));
   EXPECT_TRUE(fs::exists(path("t.bin.partial")));
-  writer->commit();
+  writer.commit();
   EXPECT_TRUE(fs::exists(path("t.bin")));
   EXPECT_FALSE(fs::exists(path("t.bin.partial")));
 }
@@ -81,9 +78,8 @@ TEST_F(TrajectoryFile, UnfinishedRunKeepsFramesAsIncompleteAndLeavesEarlierFileA
   std::ofstream(path("t.bin")) << "an earlier complete run";
   {
     auto writer = TrajectoryWriter::open(path("t.bin"));
-    ASSERT_TRUE(writer);
-    writer->write_frame(state(1));
-    writer->write_frame(state(2));
+    writer.write_frame(state(1));
+    writer.write_frame(state(2));
   }  // destroyed without commit, as when a run fails
   EXPECT_EQ(testing::read_file(path("t.bin")), "an earlier complete run");
   EXPECT_FALSE(fs::exists(path("t.bin.partial")));
@@ -92,33 +88,32 @@ TEST_F(TrajectoryFile, UnfinishedRunKeepsFramesAsIncompleteAndLeavesEarlierFileA
 
 TEST_F(TrajectoryFile, AbandonReportsWhereTheFramesAre) {
   auto writer = TrajectoryWriter::open(path("t.bin"));
-  ASSERT_TRUE(writer);
-  writer->write_frame(state(1));
-  EXPECT_EQ(writer->abandon(), path("t.bin.incomplete"));
+  writer.write_frame(state(1));
+  EXPECT_EQ(writer.abandon(), path("t.bin.incomplete"));
   EXPECT_TRUE(fs::exists(path("t.bin.incomplete")));
 }
 
 TEST_F(TrajectoryFile, OpenFailsWithTheReasonWhenTheFolderIsMissing) {
-  auto writer = TrajectoryWriter::open(path("no/such/dir/t.bin"));
-  ASSERT_FALSE(writer);
-  EXPECT_EQ(writer.error(),
-            "cannot create " + path("no/such/dir/t.bin.partial") + ": No such file or directory");
+  const Error error = thrown_by([&] { TrajectoryWriter::open(path("no/such/dir/t.bin")); });
+  EXPECT_EQ(error.kind(), ErrorKind::kCannotWrite);
+  EXPECT_STREQ(error.what(), ("cannot create " + path("no/such/dir/t.bin.partial") +
+                              ": No such file or directory")
+                                 .c_str());
 }
 
 TEST_F(TrajectoryFile, ReaderRejectsCutShortFiles) {
   std::ofstream(path("short.bin"), std::ios::binary) << std::string(8 * 8 + 5, '\0');
-  auto reader = TrajectoryReader::open(path("short.bin"), 4);
-  ASSERT_FALSE(reader);
-  EXPECT_EQ(reader.error(),
+  const Error error = thrown_by([&] { TrajectoryReader::open(path("short.bin"), 4); });
+  EXPECT_EQ(error.kind(), ErrorKind::kBadInput);
+  EXPECT_EQ(std::string(error.what()),
             path("short.bin") +
                 " has 69 bytes, not a whole number of frames of 64 bytes (4 "
                 "positions and velocities); it was cut short or is for another scene");
 }
 
 TEST_F(TrajectoryFile, ReaderRejectsMissingFile) {
-  auto reader = TrajectoryReader::open(path("missing.bin"), 4);
-  ASSERT_FALSE(reader);
-  EXPECT_NE(reader.error().find("missing.bin"), std::string::npos);
+  const Error error = thrown_by([&] { TrajectoryReader::open(path("missing.bin"), 4); });
+  EXPECT_NE(std::string(error.what()).find("missing.bin"), std::string::npos);
 }
 
 }  // namespace

@@ -78,7 +78,8 @@ TEST(WritePng, ReportsAnUnwritablePath) {
   try {
     write_png(testing::tiny_drawing(scene), "/nonexistent-folder/x.png");
     FAIL() << "expected an error";
-  } catch (const std::runtime_error& error) {
+  } catch (const Error& error) {
+    EXPECT_EQ(error.kind(), ErrorKind::kCannotWrite);
     EXPECT_NE(std::string(error.what()).find("/nonexistent-folder/x.png"), std::string::npos);
   }
 }

@@ -85,16 +85,14 @@ TEST(ComposeDrawing3D, LeavesOutShapesBehindTheEye) {
 }
 
 TEST(SceneParts3D, SurfacesStandForTheirMeshesAndPinsAreMarked) {
-  auto loaded = load_scene_text(R"(<scene dim="3">
+  testing::TestScene scene(load_scene_text(R"(<scene dim="3">
     <duration time="1"/><integrator type="local-global" dt="0.01"/>
     <particle m="1" px="0" py="3" pz="0" vx="0" vy="0" vz="0" fixed="1"/>
     <particle m="1" px="0" py="2" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
     <edge i="0" j="1"/>
     <generate type="tetbox" nx="2" ny="2" nz="2" pin="bottom" k="10" m="0.1"/>
   </scene>)",
-                                "parts.xml");
-  ASSERT_TRUE(loaded.has_value()) << loaded.error().what();
-  testing::TestScene scene(std::move(loaded).value());
+                                           "parts.xml"));
   scene.add_edge(1, 2, 0.02);  // from a loose particle to the box's first vertex
   ASSERT_EQ(scene.appearance.interior_particles.size(), 1u);  // the box's centre
   const SceneParts3D parts = compute_scene_parts_3d(scene);
@@ -189,10 +187,9 @@ TEST(SceneView, KeepsTheTwoDimensionalCameraFor2DScenes) {
     <particle m="1" px="0" py="0" vx="0" vy="0" fixed="0"/>
     <viewport cx="0" cy="0" size="1"/></scene>)",
                                "flat.xml");
-  ASSERT_TRUE(scene.has_value());
-  SceneView view(*scene, scene->initial, 512, 512);
+  SceneView view(scene, scene.initial, 512, 512);
   EXPECT_FALSE(view.is_3d());
-  EXPECT_TRUE(view.compose(scene->initial).shapes.empty());
+  EXPECT_TRUE(view.compose(scene.initial).shapes.empty());
   const Ray ray = view.ray_through(384.0, 128.0);  // world (0.5, 0.5)
   EXPECT_EQ(ray.origin, Eigen::Vector3d(0.5, 0.5, 1.0));
   EXPECT_EQ(ray.direction, -Eigen::Vector3d::UnitZ());

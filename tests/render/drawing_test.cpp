@@ -80,9 +80,8 @@ TEST(ComposeDrawing, ProjectsThreeDimensionalScenesOntoXY) {
     <particle m="1" px="1" py="2" pz="30" vx="0" vy="0" vz="0" fixed="0"/>
     <viewport cx="0" cy="0" size="4"/></scene>)",
                                "three.xml");
-  ASSERT_TRUE(scene.has_value()) << scene.error().what();
   const Drawing d =
-      compose_drawing(*scene, scene->initial, PathHistory(*scene), Camera{0, 0, 4}, 512, 512);
+      compose_drawing(scene, scene.initial, PathHistory(scene), Camera{0, 0, 4}, 512, 512);
   ASSERT_EQ(d.particles.size(), 1u);
   EXPECT_DOUBLE_EQ(d.particles[0].center.x, 256.0 + 64.0);
   EXPECT_DOUBLE_EQ(d.particles[0].center.y, 256.0 - 128.0);

@@ -87,7 +87,7 @@ TestScene cloth(int nx, double k, std::string_view integrator, double dt, bool h
   material.b = b;
   material.mass = {MassRule::kTotal, 0.1};
   auto springs = append_mesh(scene, generated.mesh, material, *generated.find_pins(pins), "cloth");
-  scene.model.forces.push_back(std::move(springs).value());
+  scene.model.forces.push_back(std::move(springs));
   scene.add_simple_gravity(vec({0.0, -9.8, 0.0}));
   return scene;
 }

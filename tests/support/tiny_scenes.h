@@ -34,10 +34,7 @@ inline constexpr Color kGreen{0, 1, 0};
 inline constexpr Color kYellow{1, 1, 0};
 inline constexpr Color kBackground{0.1, 0.1, 0.2};
 
-inline Scene tiny_scene() {
-  auto scene = load_scene_text(kTinyScene, "tiny.xml");
-  return std::move(scene).value();
-}
+inline Scene tiny_scene() { return load_scene_text(kTinyScene, "tiny.xml"); }
 
 /// The tiny scene's initial state drawn without the time text.
 inline Drawing tiny_drawing(const Scene& scene) {

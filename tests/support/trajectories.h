@@ -1,8 +1,6 @@
 #pragma once
 // Writing a scene's trajectory as FOSSSim's headless run does, for tests that read or grade it.
 
-#include <gtest/gtest.h>
-
 #include <string>
 
 #include "core/scene.h"
@@ -14,15 +12,14 @@ namespace fosssim::testing {
 /// Simulates `scene` from its initial state to its end and writes every frame, the initial one
 /// first, to the trajectory file `path`.
 inline void write_simulated_trajectory(const Scene& scene, const std::string& path) {
-  auto writer = TrajectoryWriter::open(path);
-  ASSERT_TRUE(writer.has_value()) << path;
+  TrajectoryWriter writer = TrajectoryWriter::open(path);
   Simulation simulation(scene.model, scene.initial);
-  writer->write_frame(simulation.state());
+  writer.write_frame(simulation.state());
   while (!simulation.finished()) {
     simulation.step();
-    writer->write_frame(simulation.state());
+    writer.write_frame(simulation.state());
   }
-  writer->commit();
+  writer.commit();
 }
 
 }  // namespace fosssim::testing

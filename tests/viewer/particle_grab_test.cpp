@@ -87,12 +87,11 @@ TEST(ParticleGrab, PicksTheParticleNearestTheCursorIn2D) {
     <particle m="1" px="0.15" py="0" vx="0" vy="0" fixed="0" radius="0.1"/>
     <viewport cx="0" cy="0" size="1"/></scene>)",
                                "two.xml");
-  ASSERT_TRUE(scene.has_value());
-  const SceneView view(*scene, scene->initial, 512, 512);
-  ParticleGrab grab(*scene);
+  const SceneView view(scene, scene.initial, 512, 512);
+  ParticleGrab grab(scene);
   const DragSpringForce& spring = grab.force();
   // World (0.08, 0): within both particles' radius (the pick distance), nearer particle 1.
-  ASSERT_TRUE(grab.press(view, scene->initial, 256.0 + 20.48, 256.0));
+  ASSERT_TRUE(grab.press(view, scene.initial, 256.0 + 20.48, 256.0));
   EXPECT_EQ(spring.particle(), 1);
   grab.move(view, 256.0 + 20.48 + 128.0, 256.0);  // half a unit right
   EXPECT_TRUE(spring.target().isApprox(Eigen::Vector3d(0.65, 0.0, 0.0)));
@@ -119,11 +118,10 @@ double distance_after_pulling(const char* integrator, bool pull) {
     <generate type="cloth" nx="7" ny="7" plane="xy" pin="corners" k="200" mass="total" total="0.2"/>
     <simplegravity fx="0" fy="-9.8" fz="0"/></scene>)";
   auto scene = load_scene_text(text, "cloth.xml");
-  EXPECT_TRUE(scene.has_value()) << scene.error().what();
-  ParticleGrab grab(*scene);
+  ParticleGrab grab(scene);
   const DragSpringForce& spring = grab.force();
-  SimulationStepper stepper(*scene, {&spring});
-  const SceneView view(*scene, stepper.state(), 512, 512);
+  SimulationStepper stepper(scene, {&spring});
+  const SceneView view(scene, stepper.state(), 512, 512);
   const int vertex = 6 * 7 + 3;  // the middle of the bottom row
   const Eigen::Vector3d start = stepper.state().q.segment<3>(3 * vertex);
   const OrbitProjection projection(view.orbit_camera(), 512, 512);

@@ -92,19 +92,16 @@ TEST_F(WindowTest, ShowsA3DSceneExactlyAsTheHeadlessPictures) {
 TEST_F(WindowTest, GradingModeRingsTheParticleTheFileGotWrong) {
   ASSERT_EQ(fosssim("-s scene.xml -d 0 -o run.bin").status, 0);
   auto scene = load_scene_text(kTinyScene, "scene.xml");
-  ASSERT_TRUE(scene.has_value());
   {  // Move particle 0 by 0.01 (2.56 pixels) at step 12.
-    auto reader = TrajectoryReader::open(folder_ / "run.bin", scene->model.num_dofs());
-    ASSERT_TRUE(reader.has_value());
+    auto reader = TrajectoryReader::open(folder_ / "run.bin", scene.model.num_dofs());
     auto writer = TrajectoryWriter::open(folder_ / "bad.bin");
-    ASSERT_TRUE(writer.has_value());
     State frame;
-    for (std::int64_t k = 0; k < reader->num_frames(); ++k) {
-      reader->read_frame(k, frame.q, frame.v);
+    for (std::int64_t k = 0; k < reader.num_frames(); ++k) {
+      reader.read_frame(k, frame.q, frame.v);
       if (k == 12) frame.q[0] += 0.01;
-      writer->write_frame(frame);
+      writer.write_frame(frame);
     }
-    writer->commit();
+    writer.commit();
   }
   const auto result =
       fosssim("-s scene.xml -i bad.bin --window-screenshot shot.png --window-screenshot-step 12");
@@ -112,8 +109,8 @@ TEST_F(WindowTest, GradingModeRingsTheParticleTheFileGotWrong) {
   const Image shot = read_png(folder_ / "shot.png");
   // The red ring around particle 0: radius 25.6 + 3 pixels around its centre, 2 pixels wide.
   Vector q, v;
-  auto reader = TrajectoryReader::open(folder_ / "bad.bin", scene->model.num_dofs());
-  reader->read_frame(12, q, v);
+  auto reader = TrajectoryReader::open(folder_ / "bad.bin", scene.model.num_dofs());
+  reader.read_frame(12, q, v);
   const PixelMapping mapping(Camera{0, 0, 1}, 512, 512);
   const Point2 centre = mapping.to_pixel(q[0], q[1]);
   int red = 0;

@@ -1,6 +1,6 @@
 # Fails when a source file includes a FOSSSim header ("folder/name.h") from a folder whose
 # library (fosssim_<folder>) its target does not link. Run by the build (fosssim_check_includes
-# in oracle/CMakeLists.txt):
+# in cmake/layering.cmake):
 #   cmake -D FILES=a.cpp|b.h -D FOLDERS=core|io -D STAMP=file -P check_includes.cmake
 # Lists are separated by "|". Includes without a folder (the target's own headers) and <...>
 # includes are not checked. On success STAMP is touched.
