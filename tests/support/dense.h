@@ -9,6 +9,7 @@
 
 namespace fosssim::testing {
 
+/// A sparse matrix as a dense one.
 inline Eigen::MatrixXd dense(const SparseMatrix& A) { return Eigen::MatrixXd(A); }
 
 /// ‖A - Aᵀ‖_F / ‖A‖_F, 0 for the zero matrix.
@@ -19,6 +20,8 @@ double asymmetry(const Eigen::MatrixXd& A);
 /// expected values.
 Eigen::MatrixXd dense_pair_pattern(int n, int dim, int i, int j, const Eigen::MatrixXd& H);
 
+/// The force's gradient of energy, energy, hessX and hessV at (q, v) with per-coordinate masses,
+/// assembled densely.
 Vector gradient_of(const Force& force, const Vector& q, const Vector& v, const Vector& mass);
 double energy_of(const Force& force, const Vector& q, const Vector& v, const Vector& mass);
 Eigen::MatrixXd hessian_x_of(const Force& force, const Vector& q, const Vector& v,
