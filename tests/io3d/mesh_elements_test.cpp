@@ -6,6 +6,7 @@
 
 #include "core/force_evaluation.h"
 #include "io/scene_loader.h"
+#include "mesh/generators.h"
 #include "support/thrown.h"
 #include "temp_dir.h"
 
@@ -91,6 +92,31 @@ TEST(MeshElements, GenerateEveryKindAndDefaultIntegratorOptions) {
   EXPECT_EQ(scene.initial.v.tail<3>(), Eigen::Vector3d(1.0, 2.0, 3.0));
 }
 
+TEST(MeshElements, TheMassAttributeChoosesHowAreasBecomeMasses) {
+  // A 3 × 3 cloth of 2 m × 1 m: rectangular cells, so its triangles are right but not
+  // isosceles, and the corners and edges of the cloth lump differently under each rule.
+  const Mesh cloth = generate_cloth(3, 3, 2.0, 1.0, false, false).mesh;
+  const auto masses_of = [](const std::string& attributes) {
+    const auto scene = load_scene_text(
+        "<scene dim=\"3\">\n<duration time=\"1\"/>\n<integrator type=\"local-global\" "
+        "dt=\"0.01\"/>\n<generate type=\"cloth\" nx=\"3\" ny=\"3\" width=\"2\" bend=\"0\" "
+        "k=\"1\" " +
+            attributes + "/>\n</scene>",
+        "masses.xml");
+    std::vector<double> masses;
+    for (int p = 0; p < scene.model.num_particles(); ++p) masses.push_back(scene.model.mass[3 * p]);
+    return masses;
+  };
+  const auto voronoi = masses_of(R"(mass="voronoi" density="2")");
+  const auto barycentric = masses_of(R"(mass="barycentric" density="2")");
+  EXPECT_EQ(voronoi, compute_vertex_masses(cloth, {MassRule::kVoronoi, 2.0}));
+  EXPECT_EQ(barycentric, compute_vertex_masses(cloth, {MassRule::kArea, 2.0}));
+  EXPECT_EQ(masses_of(R"(mass="area" density="2")"), barycentric) << "area is barycentric";
+  EXPECT_NE(voronoi[0], barycentric[0]);
+  EXPECT_EQ(masses_of(R"(m="0.5")"), std::vector<double>(9, 0.5)) << "uniform by default";
+  EXPECT_EQ(masses_of(R"(mass="total" total="0.9")"), std::vector<double>(9, 0.1));
+}
+
 TEST(MeshElements, MeshesInA2DSceneMustLieInThePlane) {
   const char* text = R"(<scene>
   <duration time="1"/>
@@ -129,6 +155,13 @@ TEST(MeshElements, RejectBadDeclarationsWithTheirLine) {
       {R"(<generate type="chain" links="3" k="1" mass="heavy"/>)", "attribute \"mass\" must be"},
       {R"(<generate type="chain" links="3" k="1" mass="area" density="1"/>)",
        "masses from areas need faces"},
+      {R"(<generate type="chain" links="3" k="1" mass="voronoi" density="1"/>)",
+       "masses from areas need faces"},
+      {R"(<generate type="cloth" nx="3" ny="3" k="1" mass="voronoi"/>)",
+       "attribute \"density\" is missing"},
+      {R"(<generate type="chain" links="3" k="1" mass="lumped"/>)",
+       "\"barycentric\" (or \"area\"), \"voronoi\" or \"volume\" (with density), found "
+       "\"lumped\""},
       {R"(<generate type="chain" links="3" k="1" m="1"><pin vertices="0 9"/></generate>)",
        "refers to vertex 9, but the mesh has 4"},
       {R"(<generate type="chain" links="3" k="1" m="1"><pin axis="w" side="lowest" within="1"/></generate>)",
