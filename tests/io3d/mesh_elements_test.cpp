@@ -23,7 +23,7 @@ TEST(MeshElements, ReadMeshesInDocumentOrderAfterXmlParticlesWithSpringsAfterSpr
   dir.write("tet.mesh", kTet);
   const auto scene = load_scene_file(dir.write("scene.xml", R"(<scene dim="3">
   <duration time="1"/>
-  <integrator type="local-global" dt="0.01" iterations="12" tolerance="1e-9" pins="penalty" penalty="1e8" solver="sparse"/>
+  <integrator type="local-global" dt="0.01" iterations="12" tolerance="1e-9" start="current" pins="penalty" penalty="1e8" solver="sparse"/>
   <simplegravity fx="0" fy="-9.8" fz="0"/>
   <tetmesh file="tet.mesh" k="100" mass="volume" density="600" tx="5"/>
   <particle m="1" px="0" py="0" pz="0" vx="0" vy="0" vz="0" fixed="1"/>
@@ -62,6 +62,7 @@ TEST(MeshElements, ReadMeshesInDocumentOrderAfterXmlParticlesWithSpringsAfterSpr
   const OptionValues& lg = model.integrator.options;
   EXPECT_EQ(lg.integer("iterations"), 12);
   EXPECT_EQ(lg.number("tolerance"), 1e-9);
+  EXPECT_EQ(lg.choice("start"), "current");
   EXPECT_EQ(lg.choice("pins"), "penalty");
   EXPECT_EQ(lg.number("penalty"), 1e8);
   EXPECT_EQ(lg.choice("solver"), "sparse");
@@ -85,6 +86,7 @@ TEST(MeshElements, GenerateEveryKindAndDefaultIntegratorOptions) {
   EXPECT_EQ(model.integrator.method->name, "local-global");
   EXPECT_EQ(model.integrator.options.integer("iterations"), 10);
   EXPECT_EQ(model.integrator.options.choice("pins"), "elimination");
+  EXPECT_EQ(model.integrator.options.choice("start"), "inertial");
   EXPECT_EQ(model.forces.size(), 6u);
   int pinned = 0;
   for (bool f : model.fixed) pinned += f;
@@ -210,6 +212,8 @@ TEST(IntegratorOptions, AreValidatedAndWarnedAboutForOtherMethods) {
        "attribute \"iterations\" must be a whole number from 1 to 1000000, found 0"},
       {R"(<integrator type="local-global" dt="0.01" pins="glue"/>)",
        "must be \"elimination\" or \"penalty\""},
+      {R"(<integrator type="local-global" dt="0.01" start="previous"/>)",
+       "attribute \"start\" must be \"inertial\" or \"current\", found \"previous\""},
       {R"(<integrator type="local-global" dt="0.01" penalty="-1"/>)",
        "attribute \"penalty\" must be a positive number, found -1"},
       {R"(<integrator type="local-global" dt="0.01" solver="cg"/>)",
