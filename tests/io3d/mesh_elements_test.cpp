@@ -150,7 +150,7 @@ TEST(MeshElements, RejectBadDeclarationsWithTheirLine) {
       {R"(<generate type="cloth" nx="1" ny="4" k="1" m="1"/>)",
        "attribute \"nx\" must be at least 2, found 1"},
       {R"(<generate type="cloth" nx="3" ny="3" k="1" m="1" pin="middle"/>)",
-       "(expected corners, top-row or none)"},
+       "(expected corners, top-row, left-column or none)"},
       {R"(<generate type="cloth" nx="3" ny="3" k="1" m="1" plane="yz"/>)", "attribute \"plane\""},
       {R"(<generate type="chain" links="3" m="1"/>)", "attribute \"k\" is missing"},
       {R"(<generate type="chain" links="3" k="1"/>)", "attribute \"m\" is missing"},
