@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -275,12 +277,12 @@ TEST_F(CommandLine, BadSceneGivesFileLineAndExitTwo) {
         "<scene>\n<duration time=\"1\"/>\n<integrator type=\"explicit\" dt=\"0.1\"/>\n</scene>\n");
   const ProgramResult r = fosssim({"-s", "bad.xml", "-d", "0"});
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err.substr(0, r.err.find('\n')),
-            "bad.xml:3: error: <integrator>: attribute \"type\" names an unknown integrator "
-            "\"explicit\" (expected one of explicit-euler, symplectic-euler (or "
-            "forward-backward-euler, semi-implicit-euler), linearized-implicit-euler (or "
-            "linearized-implicit), implicit-euler (or implicit), local-global (or "
-            "fast-mass-springs), linearly-implicit-euler)");
+  EXPECT_EQ(r.err.rfind("bad.xml:3: error: <integrator>: attribute \"type\" names an unknown "
+                        "integrator \"explicit\" (expected one of explicit-euler, ",
+                        0),
+            0u)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line";
 }
 
 TEST_F(CommandLine, MissingSceneFileIsExitTwo) {

@@ -127,13 +127,14 @@ INSTANTIATE_TEST_SUITE_P(SceneLoader, MalformedScene, testing::ValuesIn(kCases),
 TEST(SceneLoaderErrors, UnknownIntegratorListsEveryTypeOfTheRegistry) {
   const std::string error =
       error_of("<scene>\n<duration time=\"1\"/>\n<integrator type=\"rk4\" dt=\"0.1\"/>\n</scene>");
-  EXPECT_EQ(
-      error,
+  // The course's four first, with their aliases; then FOSSSim's own, whatever the registry holds.
+  const std::string start =
       "bad.xml:3: error: <integrator>: attribute \"type\" names an unknown integrator \"rk4\" "
       "(expected one of explicit-euler, symplectic-euler (or forward-backward-euler, "
       "semi-implicit-euler), linearized-implicit-euler (or linearized-implicit), "
-      "implicit-euler (or implicit), local-global (or fast-mass-springs), "
-      "linearly-implicit-euler)");
+      "implicit-euler (or implicit), ";
+  EXPECT_EQ(error.substr(0, start.size()), start);
+  EXPECT_EQ(error.back(), ')');
   for (const IntegratorMethod* method : integrator_methods()) {
     EXPECT_NE(error.find(std::string(method->name)), std::string::npos) << method->name;
   }

@@ -10,7 +10,8 @@
 //   over θ below. The relative oscillation stays under that bound (+10% for the O(h²) part),
 //   equally in the first and the last period: every method declared kBounded is held to it.
 //   Explicit Euler's energy (every kGrows method's), sampled each time the planet crosses the
-//   perihelion direction, rises at every crossing, far beyond the bound.
+//   perihelion direction, rises at every crossing; for a first-order method, far beyond the
+//   bound.
 // - Every kDecays method dissipates on undamped springs: for a quadratic potential ½ qᵀK q
 //   (zero-rest-length springs, a fixed anchor) backward Euler gives
 //   E' - E = -½ ΔvᵀMΔv - ½ ΔqᵀKΔq < 0 at every step, and implicit, linearized implicit and
@@ -98,7 +99,8 @@ void expect_bounded_kepler_energy(std::string_view method, double h) {
 }
 
 /// A method whose energy grows: sampled each time the planet crosses the perihelion
-/// direction, it rises at every crossing, far beyond the symplectic bound.
+/// direction, it rises at every crossing (for a first-order method, far beyond the symplectic
+/// bound).
 template <int D>
 void expect_growing_kepler_energy(std::string_view method, double h) {
   TestScene scene = kepler<D>(method, h);
@@ -122,9 +124,14 @@ void expect_growing_kepler_energy(std::string_view method, double h) {
         << method << ", revolution " << k;
   }
   const double drift = (at_perihelion_direction.back() - e0) / 0.5;
-  std::printf("%dD Kepler, %s: energy up by %.3f of |E| over %zu revolutions\n", D,
+  std::printf("%dD Kepler, %s: energy up by %.3e of |E| over %zu revolutions\n", D,
               std::string(method).c_str(), drift, at_perihelion_direction.size());
-  EXPECT_GT(drift, 100.0 * kepler_energy_bound(h)) << method;
+  EXPECT_GT(drift, 0.0) << method;
+  // A first-order method gains O(h) per revolution, so after 100 it is far beyond the
+  // symplectic method's O(h) oscillation; higher orders gain less and are only held to rising.
+  if (integrator_method(method).properties.order == 1) {
+    EXPECT_GT(drift, 100.0 * kepler_energy_bound(h)) << method;
+  }
 }
 
 TYPED_TEST(ConservationTest, KeplerEnergyIsBoundedOrGrowsAsEachMethodDeclares) {
