@@ -51,6 +51,40 @@ TEST_F(CommandLine3D, RunsTheAssignmentsJsonScenes) {
   EXPECT_EQ(std::filesystem::file_size(path("j.bin")), 7u * 2u * 81u * 3u * 8u);
 }
 
+TEST_F(CommandLine3D, TheIterationStartIsReadAlikeFromJsonKeysXmlAttributesAndTheCommandLine) {
+  const auto bytes = [this](const std::string& arguments, const std::string& name) {
+    const ProgramResult r =
+        run(kFosssim + " " + arguments + " -d 0 -q --duration 0.3 -o " + path(name));
+    EXPECT_EQ(r.status, 0) << arguments << "\n" << r.output();
+    return folder_.read(name);
+  };
+  // JSON scenes start at the current positions unless the key or the option says otherwise.
+  write("inertial.json", "{\"obj\": \"" + asset("cloth/cloth_flat_9x9.obj") +
+                             "\", \"k\": 20000, \"b\": [1, 9], \"start\": \"inertial\"}");
+  const std::string json = "-s " + asset("json/cloth_9x9.json");
+  const std::string current = bytes(json, "current.bin");
+  const std::string by_option = bytes(json + " --integrator-option start=inertial", "o.bin");
+  const std::string by_key = bytes("-s " + path("inertial.json"), "k.bin");
+  EXPECT_EQ(by_option, by_key);
+  EXPECT_NE(by_option, current);
+  // XML scenes start at the inertial prediction unless the attribute or the option says so.
+  const std::string xml = R"(<scene dim="3">
+  <duration time="1"/>
+  <integrator type="local-global" dt="0.03" iterations="5" START/>
+  <generate type="cloth" nx="6" ny="6" k="500" mass="voronoi" density="0.1"/>
+  <simplegravity fx="0" fy="-9.8" fz="0"/>
+</scene>)";
+  std::string with = xml, without = xml;
+  with.replace(with.find("START"), 5, "start=\"current\"");
+  without.replace(without.find("START"), 5, "");
+  write("with.xml", with);
+  write("without.xml", without);
+  const std::string by_attribute = bytes("-s " + path("with.xml"), "a.bin");
+  EXPECT_EQ(bytes("-s " + path("without.xml") + " --integrator-option start=current", "c.bin"),
+            by_attribute);
+  EXPECT_NE(bytes("-s " + path("without.xml"), "i.bin"), by_attribute);
+}
+
 TEST_F(CommandLine3D, RejectsAMalformedMeshWithItsLineAndStatus2) {
   write("broken.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 4\n");
   const std::string scene = write("scene.xml", R"(<scene dim="3">

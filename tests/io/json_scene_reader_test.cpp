@@ -26,13 +26,18 @@ TEST(JsonScene, AppliesTheAssignmentsDefaults) {
   EXPECT_EQ(model.integrator.method->name, "local-global");
   EXPECT_EQ(model.integrator.dt, 1.0 / 30.0);
   EXPECT_EQ(model.integrator.options.integer("iterations"), 50);
+  EXPECT_EQ(model.integrator.options.choice("start"), "current");
   EXPECT_EQ(model.integrator.options.choice("pins"), "penalty");
   EXPECT_EQ(model.integrator.options.number("penalty"), 1e10);
   EXPECT_EQ(model.duration, 10.0);
   EXPECT_EQ(model.fixed, (std::vector<bool>{true, false, false, true}));
-  // Masses from areas: corners 0 and 2 touch both triangles (1/3 each of 1/2), 1 and 3 one.
-  EXPECT_DOUBLE_EQ(model.mass[0], 1.0 / 3.0);
-  EXPECT_DOUBLE_EQ(model.mass[3], 1.0 / 6.0);
+  // Masses from mixed Voronoi areas: both triangles are right-angled and isosceles, at
+  // corners 1 and 3 (1/2 of their area there, 1/4 at the others), so corners 0 and 2 get
+  // 1/4 + 1/4 of 1/2 each and corners 1 and 3 get 1/2 of 1/2 (a third each would be 1/3, 1/6).
+  EXPECT_DOUBLE_EQ(model.mass[0], 0.25);
+  EXPECT_DOUBLE_EQ(model.mass[3], 0.25);
+  EXPECT_DOUBLE_EQ(model.mass[6], 0.25);
+  EXPECT_DOUBLE_EQ(model.mass[9], 0.25);
   // Springs: the 5 distinct edges of the two triangles, at rest; gravity -9.8 N on every vertex.
   EXPECT_EQ(model.edges.size(), 5u);
   ASSERT_EQ(model.forces.size(), 2u);
@@ -49,11 +54,12 @@ TEST(JsonScene, TakesUniformMassesAndOurOptionalKeys) {
   dir.write("square.obj", kSquare);
   const auto scene = load_json_scene_file(dir.write("scene.json", R"({
     "obj": "square.obj", "k": 10, "m": 0.25, "h": 0.01, "iterations": 7, "duration": 2,
-    "colour": "red"
+    "start": "inertial", "colour": "red"
   })"));
   EXPECT_EQ(scene.model.mass, Vector::Constant(12, 0.25));
   EXPECT_EQ(scene.model.integrator.dt, 0.01);
   EXPECT_EQ(scene.model.integrator.options.integer("iterations"), 7);
+  EXPECT_EQ(scene.model.integrator.options.choice("start"), "inertial");
   EXPECT_EQ(scene.model.num_steps(), 200);
   EXPECT_EQ(scene.model.fixed, std::vector<bool>(4, false));
   ASSERT_EQ(scene.warnings.size(), 1u);
@@ -90,6 +96,10 @@ TEST(JsonScene, RejectsBadScenesNamingTheProblem) {
       {R"({"obj": "square.obj", "k": 1, "m": 0})", 0, "\"m\" must be positive"},
       {R"({"obj": "square.obj", "k": 1, "iterations": 2.5})", 0,
        "\"iterations\" must be a whole number"},
+      {R"({"obj": "square.obj", "k": 1, "start": "previous"})", 0,
+       "\"start\" must be \"inertial\" or \"current\", found \"previous\""},
+      {R"({"obj": "square.obj", "k": 1, "start": 1})", 0,
+       "\"start\" must be \"inertial\" or \"current\", found \"1\""},
       {R"({"obj": "lines.obj", "k": 1})", 0, "masses from areas need faces"},
       {"{\n  \"obj\": \"square.obj\",\n  \"k\": 1,,\n}", 3, "not valid JSON"},
       {"[1, 2]", 0, "must hold a JSON object"},

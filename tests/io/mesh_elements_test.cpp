@@ -6,6 +6,7 @@
 
 #include "core/force_evaluation.h"
 #include "io/scene_loader.h"
+#include "mesh/generators.h"
 #include "support/scratch_folder.h"
 #include "support/thrown.h"
 
@@ -22,7 +23,7 @@ TEST(MeshElements, ReadMeshesInDocumentOrderAfterXmlParticlesWithSpringsAfterSpr
   dir.write("tet.mesh", kTet);
   const auto scene = load_scene_file(dir.write("scene.xml", R"(<scene dim="3">
   <duration time="1"/>
-  <integrator type="local-global" dt="0.01" iterations="12" tolerance="1e-9" pins="penalty" penalty="1e8" solver="sparse"/>
+  <integrator type="local-global" dt="0.01" iterations="12" tolerance="1e-9" start="current" pins="penalty" penalty="1e8" solver="sparse"/>
   <simplegravity fx="0" fy="-9.8" fz="0"/>
   <tetmesh file="tet.mesh" k="100" mass="volume" density="600" tx="5"/>
   <particle m="1" px="0" py="0" pz="0" vx="0" vy="0" vz="0" fixed="1"/>
@@ -61,6 +62,7 @@ TEST(MeshElements, ReadMeshesInDocumentOrderAfterXmlParticlesWithSpringsAfterSpr
   const OptionValues& lg = model.integrator.options;
   EXPECT_EQ(lg.integer("iterations"), 12);
   EXPECT_EQ(lg.number("tolerance"), 1e-9);
+  EXPECT_EQ(lg.choice("start"), "current");
   EXPECT_EQ(lg.choice("pins"), "penalty");
   EXPECT_EQ(lg.number("penalty"), 1e8);
   EXPECT_EQ(lg.choice("solver"), "sparse");
@@ -84,11 +86,37 @@ TEST(MeshElements, GenerateEveryKindAndDefaultIntegratorOptions) {
   EXPECT_EQ(model.integrator.method->name, "local-global");
   EXPECT_EQ(model.integrator.options.integer("iterations"), 10);
   EXPECT_EQ(model.integrator.options.choice("pins"), "elimination");
+  EXPECT_EQ(model.integrator.options.choice("start"), "inertial");
   EXPECT_EQ(model.forces.size(), 6u);
   int pinned = 0;
   for (bool f : model.fixed) pinned += f;
   EXPECT_EQ(pinned, 2 + 8 + 6 + 4 + 0 + 1);
   EXPECT_EQ(scene.initial.v.tail<3>(), Eigen::Vector3d(1.0, 2.0, 3.0));
+}
+
+TEST(MeshElements, TheMassAttributeChoosesHowAreasBecomeMasses) {
+  // A 3 × 3 cloth of 2 m × 1 m: rectangular cells, so its triangles are right but not
+  // isosceles, and the corners and edges of the cloth lump differently under each rule.
+  const Mesh cloth = generate_cloth(3, 3, 2.0, 1.0, false, false).mesh;
+  const auto masses_of = [](const std::string& attributes) {
+    const auto scene = load_scene_text(
+        "<scene dim=\"3\">\n<duration time=\"1\"/>\n<integrator type=\"local-global\" "
+        "dt=\"0.01\"/>\n<generate type=\"cloth\" nx=\"3\" ny=\"3\" width=\"2\" bend=\"0\" "
+        "k=\"1\" " +
+            attributes + "/>\n</scene>",
+        "masses.xml");
+    std::vector<double> masses;
+    for (int p = 0; p < scene.model.num_particles(); ++p) masses.push_back(scene.model.mass[3 * p]);
+    return masses;
+  };
+  const auto voronoi = masses_of(R"(mass="voronoi" density="2")");
+  const auto barycentric = masses_of(R"(mass="barycentric" density="2")");
+  EXPECT_EQ(voronoi, compute_vertex_masses(cloth, {MassRule::kVoronoi, 2.0}));
+  EXPECT_EQ(barycentric, compute_vertex_masses(cloth, {MassRule::kArea, 2.0}));
+  EXPECT_EQ(masses_of(R"(mass="area" density="2")"), barycentric) << "area is barycentric";
+  EXPECT_NE(voronoi[0], barycentric[0]);
+  EXPECT_EQ(masses_of(R"(m="0.5")"), std::vector<double>(9, 0.5)) << "uniform by default";
+  EXPECT_EQ(masses_of(R"(mass="total" total="0.9")"), std::vector<double>(9, 0.1));
 }
 
 TEST(MeshElements, MeshesInA2DSceneMustLieInThePlane) {
@@ -122,13 +150,20 @@ TEST(MeshElements, RejectBadDeclarationsWithTheirLine) {
       {R"(<generate type="cloth" nx="1" ny="4" k="1" m="1"/>)",
        "attribute \"nx\" must be at least 2, found 1"},
       {R"(<generate type="cloth" nx="3" ny="3" k="1" m="1" pin="middle"/>)",
-       "(expected corners, top-row or none)"},
+       "(expected corners, top-row, left-column or none)"},
       {R"(<generate type="cloth" nx="3" ny="3" k="1" m="1" plane="yz"/>)", "attribute \"plane\""},
       {R"(<generate type="chain" links="3" m="1"/>)", "attribute \"k\" is missing"},
       {R"(<generate type="chain" links="3" k="1"/>)", "attribute \"m\" is missing"},
       {R"(<generate type="chain" links="3" k="1" mass="heavy"/>)", "attribute \"mass\" must be"},
       {R"(<generate type="chain" links="3" k="1" mass="area" density="1"/>)",
        "masses from areas need faces"},
+      {R"(<generate type="chain" links="3" k="1" mass="voronoi" density="1"/>)",
+       "masses from areas need faces"},
+      {R"(<generate type="cloth" nx="3" ny="3" k="1" mass="voronoi"/>)",
+       "attribute \"density\" is missing"},
+      {R"(<generate type="chain" links="3" k="1" mass="lumped"/>)",
+       "\"barycentric\" (or \"area\"), \"voronoi\" or \"volume\" (with density), found "
+       "\"lumped\""},
       {R"(<generate type="chain" links="3" k="1" m="1"><pin vertices="0 9"/></generate>)",
        "refers to vertex 9, but the mesh has 4"},
       {R"(<generate type="chain" links="3" k="1" m="1"><pin axis="w" side="lowest" within="1"/></generate>)",
@@ -177,6 +212,8 @@ TEST(IntegratorOptions, AreValidatedAndWarnedAboutForOtherMethods) {
        "attribute \"iterations\" must be a whole number from 1 to 1000000, found 0"},
       {R"(<integrator type="local-global" dt="0.01" pins="glue"/>)",
        "must be \"elimination\" or \"penalty\""},
+      {R"(<integrator type="local-global" dt="0.01" start="previous"/>)",
+       "attribute \"start\" must be \"inertial\" or \"current\", found \"previous\""},
       {R"(<integrator type="local-global" dt="0.01" penalty="-1"/>)",
        "attribute \"penalty\" must be a positive number, found -1"},
       {R"(<integrator type="local-global" dt="0.01" solver="cg"/>)",

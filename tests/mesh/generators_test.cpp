@@ -65,7 +65,8 @@ TEST(GenerateCloth, HasStructuralShearAndBendSprings) {
   EXPECT_EQ(cloth.find_pins("top-row")->size(), static_cast<std::size_t>(nx));
   EXPECT_EQ(cloth.default_pins, "corners");
   EXPECT_EQ(cloth.find_pins("middle"), nullptr);
-  EXPECT_EQ(cloth.pin_set_names(), "corners, top-row or none");
+  EXPECT_EQ(*cloth.find_pins("left-column"), (std::vector<int>{0, 7, 14, 21, 28}));
+  EXPECT_EQ(cloth.pin_set_names(), "corners, top-row, left-column or none");
   const GeneratedMesh flat = generate_cloth(nx, ny, 2.0, 1.0, true, true);
   EXPECT_EQ(flat.mesh.vertices[nx * ny - 1], Eigen::Vector3d(1.0, 0.0, 1.0));
 }

@@ -148,6 +148,86 @@ TEST(LocalGlobal, PenaltyPinsStayWithin1e8OfRest) {
   EXPECT_GT(worst, 0.0) << "a penalty holds only approximately";
 }
 
+TEST(LocalGlobal, PenaltyPinnedParticlesReceiveTheirForces) {
+  // One particle pinned by a soft penalty w, under gravity: Q = m/h² + w, and one step from
+  // rest at the anchor a gives p = a + m g/(m/h² + w); eliminated, it does not move.
+  const double m = 2.0, h = 0.1, w = 50.0, g = 9.8;
+  for (const char* pins : {"penalty", "elimination"}) {
+    testing::TestScene scene = testing::particles(3, {0.5, 1.0, -0.5}, m, {true});
+    scene.add_simple_gravity(testing::vec({0.0, -g, 0.0}));
+    scene.model.integrator.use(integrator_method("local-global"));
+    scene.model.integrator.dt = h;
+    scene.model.integrator.options.set("pins", pins);
+    scene.model.integrator.options.set("penalty", w);
+    Simulation simulation(scene.model, scene.initial);
+    simulation.step();
+    const double sag = std::string_view(pins) == "penalty" ? m * g / (m / (h * h) + w) : 0.0;
+    EXPECT_NEAR(simulation.state().q[1], 1.0 - sag, 1e-15) << pins;
+    EXPECT_NEAR(simulation.state().q[0], 0.5, 1e-15) << pins;
+  }
+}
+
+/// Two unit masses joined by a spring at rest along x (k, length 1), moving apart along y
+/// with speed u each, integrated by local/global with one iteration from `start`.
+Scene parting_pair(const char* start, double k, double u, double h) {
+  testing::TestScene scene =
+      testing::particles(3, {0.0, 0.0, 0.0, 1.0, 0.0, 0.0}, 1.0, {false, false});
+  scene.initial.v << 0.0, u, 0.0, 0.0, -u, 0.0;
+  scene.add_spring(0, 1, k, 1.0);
+  scene.model.integrator.use(integrator_method("local-global"));
+  scene.model.integrator.dt = h;
+  scene.model.integrator.options.set("iterations", 1);
+  scene.model.integrator.options.set("start", start);
+  return scene;
+}
+
+TEST(LocalGlobal, OneIterationFromTheCurrentPositionsIsTheHandComputedSolve) {
+  // From pⁿ the local step finds the springs at rest, d = pⁿ_0 - pⁿ_1, so the global step
+  // solves (M/h² + k AᵀA)(p - pⁿ) = M vⁿ/h: each particle moves by u h/(1 + 2 k h²) along y.
+  const double k = 30.0, u = 0.7, h = 0.05;
+  Scene scene = parting_pair("current", k, u, h);
+  Simulation current(scene.model, scene.initial);
+  current.step();
+  const double shift = u * h / (1.0 + 2.0 * k * h * h);
+  const Vector expected = (Vector(6) << 0.0, shift, 0.0, 1.0, -shift, 0.0).finished();
+  EXPECT_LT((current.state().q - expected).lpNorm<Eigen::Infinity>(), 1e-15);
+  // From y = pⁿ + h vⁿ the spring is found stretched and rotated: a different answer.
+  Scene other = parting_pair("inertial", k, u, h);
+  Simulation inertial(other.model, other.initial);
+  inertial.step();
+  EXPECT_GT((inertial.state().q - expected).lpNorm<Eigen::Infinity>(), 1e-4);
+}
+
+TEST(LocalGlobal, BothStartsAgreeAtRestAndOnceConverged) {
+  std::vector<Vector> at_rest, converged;
+  for (const char* start : {"inertial", "current"}) {
+    Scene scene = testing::cloth(5, 40.0, "local-global", 1.0 / 30.0);
+    scene.model.integrator.options.set("start", start);
+    Simulation simulation(scene.model, scene.initial);
+    simulation.step();  // vⁿ = 0: y = pⁿ, the same start
+    at_rest.push_back(simulation.state().q);
+    scene.model.integrator.options.set("iterations", 100000);
+    scene.model.integrator.options.set("tolerance", 1e-14);
+    Simulation exact(scene.model, simulation.state());
+    for (int step = 0; step < 10; ++step) exact.step();
+    converged.push_back(exact.state().q);
+  }
+  EXPECT_EQ(at_rest[0], at_rest[1]);
+  EXPECT_LT((converged[0] - converged[1]).lpNorm<Eigen::Infinity>(), 1e-11);
+  Scene few = testing::cloth(5, 40.0, "local-global", 1.0 / 30.0);
+  few.model.integrator.options.set("iterations", 3);
+  State moving = few.initial;
+  moving.v.setConstant(0.5);
+  std::vector<Vector> starts;
+  for (const char* start : {"inertial", "current"}) {
+    few.model.integrator.options.set("start", start);
+    Simulation simulation(few.model, moving);
+    simulation.step();
+    starts.push_back(simulation.state().q);
+  }
+  EXPECT_GT((starts[0] - starts[1]).lpNorm<Eigen::Infinity>(), 1e-6) << "3 iterations differ";
+}
+
 TEST(LocalGlobal, DenseAndSparseFactorizationsAgree) {
   std::vector<Vector> finals;
   for (const char* solver : {"dense", "sparse", "auto"}) {
