@@ -8,8 +8,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 
+#include "support/scratch_folder.h"
 #include "support/thrown.h"
 
 namespace fosssim {
@@ -17,17 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class TrajectoryFile : public testing::Test {
+class TrajectoryFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("fosssim_traj_" +
-            std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string path(const std::string& name) const { return folder_ / name; }
 
   static State state(double base) {
     State s;
@@ -35,12 +27,8 @@ class TrajectoryFile : public testing::Test {
     s.v = (Vector(4) << -base, 0.5, 1e-300, -0.0).finished();
     return s;
   }
-  static std::string bytes_of(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-  }
 
-  fs::path dir_;
+  testing::ScratchFolder folder_;
 };
 
 TEST_F(TrajectoryFile, FrameIsPositionsThenVelocitiesAsLittleEndianDoubles) {
@@ -50,7 +38,7 @@ TEST_F(TrajectoryFile, FrameIsPositionsThenVelocitiesAsLittleEndianDoubles) {
   s.v = (Vector(2) << -1.0, 0.5).finished();
   writer.write_frame(s);
   writer.commit();
-  const std::string bytes = bytes_of(path("t.bin"));
+  const std::string bytes = testing::read_file(path("t.bin"));
   const unsigned char expected[] = {
       0, 0, 0, 0, 0, 0, 0xf0, 0x3f,  // 1.0
       0, 0, 0, 0, 0, 0, 0x00, 0x40,  // 2.0
@@ -93,7 +81,7 @@ TEST_F(TrajectoryFile, UnfinishedRunKeepsFramesAsIncompleteAndLeavesEarlierFileA
     writer.write_frame(state(1));
     writer.write_frame(state(2));
   }  // destroyed without commit, as when a run fails
-  EXPECT_EQ(bytes_of(path("t.bin")), "an earlier complete run");
+  EXPECT_EQ(testing::read_file(path("t.bin")), "an earlier complete run");
   EXPECT_FALSE(fs::exists(path("t.bin.partial")));
   EXPECT_EQ(fs::file_size(path("t.bin.incomplete")), 2u * 8 * sizeof(double));
 }
@@ -143,7 +131,7 @@ TEST_F(TrajectoryFile, CollisionRecordsAndPolynomialsRoundTripInTheCoursesLayout
   }
   // 3 frames of 64 bytes; counts; one 36-byte collision per step record; polynomials.
   EXPECT_EQ(fs::file_size(path("c.bin")), 3 * 64 + 3 * 8 + 2 * 36 + (4 + 24) + (4 + 24 + 4));
-  const std::string bytes = bytes_of(path("c.bin"));
+  const std::string bytes = testing::read_file(path("c.bin"));
   std::int32_t type = -1;
   std::memcpy(&type, bytes.data() + 64 + 8 + 64 + 4, 4);  // first record after record 0
   EXPECT_EQ(type, 1);

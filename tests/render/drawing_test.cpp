@@ -4,7 +4,7 @@
 
 #include "io/scene_loader.h"
 #include "render/scene_view.h"
-#include "render/tiny_scene.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {

@@ -11,7 +11,10 @@
 #include "core/collisions/impact_zones.h"
 #include "core/collisions/intervals.h"
 #include "core/step/step_pipeline.h"
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/finite_differences.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
 
 namespace fosssim {
 namespace {
@@ -39,7 +42,7 @@ void expect_polynomials_match_direct_evaluation(unsigned seed) {
   scene.add_edge(1, 2, 0.2);
   scene.add_half_plane(random.uniform_vector(D, -1, 1), random.uniform_vector(D, -2, 2));
   const SceneModel& model = scene.model;
-  const Vector xs = scene.state.q;
+  const Vector xs = scene.initial.q;
   const Vector xe = xs + random.uniform_vector(3 * D, -0.5, 0.5);
   const double r0 = model.particle_radius[0];
   for (double t : {0.0, 0.3, 0.77, 1.0, -0.4, 1.6}) {
@@ -105,7 +108,7 @@ TEST(SweptDetection, LeadingCoefficientsBelowOneInATrillionAreDropped) {
   scene.add_particle(1, vec({0, 0}), vec({0, 0}), false, 0.5);
   scene.add_particle(1, vec({0.5, 0}), vec({0, 0}), false, 0.5);
   const auto p = swept_polynomials<2>(scene.model, {CollisionKind::kParticleParticle, 0, 1},
-                                      scene.state.q, scene.state.q);
+                                      scene.initial.q, scene.initial.q);
   EXPECT_EQ(p[0].degree(), 0);
   EXPECT_TRUE(p[1].empty());
 }
@@ -143,17 +146,17 @@ TEST(ContinuousTime, CourseWorkedExampleTwoBalls) {
   scene.model.collisions.method = CollisionMethod::kContinuousTime;
   StepPipeline pipeline(scene.model);
   StepRecord record;
-  pipeline.step(scene.state, &record);
+  pipeline.step(scene.initial, &record);
   ASSERT_EQ(record.collisions.size(), 1u);
   EXPECT_NEAR(record.collisions[0].time, 0.99999999999999164, 1e-15);
   EXPECT_NEAR(record.collisions[0].normal[0], 0.4, 1e-15);
-  EXPECT_NEAR(scene.state.q[0], -0.40999999999999948, 1e-15);
-  EXPECT_NEAR(scene.state.v[0], -8.88e-16, 1e-17);
-  EXPECT_EQ(scene.state.q[2], 0.010000000000000009);
-  EXPECT_EQ(scene.state.v[2], 1.0000000000000009);
+  EXPECT_NEAR(scene.initial.q[0], -0.40999999999999948, 1e-15);
+  EXPECT_NEAR(scene.initial.v[0], -8.88e-16, 1e-17);
+  EXPECT_EQ(scene.initial.q[2], 0.010000000000000009);
+  EXPECT_EQ(scene.initial.v[2], 1.0000000000000009);
   EXPECT_EQ(record.polynomials.size(), 2u);  // N(N - 1)
   ASSERT_TRUE(record.sync);
-  EXPECT_EQ(record.sync->q, scene.state.q);
+  EXPECT_EQ(record.sync->q, scene.initial.q);
   EXPECT_EQ(record.sync->polynomials_logged, 2u);
 }
 
@@ -166,15 +169,15 @@ TEST(ContinuousTime, CatchesAFastParticleThatDiscreteDetectionMisses) {
     scene.model.collisions.method = method;
     StepPipeline pipeline(scene.model);
     StepRecord record;
-    pipeline.step(scene.state, &record);
+    pipeline.step(scene.initial, &record);
     if (method == CollisionMethod::kSimple) {
       EXPECT_TRUE(record.collisions.empty());  // it tunnelled through
-      EXPECT_GT(scene.state.q[0], 0.4);
+      EXPECT_GT(scene.initial.q[0], 0.4);
     } else {
       ASSERT_EQ(record.collisions.size(), 1u);
       EXPECT_NEAR(record.collisions[0].time, 0.4, 1e-12);
-      EXPECT_LT(scene.state.q[0], -0.1);  // bounced back
-      EXPECT_NEAR(scene.state.v[0], -100.0, 1e-9);
+      EXPECT_LT(scene.initial.q[0], -0.1);  // bounced back
+      EXPECT_NEAR(scene.initial.v[0], -100.0, 1e-9);
     }
   }
 }
@@ -192,16 +195,16 @@ TEST(Hybrid, CourseWorkedExampleThreeBallsWithOneImpulsePass) {
   scene.model.collisions.thickness = 0.1;
   StepPipeline pipeline(scene.model);
   StepRecord record;
-  pipeline.step(scene.state, &record);
+  pipeline.step(scene.initial, &record);
   ASSERT_TRUE(record.sync);
   EXPECT_NEAR(record.sync->v[2], 1.0, 1e-15);
   EXPECT_EQ(record.sync->polynomials_logged, 6u);
   EXPECT_EQ(record.polynomials.size(), 18u);
   EXPECT_TRUE(record.collisions.empty());
-  EXPECT_NEAR(scene.state.q[2], 0.005, 1e-15);
-  EXPECT_NEAR(scene.state.q[4], 0.455, 1e-15);
-  EXPECT_NEAR(scene.state.v[2], 0.5, 1e-15);
-  EXPECT_NEAR(scene.state.v[4], 0.5, 1e-15);
+  EXPECT_NEAR(scene.initial.q[2], 0.005, 1e-15);
+  EXPECT_NEAR(scene.initial.q[4], 0.455, 1e-15);
+  EXPECT_NEAR(scene.initial.v[2], 0.5, 1e-15);
+  EXPECT_NEAR(scene.initial.v[4], 0.5, 1e-15);
 }
 
 TEST(Hybrid, ZonesTouchingAHalfPlaneOrAFixedParticleStopDead) {
@@ -211,9 +214,9 @@ TEST(Hybrid, ZonesTouchingAHalfPlaneOrAFixedParticleStopDead) {
   scene.model.collisions.method = CollisionMethod::kHybrid;
   scene.model.collisions.max_iterations = 0;  // straight to the geometric stage
   StepPipeline pipeline(scene.model);
-  pipeline.step(scene.state);
-  EXPECT_EQ(scene.state.q[1], 0.3);
-  EXPECT_EQ(scene.state.v[1], 0.0);
+  pipeline.step(scene.initial);
+  EXPECT_EQ(scene.initial.q[1], 0.3);
+  EXPECT_EQ(scene.initial.v[1], 0.0);
 }
 
 TEST(Hybrid, RigidFailsafeKeepsTheZonesShapeMomentumAndAngularMomentum) {
@@ -224,7 +227,7 @@ TEST(Hybrid, RigidFailsafeKeepsTheZonesShapeMomentumAndAngularMomentum) {
   scene.add_particle(1, vec({-1, 0}), vec({0, 0}));
   scene.add_particle(2, vec({1, 0}), vec({0, 0}));
   scene.add_particle(3, vec({0, 1}), vec({0, 0}));
-  const Vector xs = scene.state.q;
+  const Vector xs = scene.initial.q;
   Vector q = xs + vec({0.1, -0.05, 0.2, 0.15, -0.1, 0.1});
   Vector v = Vector::Zero(6);
   const ImpactZone zone = merge_impact_zones(

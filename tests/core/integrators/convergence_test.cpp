@@ -27,7 +27,9 @@
 #include <functional>
 #include <limits>
 
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/scene_builder.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {
@@ -48,7 +50,7 @@ struct Problem {
 double error_at_end(const Problem& problem, std::string_view kind, double h) {
   TestScene scene = problem.scene(kind, h);
   const auto steps = static_cast<std::int64_t>(std::llround(kEndTime / h));
-  const State end = run_steps(scene.model, scene.state, steps);
+  const State end = run_steps(scene.model, scene.initial, steps);
   return (end.q - problem.exact.q).norm() + (end.v - problem.exact.v).norm() / problem.omega;
 }
 
@@ -189,7 +191,7 @@ TYPED_TEST(ConvergenceTest, FreeFallResultsAreKnownExactly) {
   for (const auto& [kind, sign] : kPositionLag) {
     const double h = 1.0 / 128;
     TestScene scene = problem.scene(kind, h);
-    const State end = run_steps(scene.model, scene.state, 128);
+    const State end = run_steps(scene.model, scene.initial, 128);
     const double tolerance = round_off_tolerance(kind, 128, h, end);
     expect_close(end.v, problem.exact.v, tolerance, std::string(kind) + ": v");
     expect_close(end.q, problem.exact.q + sign * 0.5 * g * kEndTime * h, tolerance,
@@ -211,7 +213,7 @@ TYPED_TEST(ConvergenceTest, DragFollowsTheDiscreteDecayFactors) {
       {"implicit-euler", true},  {"local-global", false},     {"linearly-implicit-euler", true}};
   for (const auto& [kind, implicit] : kImplicitDrag) {
     TestScene scene = problem.scene(kind, h);
-    const State end = run_steps(scene.model, scene.state, 64);
+    const State end = run_steps(scene.model, scene.initial, 64);
     const double factor = implicit ? 1.0 / (1.0 + h * b / m) : 1.0 - h * b / m;
     expect_close(end.v, terminal + std::pow(factor, 64) * (v0 - terminal),
                  round_off_tolerance(kind, 64, h, end), std::string(kind));
