@@ -326,6 +326,13 @@ void TrajectoryReader::read_record_at(std::int64_t index, TrajectoryRecord& reco
     CollisionRecord r;
     std::int32_t type = 0;
     if (!read_int(file, type) || !read_int(file, r.first) || !read_int(file, r.second)) fail();
+    const int last_type = static_cast<int>(dim_ == 3 ? CollisionKind::kParticleSphere
+                                                     : CollisionKind::kParticleHalfPlane);
+    if (type < 0 || type > last_type) {
+      throw Error(ErrorKind::kBadInput, "record " + std::to_string(index) + " of " + path_ +
+                                            ": collision " + std::to_string(c) +
+                                            " has the unknown type " + std::to_string(type));
+    }
     r.kind = static_cast<CollisionKind>(type);
     r.normal.resize(dim_);
     if (!read_doubles(file, r.normal.data(), static_cast<std::size_t>(dim_)) ||

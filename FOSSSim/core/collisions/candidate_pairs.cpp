@@ -18,13 +18,17 @@ void AllPairs::for_each(const PairQuery&, const Visitor& visit) const {
   const int n = model.num_particles();
   const int num_edges = static_cast<int>(model.edges.size());
   const int num_half_planes = static_cast<int>(model.half_planes.size());
+  const int num_spheres = static_cast<int>(model.spheres.size());
   for (int i = 0; i < n; ++i) {
     for (int j = i + 1; j < n; ++j) visit({CollisionKind::kParticleParticle, i, j});
     for (int e = 0; e < num_edges; ++e) {
       const Edge& edge = model.edges[e];
-      if (edge.i != i && edge.j != i) visit({CollisionKind::kParticleEdge, i, e});
+      if (edge.i != i && edge.j != i && model.is_colliding_edge(e)) {
+        visit({CollisionKind::kParticleEdge, i, e});
+      }
     }
     for (int h = 0; h < num_half_planes; ++h) visit({CollisionKind::kParticleHalfPlane, i, h});
+    for (int s = 0; s < num_spheres; ++s) visit({CollisionKind::kParticleSphere, i, s});
   }
 }
 

@@ -11,7 +11,8 @@ namespace fosssim {
 
 struct SceneModel;
 
-/// A pair to test: particle `particle` against another particle, an edge or a half-plane.
+/// A pair to test: particle `particle` against another particle, an edge, a half-plane or a
+/// sphere.
 /// For particle-particle pairs particle < other.
 struct CandidatePair {
   CollisionKind kind = CollisionKind::kParticleParticle;
@@ -22,8 +23,9 @@ struct CandidatePair {
 
 /// The course's pair order (course-compatible): by particle i, then particle-particle pairs
 /// (i, j > i) by j, then particle-edge pairs by edge, then particle-half-plane pairs by
-/// half-plane. Methods whose result depends on the order (Gauss-Seidel impulses) visit pairs
-/// in this order; for sums (the penalty force) only round-off depends on it.
+/// half-plane, then particle-sphere pairs by sphere. Methods whose result depends on the order
+/// (Gauss-Seidel impulses) visit pairs in this order; for sums (the penalty force) only round-off
+/// depends on it.
 bool precedes_in_course_order(const CandidatePair& a, const CandidatePair& b);
 
 /// Where the objects may be during a step, for a conservative broad phase: every particle
@@ -37,7 +39,8 @@ struct PairQuery {
 
 /// Finds candidate pairs (the broad phase). Contract: every pair whose objects may come within
 /// their radii plus the query's margin while moving as the query says is visited, each
-/// unordered pair at most once; a particle is never paired with an edge it is an endpoint of.
+/// unordered pair at most once; a particle is never paired with an edge it is an endpoint of,
+/// nor with an edge that is no collision capsule (SceneModel::is_colliding_edge).
 /// Extra pairs are harmless (the narrow phase rejects them). All-pairs is the reference;
 /// a spatial broad phase replaces it through make_candidate_pairs without touching the
 /// detection, the responses or the penalty force.
@@ -53,7 +56,7 @@ class CandidatePairs {
 };
 
 /// Every pair, in the course's order: for each particle i, the particles j > i, the edges
-/// without i as an endpoint, then the half-planes.
+/// without i as an endpoint, the half-planes, then the spheres.
 class AllPairs final : public CandidatePairs {
  public:
   /// `model` must outlive this.

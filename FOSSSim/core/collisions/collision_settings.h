@@ -15,6 +15,13 @@ struct HalfPlane {
   Vector normal;  ///< points out of the solid, size dim; need not be unit length
 };
 
+/// A solid ball, at rest, that particles collide with (3D scenes only): the points y with
+/// ‖y - center‖ ≤ radius. To a particle it is a particle of infinite mass that never moves.
+struct Sphere {
+  Vector center;        ///< size dim
+  double radius = 0.0;  ///< > 0
+};
+
 /// How a scene handles contact (docs/collisions.md).
 enum class CollisionMethod {
   kNone,            ///< nothing collides

@@ -63,6 +63,12 @@ Separation<D> separation_of(const SceneModel& model, const CandidatePair& pair,
       s.n = half_plane_vector<D>(x, model.half_planes[pair.other]);
       s.radii = model.particle_radius[i];
       break;
+    case CollisionKind::kParticleSphere: {  // a particle that never moves
+      const Sphere& sphere = model.spheres[pair.other];
+      s.n = sphere.center.head<D>() - x;
+      s.radii = model.particle_radius[i] + sphere.radius;
+      break;
+    }
   }
   return s;
 }
@@ -74,7 +80,7 @@ Separation<D> separation(const SceneModel& model, const CandidatePair& pair, con
 }
 
 /// The velocity of the particle relative to the closest point of the other object, (v_i - v_other)
-/// with the edge's velocity interpolated at alpha; a half-plane is at rest.
+/// with the edge's velocity interpolated at alpha; half-planes and spheres are at rest.
 template <int D>
 Vec<D> relative_velocity(const SceneModel& model, const CandidatePair& pair, double alpha,
                          const Vector& v) {
@@ -89,6 +95,7 @@ Vec<D> relative_velocity(const SceneModel& model, const CandidatePair& pair, dou
       return vi - va - alpha * (vb - va);
     }
     case CollisionKind::kParticleHalfPlane:
+    case CollisionKind::kParticleSphere:
       break;
   }
   return vi;
