@@ -128,7 +128,7 @@ void LocalGlobal<D>::collect_contacts(const State& state,
     const auto consider = [&](CollisionKind kind, int obstacle) {
       const CandidatePair pair{kind, p, obstacle};
       const Separation<D> s = separation<D>(model, pair, state.q);
-      if (s.n.norm() < s.radii + margin) {
+      if (s.distance < s.radii + margin) {
         contacts_.push_back({f, pair});
         signature.emplace_back(p, penalty_->stiffness());
       }
@@ -148,10 +148,10 @@ void LocalGlobal<D>::add_contact_targets(Points<D>& rhs) const {
     // The nearest point out of reach, p + min(δ, 0) n̂ (n from the particle to the obstacle),
     // so that ½ k |p - t|² = ½ k δ² inside the reach and 0 outside, the penalty energy.
     const Separation<D> s = separation_of<D>(model, c.pair, position);
-    const double d = s.n.norm();
+    const double length = s.n.norm();
     Vec<D> target = position(c.pair.particle);
-    const double delta = d - s.radii - thickness;
-    if (d > 0.0 && delta < 0.0) target += (delta / d) * s.n;
+    const double delta = s.distance - s.radii - thickness;
+    if (length > 0.0 && delta < 0.0) target += (delta / length) * s.n;
     rhs.row(c.f) += k * target.transpose();
   }
 }
