@@ -256,9 +256,10 @@ TrajectoryReader TrajectoryReader::open(const std::string& path, int dofs, int d
     for (std::int32_t c = 0; c < count; ++c) {
       std::int32_t type = -1;
       if (!read_int(file, type)) cut_short("its collisions");
-      if (type < 0 || type > 2) {
+      if (type < 0 || type > (dim == 3 ? 3 : 2)) {  // 3, particle-sphere, is 3D only
         fail(path + ": record " + record + " has a collision of unknown type " +
-             std::to_string(type) + " (expected 0, 1 or 2)");
+             std::to_string(type) +
+             (dim == 3 ? " (expected 0, 1, 2 or 3)" : " (expected 0, 1 or 2)"));
       }
       std::fseek(file, static_cast<long>(record_bytes - 4), SEEK_CUR);
     }
@@ -326,13 +327,6 @@ void TrajectoryReader::read_record_at(std::int64_t index, TrajectoryRecord& reco
     CollisionRecord r;
     std::int32_t type = 0;
     if (!read_int(file, type) || !read_int(file, r.first) || !read_int(file, r.second)) fail();
-    const int last_type = static_cast<int>(dim_ == 3 ? CollisionKind::kParticleSphere
-                                                     : CollisionKind::kParticleHalfPlane);
-    if (type < 0 || type > last_type) {
-      throw Error(ErrorKind::kBadInput, "record " + std::to_string(index) + " of " + path_ +
-                                            ": collision " + std::to_string(c) +
-                                            " has the unknown type " + std::to_string(type));
-    }
     r.kind = static_cast<CollisionKind>(type);
     r.normal.resize(dim_);
     if (!read_doubles(file, r.normal.data(), static_cast<std::size_t>(dim_)) ||
