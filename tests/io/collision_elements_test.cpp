@@ -22,9 +22,9 @@ Scene load(const std::string& body) {
   return load_scene_text(kHeader + body + "</scene>\n", "c.xml");
 }
 
-std::string error_of(const std::string& body) {
+std::string error_of(const std::string& body, const char* header = kHeader) {
   try {
-    load_scene_text(kHeader + body + "</scene>\n", "c.xml");
+    load_scene_text(header + body + "</scene>\n", "c.xml");
   } catch (const SceneError& error) {
     return error.what();
   }
@@ -123,15 +123,6 @@ constexpr const char* kHeader3D =
     "<duration time=\"1\"/><integrator type=\"local-global\" dt=\"0.01\"/>\n"
     "<particle m=\"1\" px=\"0\" py=\"0\" pz=\"0\" vx=\"0\" vy=\"0\" vz=\"0\" fixed=\"0\"/>\n";
 
-std::string error_of_3d(const std::string& body) {
-  try {
-    load_scene_text(kHeader3D + body + "</scene>\n", "c.xml");
-  } catch (const SceneError& error) {
-    return error.what();
-  }
-  return "(loaded without error)";
-}
-
 TEST(CollisionElements, ReadsSpheresAndTheirColoursIn3D) {
   const Scene scene =
       load_scene_text(std::string(kHeader3D) +
@@ -153,15 +144,16 @@ TEST(CollisionElements, ReadsSpheresAndTheirColoursIn3D) {
 }
 
 TEST(CollisionElements, BadSpheresNameFileLineAndProblem) {
-  EXPECT_EQ(error_of_3d("<sphere px=\"0\" py=\"0\" pz=\"0\" radius=\"0\"/>\n"),
+  EXPECT_EQ(error_of("<sphere px=\"0\" py=\"0\" pz=\"0\" radius=\"0\"/>\n", kHeader3D),
             "c.xml:4: error: <sphere> 0: attribute \"radius\" must be positive, found 0");
-  EXPECT_EQ(error_of_3d("<sphere px=\"0\" py=\"0\" radius=\"1\"/>\n"),
+  EXPECT_EQ(error_of("<sphere px=\"0\" py=\"0\" radius=\"1\"/>\n", kHeader3D),
             "c.xml:4: error: <sphere> 0: attribute \"pz\" is missing");
-  EXPECT_EQ(error_of_3d("<sphere px=\"0\" py=\"0\" pz=\"0\" radius=\"1\"/>\n"
-                        "<spherecolor i=\"1\" r=\"0\" g=\"0\" b=\"0\"/>\n"),
+  EXPECT_EQ(error_of("<sphere px=\"0\" py=\"0\" pz=\"0\" radius=\"1\"/>\n"
+                     "<spherecolor i=\"1\" r=\"0\" g=\"0\" b=\"0\"/>\n",
+                     kHeader3D),
             "c.xml:5: error: <spherecolor> 0: attribute \"i\" refers to sphere 1, but the scene "
             "has 1 sphere (valid indices are 0 to 0)");
-  EXPECT_EQ(error_of_3d("<spherecolor i=\"0\" r=\"0\" g=\"0\" b=\"0\"/>\n"),
+  EXPECT_EQ(error_of("<spherecolor i=\"0\" r=\"0\" g=\"0\" b=\"0\"/>\n", kHeader3D),
             "c.xml:4: error: <spherecolor> 0: attribute \"i\" refers to sphere 0, but the scene "
             "has no spheres");
 }
