@@ -37,15 +37,13 @@ bool GradeReport::passed() const {
          max_position_passed() && max_velocity_passed() && (!collisions || collisions->passed());
 }
 
-Expected<GradeReport, std::string> grade_trajectory(const Scene& scene, TrajectoryReader& file,
-                                                    const GradingCriteria& criteria,
-                                                    const GradingProgress& progress) {
-  auto grader = StepGrader::open(scene, file, criteria);
-  if (!grader) return grader.error();
-  while (grader->grade_next_step()) {
-    if (progress) progress(grader->steps_graded(), grader->report().steps);
+GradeReport grade_trajectory(const Scene& scene, TrajectoryReader& file,
+                             const GradingCriteria& criteria, const GradingProgress& progress) {
+  StepGrader grader = StepGrader::open(scene, file, criteria);
+  while (grader.grade_next_step()) {
+    if (progress) progress(grader.steps_graded(), grader.report().steps);
   }
-  return grader->report();
+  return grader.report();
 }
 
 void print_grade_report(std::ostream& out, const GradeReport& report) {
@@ -62,12 +60,11 @@ void print_grade_report(std::ostream& out, const GradeReport& report) {
 }
 
 void write_residual_file(const std::string& path, const GradeReport& report) {
-  const auto problem = write_output_file(path, [&report](std::ostream& out) {
+  write_output_file(path, [&report](std::ostream& out) {
     for (const Criterion& c : criteria_of(report)) {
       out << (c.passed ? 1 : 0) << "   " << c.value << "\n";
     }
   });
-  if (problem) throw std::runtime_error(*problem);
 }
 
 std::string describe_failure(const GradeReport& report, int dim) {
@@ -90,6 +87,9 @@ std::string describe_failure(const GradeReport& report, int dim) {
         << c.polynomial_failures << " step(s) with wrong polynomials; " << c.sync_failures
         << " sync record(s) differing from FOSSSim's (largest residual " << c.max_sync_residual
         << ")\n";
+    const std::size_t shown = std::min<std::size_t>(c.lines.size(), 10);
+    for (std::size_t k = 0; k < shown; ++k) out << c.lines[k] << "\n";
+    if (c.lines.size() > shown) out << "  (" << c.lines.size() - shown << " more lines)\n";
   }
   if (const auto& d = report.first_divergence) {
     out << "First divergence at step " << d->step << ", particle " << d->particle

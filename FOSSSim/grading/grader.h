@@ -11,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include "core/expected.h"
 #include "core/scene.h"
 #include "io/trajectory_file.h"
 
@@ -114,11 +113,11 @@ std::array<Criterion, 4> criteria_of(const GradeReport& report);
 using GradingProgress = std::function<void(std::int64_t, std::int64_t)>;
 
 /// Grades `file` against `scene`: for every step k overwrites the state with frame k-1, takes one
-/// reference step and compares with frame k, for every particle (fixed ones included). Fails
-/// (returns the message) when the file does not hold exactly num_steps() + 1 frames.
-Expected<GradeReport, std::string> grade_trajectory(const Scene& scene, TrajectoryReader& file,
-                                                    const GradingCriteria& criteria = {},
-                                                    const GradingProgress& progress = {});
+/// reference step and compares with frame k, for every particle (fixed ones included). Throws
+/// Error (kBadInput) when the file does not hold exactly num_steps() + 1 frames.
+GradeReport grade_trajectory(const Scene& scene, TrajectoryReader& file,
+                             const GradingCriteria& criteria = {},
+                             const GradingProgress& progress = {});
 
 /// Prints the course's report lines: the collision report's lines (if any), four
 /// "<criterion>: <value>   Passed." lines, "Collisions Passed: Yes." or "No." for trajectories

@@ -17,14 +17,16 @@ StepGrader::StepGrader(const Scene& scene, TrajectoryReader& file, const Grading
   file.read_frame(0, file_state_.q, file_state_.v);
 }
 
-Expected<StepGrader, std::string> StepGrader::open(const Scene& scene, TrajectoryReader& file,
-                                                   const GradingCriteria& criteria) {
+StepGrader StepGrader::open(const Scene& scene, TrajectoryReader& file,
+                            const GradingCriteria& criteria) {
   const std::int64_t steps = scene.model.num_steps();
   if (file.num_frames() != steps + 1) {
-    return "the trajectory has " + std::to_string(file.num_frames()) +
-           " frames, but the scene takes " + std::to_string(steps) + " steps and so needs " +
-           std::to_string(steps + 1) + " (the initial state and one frame per step)" +
-           (file.num_frames() < steps + 1 ? "; the file was cut short" : "");
+    throw Error(ErrorKind::kBadInput,
+                "the trajectory has " + std::to_string(file.num_frames()) +
+                    " frames, but the scene takes " + std::to_string(steps) +
+                    " steps and so needs " + std::to_string(steps + 1) +
+                    " (the initial state and one frame per step)" +
+                    (file.num_frames() < steps + 1 ? "; the file was cut short" : ""));
   }
   return StepGrader(scene, file, criteria);
 }

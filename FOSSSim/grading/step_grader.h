@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/expected.h"
+#include "core/error.h"
 #include "core/scene.h"
 #include "core/step/step_pipeline.h"
 #include "grading/grader.h"
@@ -27,10 +27,10 @@ namespace fosssim {
 /// The report accumulates over the steps graded so far.
 class StepGrader {
  public:
-  /// Starts grading. `scene` and `file` must outlive the grader. Fails (returns the message)
-  /// when the file does not hold exactly num_steps() + 1 frames.
-  static Expected<StepGrader, std::string> open(const Scene& scene, TrajectoryReader& file,
-                                                const GradingCriteria& criteria = {});
+  /// Starts grading. `scene` and `file` must outlive the grader. Throws Error (kBadInput) when
+  /// the file does not hold exactly num_steps() + 1 frames (the message does not name the file).
+  static StepGrader open(const Scene& scene, TrajectoryReader& file,
+                         const GradingCriteria& criteria = {});
 
   /// Grades the next step. Returns false, grading nothing, once every step is graded or the
   /// reference integrator has failed (report().reference_failure says why).

@@ -339,34 +339,28 @@ class SceneParser {
 
 }  // namespace
 
-Expected<Scene, SceneError> load_scene_text(std::string_view text, const std::string& name) {
+Scene load_scene_text(std::string_view text, const std::string& name) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
-    return SceneError(name, 0, "", "the file is empty (expected a <scene> element)");
+    throw SceneError(name, 0, "", "the file is empty (expected a <scene> element)");
   }
   std::vector<std::string> warnings;
   const std::string fixed = separate_run_together_attributes(text, name, warnings);
   tinyxml2::XMLDocument doc;
   if (doc.Parse(fixed.data(), fixed.size()) != tinyxml2::XML_SUCCESS) {
-    return xml_syntax_error(name, doc);
+    throw xml_syntax_error(name, doc);
   }
   const XMLElement* root = doc.RootElement();
-  if (root == nullptr) return SceneError(name, 0, "", "the file holds no XML element");
+  if (root == nullptr) throw SceneError(name, 0, "", "the file holds no XML element");
   if (const XMLElement* second = root->NextSiblingElement()) {
-    return SceneError(name, second->GetLineNum(), std::string("<") + second->Name() + ">",
-                      "a second top-level element; a scene file holds one <scene>");
+    throw SceneError(name, second->GetLineNum(), std::string("<") + second->Name() + ">",
+                     "a second top-level element; a scene file holds one <scene>");
   }
-  try {
-    return SceneParser(name, std::move(warnings)).parse(*root);
-  } catch (const SceneError& error) {
-    return error;
-  }
+  return SceneParser(name, std::move(warnings)).parse(*root);
 }
 
-Expected<Scene, SceneError> load_scene_file(const std::string& path) {
+Scene load_scene_file(const std::string& path) {
   if (std::filesystem::path(path).extension() == ".json") return load_json_scene_file(path);
-  auto text = read_text_file(path);
-  if (!text) return text.error();
-  return load_scene_text(*text, path);
+  return load_scene_text(read_text_file(path), path);
 }
 
 }  // namespace fosssim

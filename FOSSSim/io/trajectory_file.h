@@ -12,7 +12,7 @@
 
 #include "core/collisions/collision_record.h"
 #include "core/collisions/polynomial.h"
-#include "core/expected.h"
+#include "core/error.h"
 #include "core/scene_model.h"
 #include "core/state.h"
 #include "io/output_file.h"
@@ -52,14 +52,15 @@ inline std::int64_t collision_record_bytes(int dim) { return 12 + 8 * (dim + 1);
 /// place, never renamed over (io/output_file.h).
 class TrajectoryWriter {
  public:
-  /// Creates "<path>.partial"; the error names the path and the system's reason.
-  static Expected<TrajectoryWriter, std::string> open(const std::string& path);
+  /// Creates "<path>.partial". Throws Error (kCannotWrite) naming the path and the system's
+  /// reason.
+  static TrajectoryWriter open(const std::string& path);
 
   TrajectoryWriter(TrajectoryWriter&&) noexcept;
   TrajectoryWriter& operator=(TrajectoryWriter&&) noexcept;
   ~TrajectoryWriter();
 
-  /// Appends state.q then state.v. Throws std::runtime_error on an I/O error (disk full).
+  /// Appends state.q then state.v. Throws Error (kCannotWrite) on an I/O error (disk full).
   void write_frame(const State& state);
   /// Appends q and v, then (layout kCollisions and up) int32 count and the collisions, then
   /// (kCollisionsAndPolynomials) int32 count and the polynomials. Throws like write_frame.
@@ -88,22 +89,22 @@ class TrajectoryWriter {
 /// Reads frames of a trajectory file with random access.
 class TrajectoryReader {
  public:
-  /// Opens a trajectory whose frames hold `dofs` positions and `dofs` velocities. Fails with a
-  /// message when the file is missing or its size is not a whole number of frames.
-  static Expected<TrajectoryReader, std::string> open(const std::string& path, int dofs);
+  /// Opens a trajectory whose frames hold `dofs` positions and `dofs` velocities. Throws Error
+  /// (kBadInput) when the file is missing or its size is not a whole number of frames.
+  static TrajectoryReader open(const std::string& path, int dofs);
   /// Opens a trajectory of `layout` for particles in `dim` dimensions (dofs = dim·particles).
   /// Records with collisions have no fixed size: the file is read through once to find them,
-  /// and it fails with a message naming the record and what is wrong when it ends inside a
+  /// and Error (kBadInput) names the record and what is wrong when the file ends inside a
   /// record, holds a negative or impossible count, or an unknown collision type.
-  static Expected<TrajectoryReader, std::string> open(const std::string& path, int dofs, int dim,
-                                                      TrajectoryLayout layout);
+  static TrajectoryReader open(const std::string& path, int dofs, int dim, TrajectoryLayout layout);
 
   /// The number of end-of-step frames, the initial state included: steps + 1.
   std::int64_t num_frames() const { return num_frames_; }
   int dofs() const { return dofs_; }
+  const std::string& path() const { return path_; }
   TrajectoryLayout layout() const { return layout_; }
   /// Reads frame k (0-based: the initial state, then the end of step k) into q and v (resized
-  /// to dofs). Throws on an I/O error.
+  /// to dofs). Throws Error (kBadInput) on an I/O error.
   void read_frame(std::int64_t k, Vector& q, Vector& v);
   /// Reads frame k whole: state, collisions and polynomials.
   void read_record(std::int64_t k, TrajectoryRecord& record);
@@ -130,8 +131,7 @@ class TrajectoryReader {
 };
 
 /// Opens a trajectory of `model`'s scene in the layout of its collision method.
-inline Expected<TrajectoryReader, std::string> open_trajectory(const std::string& path,
-                                                               const SceneModel& model) {
+inline TrajectoryReader open_trajectory(const std::string& path, const SceneModel& model) {
   return TrajectoryReader::open(path, model.num_dofs(), model.dim, trajectory_layout(model));
 }
 

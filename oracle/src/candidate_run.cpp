@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "child_process.h"
+#include "core/error.h"
 #include "core/scene_model.h"
 #include "core/text.h"
 #include "io/trajectory_file.h"
@@ -140,8 +141,8 @@ WorkFolder::WorkFolder(const std::string& parent) {
   }
   std::string pattern = base + "/fosssim-oracle-XXXXXX";
   if (::mkdtemp(pattern.data()) == nullptr) {
-    throw std::runtime_error("cannot create a temporary folder in " + base + ": " +
-                             std::strerror(errno));
+    throw Error(ErrorKind::kCannotWrite,
+                "cannot create a temporary folder in " + base + ": " + std::strerror(errno));
   }
   path_ = pattern;
 }

@@ -18,7 +18,7 @@ struct SceneModel;
 class WorkFolder {
  public:
   /// Creates the folder under `parent` (the system's temporary folder when empty). Throws
-  /// std::runtime_error when it cannot.
+  /// Error (kCannotWrite) when it cannot.
   explicit WorkFolder(const std::string& parent);
   ~WorkFolder();
   WorkFolder(const WorkFolder&) = delete;

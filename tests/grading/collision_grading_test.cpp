@@ -39,9 +39,7 @@ using Edit = std::function<void(std::int64_t step, bool sync, TrajectoryRecord& 
 class CollisionGrading : public testing::Test {
  protected:
   void load(const char* type) {
-    auto loaded = load_scene_text(scene_text(type), "collide.xml");
-    ASSERT_TRUE(loaded) << loaded.error().what();
-    scene_ = std::make_unique<Scene>(std::move(loaded).value());
+    scene_ = std::make_unique<Scene>(load_scene_text(scene_text(type), "collide.xml"));
     path_ = (fs::temp_directory_path() /
              ("fosssim_collision_grading_" +
               std::string(testing::UnitTest::GetInstance()->current_test_info()->name())))
@@ -52,9 +50,9 @@ class CollisionGrading : public testing::Test {
   /// Writes the scene's own run, edited, and grades it; returns the printed report.
   std::string grade(const Edit& edit, bool& passed) {
     const TrajectoryLayout layout = trajectory_layout(scene_->model);
-    auto writer = TrajectoryWriter::open(path_);
+    TrajectoryWriter writer = TrajectoryWriter::open(path_);
     Simulation simulation(scene_->model, scene_->initial);
-    writer->write_record(layout, scene_->initial.q, scene_->initial.v, {}, {});
+    writer.write_record(layout, scene_->initial.q, scene_->initial.v, {}, {});
     while (!simulation.finished()) {
       simulation.step();
       const StepRecord& r = simulation.last_record();
@@ -63,20 +61,18 @@ class CollisionGrading : public testing::Test {
         TrajectoryRecord sync{r.sync->q, r.sync->v, r.collisions, r.polynomials};
         sync.polynomials.resize(r.sync->polynomials_logged);
         edit(k, true, sync);
-        writer->write_record(layout, sync.q, sync.v, sync.collisions, sync.polynomials);
+        writer.write_record(layout, sync.q, sync.v, sync.collisions, sync.polynomials);
       }
       TrajectoryRecord end{simulation.state().q, simulation.state().v, r.collisions, r.polynomials};
       edit(k, false, end);
-      writer->write_record(layout, end.q, end.v, end.collisions, end.polynomials);
+      writer.write_record(layout, end.q, end.v, end.collisions, end.polynomials);
     }
-    writer->commit();
-    auto file = open_trajectory(path_, scene_->model);
-    EXPECT_TRUE(file) << file.error();
-    auto report = grade_trajectory(*scene_, *file);
-    EXPECT_TRUE(report) << report.error();
+    writer.commit();
+    TrajectoryReader file = open_trajectory(path_, scene_->model);
+    const GradeReport report = grade_trajectory(*scene_, file);
     std::ostringstream out;
-    print_grade_report(out, *report);
-    passed = report->passed();
+    print_grade_report(out, report);
+    passed = report.passed();
     return out.str();
   }
 

@@ -10,11 +10,7 @@
 namespace fosssim {
 namespace {
 
-Scene load(const std::string& xml) {
-  auto scene = load_scene_text(xml, "test.xml");
-  if (!scene) ADD_FAILURE() << scene.error().what();
-  return std::move(scene).value();
-}
+Scene load(const std::string& xml) { return load_scene_text(xml, "test.xml"); }
 
 TEST(SceneLoader, ReadsParticlesEdgesAndSettings) {
   const Scene scene = load(R"(<scene>

@@ -4,10 +4,11 @@
 #include <gtest/gtest.h>
 #include <tinyxml2.h>
 
-#include "app_render/program_runner.h"
 #include "pictures/cairo_painter.h"
 #include "render/drawing_3d.h"
-#include "render/tiny_scene_3d.h"
+#include "support/scene_builder.h"
+#include "support/scratch_folder.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {

@@ -17,7 +17,8 @@
 #include "core/collisions/proximity.h"
 #include "core/collisions/swept_detection.h"
 #include "core/step/step_pipeline.h"
-#include "test_support.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
 
 namespace fosssim {
 namespace {

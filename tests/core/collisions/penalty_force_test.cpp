@@ -10,7 +10,10 @@
 #include "core/force_set.h"
 #include "core/step/simulation.h"
 #include "core/step_error.h"
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/finite_differences.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
 
 namespace fosssim {
 namespace {
@@ -38,7 +41,7 @@ TestScene contact_scene(PenaltyJacobian jacobian) {
 TEST(PenaltyForce, ForcesMatchHandComputation) {
   TestScene scene = contact_scene(PenaltyJacobian::kNone);
   const double k = 100.0, T = 0.05;
-  const Vector F = compute_force(ForceSet(scene.model), scene.state.q, scene.state.v);
+  const Vector F = compute_force(ForceSet(scene.model), scene.initial.q, scene.initial.v);
   // Particle-particle: n = x1 - x0 = (0.32, 0.02), δ = ‖n‖ - 0.3 - T.
   const Vector n01 = vec({0.32, 0.17}) - vec({0.0, 0.15});
   const double d01 = n01.norm() - 0.3 - T;
@@ -66,7 +69,7 @@ TEST(PenaltyForce, NothingOutsideRadiiPlusThicknessAndNoForceAtTheBoundary) {
   scene.add_particle(1, vec({0.5, 0}), vec({0, 0}), false, 0.25);  // 0.5 = 0.2 + 0.25 + 0.05
   scene.model.collisions.method = CollisionMethod::kPenalty;
   scene.model.collisions.thickness = 0.05;
-  const Vector F = compute_force(ForceSet(scene.model), scene.state.q, scene.state.v);
+  const Vector F = compute_force(ForceSet(scene.model), scene.initial.q, scene.initial.v);
   EXPECT_EQ(F.norm(), 0.0);
 }
 
@@ -76,12 +79,12 @@ TEST(PenaltyForce, CourseSemanticsHaveNoJacobianAndTheGradientMatchesTheEnergy) 
   const Force& penalty = *forces.forces().back();
   EXPECT_FALSE(penalty.has_jacobian());
   HessianBuilder hessian;
-  penalty.add_hessian_x(ForceInput{scene.state.q, scene.state.v, scene.model.mass}, hessian);
+  penalty.add_hessian_x(ForceInput{scene.initial.q, scene.initial.v, scene.model.mass}, hessian);
   EXPECT_TRUE(hessian.triplets().empty());
   DerivativeCheckOptions options;
   options.step = 1e-6;
   for (const DerivativeCheck& check :
-       check_force_derivatives(penalty, scene.state.q, scene.state.v, scene.model.mass, options)) {
+       check_force_derivatives(penalty, scene.initial.q, scene.initial.v, scene.model.mass, options)) {
     EXPECT_NE(check.which, Derivative::kHessianX);
     EXPECT_TRUE(check.passed()) << derivative_name(check.which) << " " << check.relative_error();
   }
@@ -108,7 +111,7 @@ TEST(PenaltyForce, ExactJacobianMatchesFiniteDifferencesOnRandomContacts) {
     const Force& penalty = *forces.forces().back();
     ASSERT_TRUE(penalty.has_jacobian());
     EXPECT_TRUE(
-        testing::check_force_everywhere(penalty, 2, scene.state.q, scene.state.v, scene.model.mass,
+        testing::check_force_everywhere(penalty, 2, scene.initial.q, scene.initial.v, scene.model.mass,
                                         {"penalty(exact)", "random", std::to_string(trial)}));
   }
 }
@@ -128,7 +131,7 @@ TestScene stiff_floor(std::string_view integrator, PenaltyJacobian jacobian) {
 
 /// Runs 200 steps; returns the largest speed reached, or infinity if the run failed.
 double largest_speed(TestScene scene) {
-  Simulation simulation(scene.model, scene.state);
+  Simulation simulation(scene.model, scene.initial);
   double fastest = 0.0;
   try {
     for (int k = 0; k < 200; ++k) {

@@ -8,7 +8,10 @@
 #include <cmath>
 #include <vector>
 
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/finite_differences.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
 
 namespace fosssim {
 namespace {

@@ -9,7 +9,10 @@
 #include "core/collisions/impulses.h"
 #include "core/collisions/proximity.h"
 #include "core/step/step_pipeline.h"
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/finite_differences.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
 
 namespace fosssim {
 namespace {
@@ -22,7 +25,7 @@ using testing::vec;
 StepRecord step_once(TestScene& scene) {
   StepPipeline pipeline(scene.model);
   StepRecord record;
-  pipeline.step(scene.state, &record);
+  pipeline.step(scene.initial, &record);
   return record;
 }
 
@@ -37,8 +40,8 @@ TEST(SimpleCollisions, CourseWorkedExampleParticleEdgeWithRestitutionHalf) {
   scene.model.collisions.method = CollisionMethod::kSimple;
   scene.model.collisions.cor = 0.5;
   const StepRecord record = step_once(scene);
-  EXPECT_EQ(scene.state.v[1], 0.17035110533159936);
-  EXPECT_EQ(scene.state.v[5], -0.50715214564369315);
+  EXPECT_EQ(scene.initial.v[1], 0.17035110533159936);
+  EXPECT_EQ(scene.initial.v[5], -0.50715214564369315);
   ASSERT_EQ(record.collisions.size(), 1u);
   EXPECT_EQ(record.collisions[0].kind, CollisionKind::kParticleEdge);
   EXPECT_EQ(record.collisions[0].first, 0);
@@ -48,8 +51,8 @@ TEST(SimpleCollisions, CourseWorkedExampleParticleEdgeWithRestitutionHalf) {
   // Hand evaluation: α = 0.65, n̂ = (0, -1) up to round-off, s = 2 (0 - (-1))·(-1) = -2,
   // c = 0.75: Δv_0 = c s / (1 + α² M_0/M_2) n̂, Δv_2 = -c α s / (M_2/M_0 + α²) n̂.
   const double alpha = 0.65, c = 0.75, s = -2.0;
-  EXPECT_NEAR(scene.state.v[1], -1.0 - c * s / (1.0 + alpha * alpha * 2.0 / 3.0), 1e-14);
-  EXPECT_NEAR(scene.state.v[5], -(-c * alpha * s / (3.0 / 2.0 + alpha * alpha)), 1e-14);
+  EXPECT_NEAR(scene.initial.v[1], -1.0 - c * s / (1.0 + alpha * alpha * 2.0 / 3.0), 1e-14);
+  EXPECT_NEAR(scene.initial.v[5], -(-c * alpha * s / (3.0 / 2.0 + alpha * alpha)), 1e-14);
 }
 
 TEST(SimpleCollisions, TouchingExactlyOrMovingApartIsNotACollision) {
@@ -72,7 +75,7 @@ TEST(SimpleCollisions, CentreOnAnEdgeOrABoundaryIsNeverDetected) {
   scene.add_particle(1, vec({1, 0}), vec({0, 0}), true);
   scene.add_edge(1, 2, 0.1);
   scene.add_half_plane(vec({0, 0}), vec({0, 1}));
-  scene.state.v.setZero();
+  scene.initial.v.setZero();
   scene.model.collisions.method = CollisionMethod::kSimple;
   EXPECT_TRUE(step_once(scene).collisions.empty());
 }
@@ -88,11 +91,11 @@ TEST(SimpleCollisions, HalfPlaneDistanceIsUnsigned) {
     const StepRecord record = step_once(scene);
     if (vy < 0.0) {
       EXPECT_TRUE(record.collisions.empty());
-      EXPECT_EQ(scene.state.v[1], -1.0);
+      EXPECT_EQ(scene.initial.v[1], -1.0);
     } else {
       ASSERT_EQ(record.collisions.size(), 1u);
       EXPECT_GT(record.collisions[0].normal[1], 0.0);  // towards the boundary, above
-      EXPECT_EQ(scene.state.v[1], -1.0);               // reflected: deeper into the solid
+      EXPECT_EQ(scene.initial.v[1], -1.0);               // reflected: deeper into the solid
     }
   }
 }
@@ -110,9 +113,9 @@ TEST(SimpleCollisions, GaussSeidelInTheCourseOrderPassesMomentumAlongAChain) {
   EXPECT_EQ(record.collisions[0].second, 1);
   EXPECT_EQ(record.collisions[1].first, 1);
   EXPECT_EQ(record.collisions[1].second, 2);
-  EXPECT_NEAR(scene.state.v[0], 0.0, 1e-15);
-  EXPECT_NEAR(scene.state.v[2], 0.0, 1e-15);
-  EXPECT_NEAR(scene.state.v[4], 1.0, 1e-15);
+  EXPECT_NEAR(scene.initial.v[0], 0.0, 1e-15);
+  EXPECT_NEAR(scene.initial.v[2], 0.0, 1e-15);
+  EXPECT_NEAR(scene.initial.v[4], 1.0, 1e-15);
 }
 
 TEST(SimpleCollisions, FixedParticlesHaveInfiniteMassAndDoNotMove) {
@@ -121,10 +124,10 @@ TEST(SimpleCollisions, FixedParticlesHaveInfiniteMassAndDoNotMove) {
   scene.add_particle(7, vec({0.35, 0}), vec({0, 0}), true, 0.2);
   scene.model.collisions.method = CollisionMethod::kSimple;
   step_once(scene);
-  EXPECT_EQ(scene.state.v[0], -1.0);  // reflected as from a wall
-  EXPECT_EQ(scene.state.v[1], 0.0);
-  EXPECT_EQ(scene.state.v[2], 0.0);
-  EXPECT_EQ(scene.state.v[3], 0.0);
+  EXPECT_EQ(scene.initial.v[0], -1.0);  // reflected as from a wall
+  EXPECT_EQ(scene.initial.v[1], 0.0);
+  EXPECT_EQ(scene.initial.v[2], 0.0);
+  EXPECT_EQ(scene.initial.v[3], 0.0);
 }
 
 TEST(SimpleCollisions, FixedParticleAgainstAnEdgeWithAFixedEndGivesTheCoursesNaN) {
@@ -136,9 +139,9 @@ TEST(SimpleCollisions, FixedParticleAgainstAnEdgeWithAFixedEndGivesTheCoursesNaN
   scene.add_particle(1, vec({1, 0}), vec({0, 0}), false, 0.1);
   const int e = scene.add_edge(1, 2, 0.1);
   const CandidatePair pair{CollisionKind::kParticleEdge, 0, e};
-  const Separation<2> s = separation<2>(scene.model, pair, scene.state.q);
+  const Separation<2> s = separation<2>(scene.model, pair, scene.initial.q);
   EXPECT_EQ(s.alpha, 0.0);
-  const auto w = [&](int p) -> Vec<2> { return scene.state.v.segment<2>(2 * p); };
+  const auto w = [&](int p) -> Vec<2> { return scene.initial.v.segment<2>(2 * p); };
   const Impulse<2> impulse = compute_impulse<2>(scene.model, pair, s.n, s.alpha, w, 1.0);
   ASSERT_EQ(impulse.count, 1);
   EXPECT_EQ(impulse.particle[0], 2);
@@ -157,18 +160,18 @@ void expect_elastic_impulses_conserve_momentum_and_energy() {
     }
     scene.add_edge(1, 2);
     const SceneModel& model = scene.model;
-    const auto w = [&](int p) -> Vec<D> { return scene.state.v.template segment<D>(D * p); };
+    const auto w = [&](int p) -> Vec<D> { return scene.initial.v.template segment<D>(D * p); };
     for (const CandidatePair pair : {CandidatePair{CollisionKind::kParticleParticle, 0, 1},
                                      CandidatePair{CollisionKind::kParticleEdge, 0, 0}}) {
-      const Separation<D> s = separation<D>(model, pair, scene.state.q);
+      const Separation<D> s = separation<D>(model, pair, scene.initial.q);
       const Impulse<D> impulse = compute_impulse<D>(model, pair, s.n, s.alpha, w, 1.0);
-      Vector v = scene.state.v;
+      Vector v = scene.initial.v;
       for (int k = 0; k < impulse.count; ++k) {
         v.template segment<D>(D * impulse.particle[k]) += impulse.dv[k];
       }
       testing::expect_close(testing::linear_momentum(model, v),
-                            testing::linear_momentum(model, scene.state.v), 1e-13, "momentum");
-      const double before = 0.5 * scene.state.v.dot(model.mass.cwiseProduct(scene.state.v));
+                            testing::linear_momentum(model, scene.initial.v), 1e-13, "momentum");
+      const double before = 0.5 * scene.initial.v.dot(model.mass.cwiseProduct(scene.initial.v));
       const double after = 0.5 * v.dot(model.mass.cwiseProduct(v));
       EXPECT_NEAR(after, before, 1e-12 * (1.0 + before)) << "trial " << trial;
     }
@@ -203,7 +206,7 @@ void expect_no_overlap_missed(unsigned seed) {
   const SceneModel& model = scene.model;
   const auto pairs = make_candidate_pairs(model);
   std::vector<CandidatePair> seen;
-  pairs->for_each(PairQuery{scene.state.q, scene.state.q, 0.0},
+  pairs->for_each(PairQuery{scene.initial.q, scene.initial.q, 0.0},
                   [&seen](const CandidatePair& pair) { seen.push_back(pair); });
   const auto has = [&seen](const CandidatePair& pair) {
     return std::count(seen.begin(), seen.end(), pair);
@@ -211,7 +214,7 @@ void expect_no_overlap_missed(unsigned seed) {
   int overlaps = 0;
   for (int i = 0; i < n; ++i) {
     const auto check = [&](const CandidatePair& pair) {
-      const Separation<D> s = separation<D>(model, pair, scene.state.q);
+      const Separation<D> s = separation<D>(model, pair, scene.initial.q);
       if (s.n.norm() < s.radii) {
         ++overlaps;
         EXPECT_EQ(has(pair), 1);
@@ -237,6 +240,48 @@ TEST(CandidatePairs, NoOverlapMissedOnRandomScenes) {
     expect_no_overlap_missed<2>(seed);
     expect_no_overlap_missed<3>(seed);
   }
+}
+
+TEST(Collisions3D, HalfSpacesParticlesAndEdgesWithEveryMethodButHybrid) {
+  // A ball falls onto the half-space z ≤ 0 (normal of length 3) in 3D: simple impulses reflect
+  // it; continuous-time catches it even when it would pass the floor within one step; the
+  // penalty force pushes it up.
+  for (const CollisionMethod method :
+       {CollisionMethod::kSimple, CollisionMethod::kContinuousTime, CollisionMethod::kPenalty}) {
+    TestScene scene(3, "explicit-euler", 0.01);
+    const double speed = method == CollisionMethod::kContinuousTime ? 50.0 : 1.0;
+    scene.add_particle(1, vec({0.1, -0.2, 0.05}), vec({0.3, 0, -speed}), false, 0.1);
+    scene.add_half_plane(vec({0, 0, 0}), vec({0, 0, 3}));
+    scene.model.collisions.method = method;
+    StepPipeline pipeline(scene.model);
+    StepRecord record;
+    pipeline.step(scene.initial, &record);
+    if (method == CollisionMethod::kPenalty) {
+      EXPECT_GT(scene.initial.v[2], -speed) << "pushed up";
+      continue;
+    }
+    ASSERT_EQ(record.collisions.size(), 1u);
+    EXPECT_EQ(record.collisions[0].kind, CollisionKind::kParticleHalfPlane);
+    EXPECT_EQ(record.collisions[0].normal.size(), 3);
+    EXPECT_NEAR(scene.initial.v[2], speed, 1e-9);
+    EXPECT_NEAR(scene.initial.v[0], 0.3, 1e-15);
+  }
+  // A particle against a particle and an edge in 3D, with simple impulses.
+  TestScene scene(3, "explicit-euler", 0.01);
+  scene.add_particle(1, vec({0, 0, 0.15}), vec({0, 0, -1}), false, 0.1);
+  scene.add_particle(1, vec({-1, 0, 0}), vec({0, 0, 0}), true, 0.05);
+  scene.add_particle(1, vec({1, 0, 0}), vec({0, 0, 0}), true, 0.05);
+  scene.add_edge(1, 2, 0.1);
+  scene.add_particle(1, vec({0.12, 0, 0.25}), vec({-2, 0, 0}), false, 0.1);
+  scene.model.collisions.method = CollisionMethod::kSimple;
+  StepPipeline pipeline(scene.model);
+  StepRecord record;
+  pipeline.step(scene.initial, &record);
+  // In the course's order: particle 0 against particle 3, then against the edge.
+  ASSERT_EQ(record.collisions.size(), 2u);
+  EXPECT_EQ(record.collisions[0].kind, CollisionKind::kParticleParticle);
+  EXPECT_EQ(record.collisions[0].second, 3);
+  EXPECT_EQ(record.collisions[1].kind, CollisionKind::kParticleEdge);
 }
 
 }  // namespace

@@ -8,9 +8,13 @@
 #include <cmath>
 #include <limits>
 
+#include "core/collisions/impact_zones.h"
 #include "core/collisions/intervals.h"
 #include "core/step/step_pipeline.h"
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/finite_differences.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
 
 namespace fosssim {
 namespace {
@@ -38,7 +42,7 @@ void expect_polynomials_match_direct_evaluation(unsigned seed) {
   scene.add_edge(1, 2, 0.2);
   scene.add_half_plane(random.uniform_vector(D, -1, 1), random.uniform_vector(D, -2, 2));
   const SceneModel& model = scene.model;
-  const Vector xs = scene.state.q;
+  const Vector xs = scene.initial.q;
   const Vector xe = xs + random.uniform_vector(3 * D, -0.5, 0.5);
   const double r0 = model.particle_radius[0];
   for (double t : {0.0, 0.3, 0.77, 1.0, -0.4, 1.6}) {
@@ -104,7 +108,7 @@ TEST(SweptDetection, LeadingCoefficientsBelowOneInATrillionAreDropped) {
   scene.add_particle(1, vec({0, 0}), vec({0, 0}), false, 0.5);
   scene.add_particle(1, vec({0.5, 0}), vec({0, 0}), false, 0.5);
   const auto p = swept_polynomials<2>(scene.model, {CollisionKind::kParticleParticle, 0, 1},
-                                      scene.state.q, scene.state.q);
+                                      scene.initial.q, scene.initial.q);
   EXPECT_EQ(p[0].degree(), 0);
   EXPECT_TRUE(p[1].empty());
 }
@@ -142,17 +146,17 @@ TEST(ContinuousTime, CourseWorkedExampleTwoBalls) {
   scene.model.collisions.method = CollisionMethod::kContinuousTime;
   StepPipeline pipeline(scene.model);
   StepRecord record;
-  pipeline.step(scene.state, &record);
+  pipeline.step(scene.initial, &record);
   ASSERT_EQ(record.collisions.size(), 1u);
   EXPECT_NEAR(record.collisions[0].time, 0.99999999999999164, 1e-15);
   EXPECT_NEAR(record.collisions[0].normal[0], 0.4, 1e-15);
-  EXPECT_NEAR(scene.state.q[0], -0.40999999999999948, 1e-15);
-  EXPECT_NEAR(scene.state.v[0], -8.88e-16, 1e-17);
-  EXPECT_EQ(scene.state.q[2], 0.010000000000000009);
-  EXPECT_EQ(scene.state.v[2], 1.0000000000000009);
+  EXPECT_NEAR(scene.initial.q[0], -0.40999999999999948, 1e-15);
+  EXPECT_NEAR(scene.initial.v[0], -8.88e-16, 1e-17);
+  EXPECT_EQ(scene.initial.q[2], 0.010000000000000009);
+  EXPECT_EQ(scene.initial.v[2], 1.0000000000000009);
   EXPECT_EQ(record.polynomials.size(), 2u);  // N(N - 1)
   ASSERT_TRUE(record.sync);
-  EXPECT_EQ(record.sync->q, scene.state.q);
+  EXPECT_EQ(record.sync->q, scene.initial.q);
   EXPECT_EQ(record.sync->polynomials_logged, 2u);
 }
 
@@ -165,15 +169,15 @@ TEST(ContinuousTime, CatchesAFastParticleThatDiscreteDetectionMisses) {
     scene.model.collisions.method = method;
     StepPipeline pipeline(scene.model);
     StepRecord record;
-    pipeline.step(scene.state, &record);
+    pipeline.step(scene.initial, &record);
     if (method == CollisionMethod::kSimple) {
       EXPECT_TRUE(record.collisions.empty());  // it tunnelled through
-      EXPECT_GT(scene.state.q[0], 0.4);
+      EXPECT_GT(scene.initial.q[0], 0.4);
     } else {
       ASSERT_EQ(record.collisions.size(), 1u);
       EXPECT_NEAR(record.collisions[0].time, 0.4, 1e-12);
-      EXPECT_LT(scene.state.q[0], -0.1);  // bounced back
-      EXPECT_NEAR(scene.state.v[0], -100.0, 1e-9);
+      EXPECT_LT(scene.initial.q[0], -0.1);  // bounced back
+      EXPECT_NEAR(scene.initial.v[0], -100.0, 1e-9);
     }
   }
 }
@@ -191,16 +195,16 @@ TEST(Hybrid, CourseWorkedExampleThreeBallsWithOneImpulsePass) {
   scene.model.collisions.thickness = 0.1;
   StepPipeline pipeline(scene.model);
   StepRecord record;
-  pipeline.step(scene.state, &record);
+  pipeline.step(scene.initial, &record);
   ASSERT_TRUE(record.sync);
   EXPECT_NEAR(record.sync->v[2], 1.0, 1e-15);
   EXPECT_EQ(record.sync->polynomials_logged, 6u);
   EXPECT_EQ(record.polynomials.size(), 18u);
   EXPECT_TRUE(record.collisions.empty());
-  EXPECT_NEAR(scene.state.q[2], 0.005, 1e-15);
-  EXPECT_NEAR(scene.state.q[4], 0.455, 1e-15);
-  EXPECT_NEAR(scene.state.v[2], 0.5, 1e-15);
-  EXPECT_NEAR(scene.state.v[4], 0.5, 1e-15);
+  EXPECT_NEAR(scene.initial.q[2], 0.005, 1e-15);
+  EXPECT_NEAR(scene.initial.q[4], 0.455, 1e-15);
+  EXPECT_NEAR(scene.initial.v[2], 0.5, 1e-15);
+  EXPECT_NEAR(scene.initial.v[4], 0.5, 1e-15);
 }
 
 TEST(Hybrid, ZonesTouchingAHalfPlaneOrAFixedParticleStopDead) {
@@ -210,9 +214,53 @@ TEST(Hybrid, ZonesTouchingAHalfPlaneOrAFixedParticleStopDead) {
   scene.model.collisions.method = CollisionMethod::kHybrid;
   scene.model.collisions.max_iterations = 0;  // straight to the geometric stage
   StepPipeline pipeline(scene.model);
-  pipeline.step(scene.state);
-  EXPECT_EQ(scene.state.q[1], 0.3);
-  EXPECT_EQ(scene.state.v[1], 0.0);
+  pipeline.step(scene.initial);
+  EXPECT_EQ(scene.initial.q[1], 0.3);
+  EXPECT_EQ(scene.initial.v[1], 0.0);
+}
+
+TEST(Hybrid, RigidFailsafeKeepsTheZonesShapeMomentumAndAngularMomentum) {
+  // Three particles (masses 1, 2, 3) whose integrated positions moved and deformed: the zone
+  // moves rigidly, its centre of mass goes where the integrated one went, and the rotation is
+  // ω = L/I, so the angular momentum of the displacements about the centre is kept.
+  TestScene scene(2, "explicit-euler", 0.1);
+  scene.add_particle(1, vec({-1, 0}), vec({0, 0}));
+  scene.add_particle(2, vec({1, 0}), vec({0, 0}));
+  scene.add_particle(3, vec({0, 1}), vec({0, 0}));
+  const Vector xs = scene.initial.q;
+  Vector q = xs + vec({0.1, -0.05, 0.2, 0.15, -0.1, 0.1});
+  Vector v = Vector::Zero(6);
+  const ImpactZone zone = merge_impact_zones(
+      {impact_zone_of(scene.model, {CollisionKind::kParticleParticle, 0, 1}),
+       impact_zone_of(scene.model, {CollisionKind::kParticleParticle, 1, 2})})[0];
+  ASSERT_EQ(zone.particles, (std::vector<int>{0, 1, 2}));
+  const Vector integrated = q;
+  apply_rigid_failsafe(scene.model, zone, xs, 0.1, q, v);
+  const auto point = [](const Vector& x, int p) -> Vec<2> { return x.segment<2>(2 * p); };
+  for (int a = 0; a < 3; ++a) {
+    for (int b = a + 1; b < 3; ++b) {
+      EXPECT_NEAR((point(q, a) - point(q, b)).norm(), (point(xs, a) - point(xs, b)).norm(), 1e-14);
+    }
+    testing::expect_close(point(v, a), (point(q, a) - point(xs, a)) / 0.1, 1e-13, "velocity");
+  }
+  const double m[3] = {1, 2, 3};
+  Vec<2> cm_xs = Vec<2>::Zero(), cm_q = Vec<2>::Zero(), cm_int = Vec<2>::Zero();
+  for (int p = 0; p < 3; ++p) {
+    cm_xs += m[p] * point(xs, p) / 6.0;
+    cm_q += m[p] * point(q, p) / 6.0;
+    cm_int += m[p] * point(integrated, p) / 6.0;
+  }
+  EXPECT_NEAR((cm_q - cm_int).norm(), 0.0, 1e-14);
+  // The rotation angle is L/I with the displacements relative to the centre's.
+  double L = 0.0, I = 0.0;
+  for (int p = 0; p < 3; ++p) {
+    const Vec<2> r = point(xs, p) - cm_xs;
+    const Vec<2> d = point(integrated, p) - point(xs, p) - (cm_int - cm_xs);
+    L += m[p] * (r.x() * d.y() - r.y() * d.x());
+    I += m[p] * r.squaredNorm();
+  }
+  const Vec<2> r0 = point(xs, 0) - cm_xs, r0_now = point(q, 0) - cm_q;
+  EXPECT_NEAR(std::atan2(r0.x() * r0_now.y() - r0.y() * r0_now.x(), r0.dot(r0_now)), L / I, 1e-14);
 }
 
 }  // namespace
