@@ -30,9 +30,7 @@ struct Box {
     return true;
   }
   /// The smallest box holding both.
-  Box united(const Box& other) const {
-    return {lo.cwiseMin(other.lo), hi.cwiseMax(other.hi)};
-  }
+  Box united(const Box& other) const { return {lo.cwiseMin(other.lo), hi.cwiseMax(other.hi)}; }
   /// The longest side.
   double extent() const { return (hi - lo).maxCoeff(); }
 };

@@ -46,8 +46,8 @@ bool uses_grid_pairs(const SceneModel& model) {
   // The grid visits the pairs that can act in the course's order, so penalty forces and simple
   // impulses come out bit-identical; 2D continuous-time and hybrid files log the polynomials
   // of every pair the course visits, which only all pairs reproduces.
-  return model.dim == 3 || (s.method != CollisionMethod::kContinuousTime &&
-                            s.method != CollisionMethod::kHybrid);
+  return model.dim == 3 ||
+         (s.method != CollisionMethod::kContinuousTime && s.method != CollisionMethod::kHybrid);
 }
 
 std::unique_ptr<CandidatePairs> make_candidate_pairs(const SceneModel& model) {

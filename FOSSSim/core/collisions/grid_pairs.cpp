@@ -234,8 +234,7 @@ void GridPairs<D>::follow_move(const PairQuery& query, int p, const CandidatePai
     }
   };
   motion_boxes_[p] = motion_boxes_[p].united(grown(motion, (e - s).norm()));
-  particle_boxes_[p] =
-      grown(motion_boxes_[p], std::fmax(model_->particle_radius[p], 0.0) + pad_);
+  particle_boxes_[p] = grown(motion_boxes_[p], std::fmax(model_->particle_radius[p], 0.0) + pad_);
   if (!escaped_particle_[p]) {
     escaped_particle_[p] = 1;
     escaped_particles_.push_back(p);

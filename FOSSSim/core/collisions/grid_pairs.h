@@ -65,9 +65,9 @@ class GridPairs final : public CandidatePairs {
   std::vector<int> incident_start_, incident_edges_;  // edges of each particle, CSR
 
   // Scratch, reused from query to query (a GridPairs answers one query at a time).
-  mutable double margin_ = 0.0;    // the query's margin, at least 0
-  mutable double rounding_ = 0.0;  // the round-off allowance
-  mutable double pad_ = 0.0;       // half the margin plus the round-off allowance
+  mutable double margin_ = 0.0;               // the query's margin, at least 0
+  mutable double rounding_ = 0.0;             // the round-off allowance
+  mutable double pad_ = 0.0;                  // half the margin plus the round-off allowance
   mutable std::vector<Box<D>> motion_boxes_;  // each particle's segment (and slack)
   mutable std::vector<Box<D>> particle_boxes_, edge_boxes_;
   mutable BoxGrid<D> particle_grid_, edge_grid_;

@@ -2,6 +2,8 @@
 // overlap missed on random scenes in 2D and 3D, static, swept and moving queries, and whole
 // simulations equal to all pairs bit for bit.
 
+#include "core/collisions/grid_pairs.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +15,6 @@
 
 #include "core/collisions/box_grid.h"
 #include "core/collisions/candidate_pairs.h"
-#include "core/collisions/grid_pairs.h"
 #include "core/collisions/proximity.h"
 #include "core/collisions/swept_detection.h"
 #include "core/step/step_pipeline.h"
@@ -47,8 +48,8 @@ std::vector<Box<D>> random_boxes(Random& random, int count) {
   }
   const double inf = std::numeric_limits<double>::infinity();
   Vec<D> far = Vec<D>::Constant(1e300);
-  boxes.push_back({-far, far});                                  // huge
-  boxes.push_back({Vec<D>::Constant(-inf), Vec<D>::Zero()});     // unbounded
+  boxes.push_back({-far, far});                                       // huge
+  boxes.push_back({Vec<D>::Constant(-inf), Vec<D>::Zero()});          // unbounded
   boxes.push_back({Vec<D>::Constant(std::nan("")), Vec<D>::Zero()});  // not a number
   return boxes;
 }
@@ -70,8 +71,7 @@ void check_box_grid(unsigned seed) {
         if (grid.level_of(k) >= min_level && boxes[k].overlaps(query)) expected.push_back(k);
       }
       std::sort(got.begin(), got.end());
-      ASSERT_EQ(got, expected) << "seed " << seed << ", base cell " << base_cell << ", query "
-                               << q;
+      ASSERT_EQ(got, expected) << "seed " << seed << ", base cell " << base_cell << ", query " << q;
     }
   }
 }
@@ -115,7 +115,8 @@ TestScene random_scene(int dim, unsigned seed, int n, int edges, int planes) {
   std::vector<Vector> centres;
   for (int c = 0; c < 5; ++c) centres.push_back(random.uniform_vector(dim, -2.0, 2.0));
   for (int p = 0; p < n; ++p) {
-    const double r = p % 50 == 7 ? random.uniform(1.0, 3.0) : std::pow(10.0, random.uniform(-2.7, -0.3));
+    const double r =
+        p % 50 == 7 ? random.uniform(1.0, 3.0) : std::pow(10.0, random.uniform(-2.7, -0.3));
     const Vector x = centres[p % 5] + random.uniform_vector(dim, -1.0, 1.0);
     scene.add_particle(random.uniform(0.5, 2.0), x, random.uniform_vector(dim, -3.0, 3.0),
                        p % 13 == 0, r);
@@ -124,8 +125,9 @@ TestScene random_scene(int dim, unsigned seed, int n, int edges, int planes) {
     int best = i == 0 ? 1 : 0;
     for (int j = 0; j < n; ++j) {
       if (j == i) continue;
-      const auto xi = scene.state.q.segment(dim * i, dim), xj = scene.state.q.segment(dim * j, dim);
-      const auto xb = scene.state.q.segment(dim * best, dim);
+      const auto xi = scene.initial.q.segment(dim * i, dim),
+                 xj = scene.initial.q.segment(dim * j, dim);
+      const auto xb = scene.initial.q.segment(dim * best, dim);
       if ((xj - xi).norm() < (xb - xi).norm()) best = j;
     }
     return best;
@@ -178,7 +180,7 @@ void check_static_queries(unsigned seed) {
   for (const double margin : {0.0, 0.05}) {
     TestScene scene = random_scene(D, seed, 400, 300, 4);
     const SceneModel& model = scene.model;
-    const Vector& q = scene.state.q;
+    const Vector& q = scene.initial.q;
     const PairQuery query{q, q, margin};
     const std::vector<CandidatePair> all = collect(AllPairs(model), query);
     std::vector<CandidatePair> needed;
@@ -233,8 +235,8 @@ template <int D>
 void check_swept_queries(unsigned seed) {
   TestScene scene = random_scene(D, seed, 300, 200, 3);
   const SceneModel& model = scene.model;
-  const Vector xs = scene.state.q;
-  const Vector xe = xs + 0.05 * scene.state.v;  // up to 0.15 per axis
+  const Vector xs = scene.initial.q;
+  const Vector xe = xs + 0.05 * scene.initial.v;  // up to 0.15 per axis
   const PairQuery query{xs, xe, 0.0};
   std::vector<CandidatePair> needed;
   for (const CandidatePair& pair : collect(AllPairs(model), query)) {
@@ -289,8 +291,8 @@ template <int D>
 void check_moving_queries(unsigned seed) {
   TestScene scene = random_scene(D, seed, 300, 200, 3);
   const SceneModel& model = scene.model;
-  const Vector xs = scene.state.q;
-  Vector xe_all = xs + 0.05 * scene.state.v;
+  const Vector xs = scene.initial.q;
+  Vector xe_all = xs + 0.05 * scene.initial.v;
   Vector xe_grid = xe_all;
   const std::vector<CandidatePair> acted_all = moving_pass<D>(AllPairs(model), model, xs, xe_all);
   const std::vector<CandidatePair> acted_grid =
@@ -364,10 +366,10 @@ void check_same_simulation(int dim, CollisionMethod method, unsigned seed) {
   model.collisions.detection = PairDetection::kAllPairs;
   ASSERT_FALSE(uses_grid_pairs(model));
   SCOPED_TRACE(what);
-  const auto [states_all, records_all] = simulate(model, scene.state, kSteps);
+  const auto [states_all, records_all] = simulate(model, scene.initial, kSteps);
   model.collisions.detection = PairDetection::kContest;
   ASSERT_TRUE(uses_grid_pairs(model));
-  const auto [states_grid, records_grid] = simulate(model, scene.state, kSteps);
+  const auto [states_grid, records_grid] = simulate(model, scene.initial, kSteps);
   int collisions = 0;
   std::size_t polynomials_all = 0, polynomials_grid = 0;
   for (int k = 0; k < kSteps; ++k) {
