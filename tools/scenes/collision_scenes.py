@@ -447,6 +447,38 @@ def timing_ribbons(_):
     return s
 
 
+def timing_ribbon_pile(ribbons, length, seed):
+    def build(_):
+        s = Scene("symplectic", dt=0.005, duration=0.1, viewport=(0, 0, 6.0),
+                  integrator_type="forward-backward-euler")
+        s.what = (f"a pile of {ribbons} ribbons of {length} particles (springs and edges) in the "
+                  "box, contest detection")
+        rng = random.Random(seed)
+        spacing = 0.06
+        for r in range(ribbons):
+            x0, y0 = rng.uniform(-4.9, 4.9 - spacing * (length - 1)), rng.uniform(-4.9, 4.9)
+            vx, vy = rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3)
+            prev = None
+            for k in range(length):
+                p = s.particle(0.1, x0 + spacing * k, y0, vx, vy, radius=0.02,
+                               color=PALETTE[r % len(PALETTE)])
+                if prev is not None:
+                    s.spring(prev, p, 100, b=0.1, radius=0.01)
+                prev = p
+        contest_box(s, 5.5)
+        s.gravity.append((0, -GRAVITY))
+        s.collide("penalty", k=100, thickness=0)
+        s.detection = "contest"
+        s.description = (f"The contest's class with ribbons: {ribbons} ribbons of {length} "
+                         "particles of radius 0.02, 0.06 apart, joined by springs and edges of "
+                         "radius 0.01, lie across each other in the box (random places and "
+                         "velocities) and fall under gravity; penalty forces with thickness 0 act "
+                         "between particles, particles and edges, and the box; forward-backward "
+                         "Euler, h = 0.005, 20 steps.")
+        return s
+    return build
+
+
 def timing_simple(_):
     s = Scene("symplectic", dt=0.005, duration=0.5, viewport=(0, 0, 6.0),
               integrator_type="forward-backward-euler")
@@ -466,7 +498,9 @@ def timing_simple(_):
 T2M3 = [
     ("timing", "balls_400_contest", timing_balls(400, "contest", 2)),
     ("timing", "balls_400_allpairs", timing_balls(400, "allpairs", 2)),
+    ("timing", "balls_15000_contest", timing_balls(15000, "contest", 1)),
     ("timing", "ribbons_contest", timing_ribbons),
+    ("timing", "ribbon_pile_15000_contest", timing_ribbon_pile(300, 50, 5)),
     ("timing", "simple_contest", timing_simple),
 ]
 
