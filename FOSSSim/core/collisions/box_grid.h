@@ -59,6 +59,18 @@ class BoxGrid {
   int level_of(int object) const { return level_of_[object]; }
   static constexpr int kUnbounded = 64;
 
+  /// Calls visit(k, box) for every object k filed, with its box: level by level, cell by cell,
+  /// the unbounded list last. Neighbours in space come close together in this order, which keeps
+  /// the queries of a sweep over all objects in cache.
+  template <typename Visit>
+  void for_each_filed(Visit&& visit) const {
+    for (const Level& level : levels_) {
+      for (std::size_t k = 0; k < level.items.size(); ++k)
+        visit(level.items[k], level.item_boxes[k]);
+    }
+    for (std::size_t k = 0; k < unbounded_.size(); ++k) visit(unbounded_[k], unbounded_boxes_[k]);
+  }
+
   /// Calls visit(k) once for every object k filed at a level ≥ min_level whose box overlaps
   /// `box` (closed boxes: touching counts), levels in increasing order; the unbounded list
   /// counts as level kUnbounded.

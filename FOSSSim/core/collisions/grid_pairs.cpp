@@ -103,6 +103,7 @@ void GridPairs<D>::build_grids() const {
 template <int D>
 void GridPairs<D>::find_half_planes(int p) const {
   const SceneModel& model = *model_;
+  if (model.half_planes.empty()) return;
   const Box<D>& motion = motion_boxes_[p];
   const Vec<D> centre = 0.5 * (motion.lo + motion.hi);
   const Vec<D> half = 0.5 * (motion.hi - motion.lo);
@@ -122,11 +123,10 @@ void GridPairs<D>::find_half_planes(int p) const {
 
 template <int D>
 void GridPairs<D>::find_all_pairs() const {
-  const int n = model_->num_particles();
   found_.clear();
-  for (int a = 0; a < n; ++a) {
+  // In the grid's order rather than by index: neighbours in space come one after the other.
+  particle_grid_.for_each_filed([&](int a, const Box<D>& box) {
     const int level = particle_grid_.level_of(a);
-    const Box<D>& box = particle_boxes_[a];
     // Particles at a's level pair with it from the lower index; coarser ones always from a.
     particle_grid_.query(box, level, [&](int b) {
       if (b == a || (b < a && particle_grid_.level_of(b) == level)) return;
@@ -136,13 +136,13 @@ void GridPairs<D>::find_all_pairs() const {
       if (!is_endpoint(a, e)) found_.push_back({CollisionKind::kParticleEdge, a, e});
     });
     find_half_planes(a);
-  }
+  });
   // Edges meet the particles of coarser levels (those of their own level and finer asked).
-  for (int e = 0; e < static_cast<int>(edge_boxes_.size()); ++e) {
-    particle_grid_.query(edge_boxes_[e], edge_grid_.level_of(e) + 1, [&](int a) {
+  edge_grid_.for_each_filed([&](int e, const Box<D>& box) {
+    particle_grid_.query(box, edge_grid_.level_of(e) + 1, [&](int a) {
       if (!is_endpoint(a, e)) found_.push_back({CollisionKind::kParticleEdge, a, e});
     });
-  }
+  });
 }
 
 template <int D>
