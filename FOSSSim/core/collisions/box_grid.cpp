@@ -12,6 +12,10 @@ void BoxGrid<D>::build(std::span<const Box<D>> boxes, double base_cell) {
   for (std::vector<int>& objects : by_level_) objects.clear();
   unbounded_.clear();
   unbounded_boxes_.clear();
+  std::array<double, kUnbounded> inv_cells;
+  for (int level = 0; level < kUnbounded; ++level) {
+    inv_cells[level] = 1.0 / std::ldexp(base_cell, level);
+  }
   for (int k = 0; k < n; ++k) {
     const Box<D>& box = boxes[k];
     const double extent = box.extent();
@@ -24,7 +28,7 @@ void BoxGrid<D>::build(std::span<const Box<D>> boxes, double base_cell) {
     // The first level at which the box spans at most two cells along every axis, checked on
     // the cell coordinates it gets.
     for (; level < kUnbounded; ++level) {
-      const double inv_cell = 1.0 / std::ldexp(base_cell, level);
+      const double inv_cell = inv_cells[level];
       bool fits = true;
       for (int a = 0; a < D; ++a) {
         fits = fits && coordinate(box.hi[a], inv_cell) - coordinate(box.lo[a], inv_cell) <= 1;

@@ -104,10 +104,12 @@ class BoxGrid {
   };
 
   static std::int64_t coordinate(double x, double inv_cell) {
-    const double c = std::floor(x * inv_cell);
+    const double c = x * inv_cell;
     if (!(c >= -kLimit)) return static_cast<std::int64_t>(-kLimit);  // NaN too
     if (c > kLimit) return static_cast<std::int64_t>(kLimit);
-    return static_cast<std::int64_t>(c);
+    // floor(c), without a call into the maths library: truncation, one down for negatives.
+    const auto truncated = static_cast<std::int64_t>(c);
+    return c < static_cast<double>(truncated) ? truncated - 1 : truncated;
   }
   static Cell cell_of(const Vec<D>& x, double inv_cell) {
     Cell c;
@@ -160,15 +162,29 @@ class BoxGrid {
       return;
     }
     Cell c = lo;
-    while (true) {
-      int cell = -1;
-      if (level.dense) {
+    if (level.dense) {
+      // Cells along the first axis are consecutive, and so are their objects: one run of
+      // objects per row of cells.
+      while (true) {
         std::int64_t linear = 0;
-        for (int a = D - 1; a >= 0; --a) linear = linear * level.dims[a] + (c[a] - level.min[a]);
-        cell = static_cast<int>(linear);
-      } else {
-        cell = find_hashed(level, c);
+        for (int a = D - 1; a > 0; --a) linear = linear * level.dims[a] + (c[a] - level.min[a]);
+        linear *= level.dims[0];
+        const std::int64_t first = linear + (lo[0] - level.min[0]);
+        const std::int64_t last = linear + (hi[0] - level.min[0]);
+        for (int k = level.start[first]; k < level.start[last + 1]; ++k) {
+          if (level.item_boxes[k].overlaps(box)) visit(level.items[k]);
+        }
+        int a = 1;
+        for (; a < D; ++a) {
+          if (++c[a] <= hi[a]) break;
+          c[a] = lo[a];
+        }
+        if (a == D) break;
       }
+      return;
+    }
+    while (true) {
+      const int cell = find_hashed(level, c);
       if (cell >= 0) visit_cell(level, cell, box, visit);
       int a = 0;
       for (; a < D; ++a) {

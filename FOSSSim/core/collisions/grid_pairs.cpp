@@ -18,10 +18,13 @@ Box<D> segment_box(const Vec<D>& s, const Vec<D>& e) {
   return {s.cwiseMin(e), s.cwiseMax(e)};
 }
 
+/// std::fmax (the larger, ignoring a NaN) without a call into the maths library.
+double larger(double a, double b) { return (b > a || a != a) ? b : a; }
+
 /// A larger absolute value, ignoring NaN.
 template <int D>
 double largest_magnitude(const Box<D>& box, double so_far) {
-  return std::fmax(so_far, std::fmax(box.lo.cwiseAbs().maxCoeff(), box.hi.cwiseAbs().maxCoeff()));
+  return larger(so_far, larger(box.lo.cwiseAbs().maxCoeff(), box.hi.cwiseAbs().maxCoeff()));
 }
 
 /// For heaps that pop the earliest pair in the course's order first.
@@ -62,15 +65,15 @@ void GridPairs<D>::compute_boxes(const PairQuery& query, bool slack) const {
     motion_boxes_[p] = segment_box<D>(s, e);
     if (slack) motion_boxes_[p] = grown(motion_boxes_[p], (e - s).norm());
     scale = largest_magnitude(motion_boxes_[p], scale);
-    scale = std::fmax(scale, model.particle_radius[p]);
+    scale = larger(scale, model.particle_radius[p]);
   }
-  for (int e = 0; e < num_edges; ++e) scale = std::fmax(scale, model.edge_radius[e]);
-  margin_ = std::fmax(query.margin, 0.0);
+  for (int e = 0; e < num_edges; ++e) scale = larger(scale, model.edge_radius[e]);
+  margin_ = larger(query.margin, 0.0);
   rounding_ = 1e-10 * (1.0 + scale + margin_);
   pad_ = 0.5 * margin_ + rounding_;
   particle_boxes_.resize(n);
   for (int p = 0; p < n; ++p) {
-    particle_boxes_[p] = grown(motion_boxes_[p], std::fmax(model.particle_radius[p], 0.0) + pad_);
+    particle_boxes_[p] = grown(motion_boxes_[p], larger(model.particle_radius[p], 0.0) + pad_);
   }
   edge_boxes_.resize(num_edges);
   for (int e = 0; e < num_edges; ++e) edge_boxes_[e] = edge_box(e);
@@ -80,7 +83,7 @@ template <int D>
 Box<D> GridPairs<D>::edge_box(int e) const {
   const Edge& edge = model_->edges[e];
   return grown(motion_boxes_[edge.i].united(motion_boxes_[edge.j]),
-               std::fmax(model_->edge_radius[e], 0.0) + pad_);
+               larger(model_->edge_radius[e], 0.0) + pad_);
 }
 
 template <int D>
@@ -108,7 +111,7 @@ void GridPairs<D>::find_half_planes(int p) const {
   const Vec<D> centre = 0.5 * (motion.lo + motion.hi);
   const Vec<D> half = 0.5 * (motion.hi - motion.lo);
   // The narrow phase acts when |(x - P)·N| / ‖N‖ < r + margin for a centre x in the box.
-  const double reach = std::fmax(model.particle_radius[p], 0.0) + margin_ + rounding_;
+  const double reach = larger(model.particle_radius[p], 0.0) + margin_ + rounding_;
   for (int h = 0; h < static_cast<int>(model.half_planes.size()); ++h) {
     const HalfPlane& plane = model.half_planes[h];
     const Vec<D> N = plane.normal.head<D>();
@@ -234,7 +237,7 @@ void GridPairs<D>::follow_move(const PairQuery& query, int p, const CandidatePai
     }
   };
   motion_boxes_[p] = motion_boxes_[p].united(grown(motion, (e - s).norm()));
-  particle_boxes_[p] = grown(motion_boxes_[p], std::fmax(model_->particle_radius[p], 0.0) + pad_);
+  particle_boxes_[p] = grown(motion_boxes_[p], larger(model_->particle_radius[p], 0.0) + pad_);
   if (!escaped_particle_[p]) {
     escaped_particle_[p] = 1;
     escaped_particles_.push_back(p);
