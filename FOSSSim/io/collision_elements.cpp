@@ -232,10 +232,25 @@ std::string separate_run_together_attributes(std::string_view text, const std::s
   int line = 1;
   bool in_tag = false;
   char quote_char = 0;  // the quote of the attribute value we are in, or 0
+  // Jumps to the next character that can change the state, counting the lines passed over.
+  const auto skip_to = [&](std::size_t from, std::string_view stops) {
+    const std::size_t to = std::min(text.find_first_of(stops, from), text.size());
+    line += static_cast<int>(std::count(text.begin() + from, text.begin() + to, '\n'));
+    return to;
+  };
   std::size_t k = 0;
   while (k < text.size()) {
+    if (quote_char == '"') {
+      k = skip_to(k, "\"");
+    } else if (quote_char == '\'') {
+      k = skip_to(k, "'");
+    } else if (in_tag) {
+      k = skip_to(k, "\"'>");
+    } else {
+      k = skip_to(k, "<");
+    }
+    if (k >= text.size()) break;
     const char c = text[k];
-    if (c == '\n') ++line;
     if (quote_char != 0) {
       if (c == quote_char) {
         quote_char = 0;

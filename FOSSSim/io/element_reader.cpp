@@ -28,7 +28,9 @@ ElementReader::ElementReader(const tinyxml2::XMLElement& element, const std::str
       file_(file),
       index_(index),
       num_particles_(num_particles),
-      num_edges_(num_edges) {}
+      num_edges_(num_edges) {
+  asked_.reserve(16);  // one allocation for the names an element is asked for
+}
 
 int ElementReader::line() const { return element_.GetLineNum(); }
 
