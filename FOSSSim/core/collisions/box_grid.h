@@ -18,10 +18,10 @@ struct Box {
   Vec<D> lo, hi;
 
   bool overlaps(const Box& other) const {
-    for (int a = 0; a < D; ++a) {
-      if (!(lo[a] <= other.hi[a] && other.lo[a] <= hi[a])) return false;
-    }
-    return true;
+    // Every comparison, without early exits: the outcome is hard to predict, branches cost more.
+    bool all = true;
+    for (int a = 0; a < D; ++a) all &= (lo[a] <= other.hi[a]) & (other.lo[a] <= hi[a]);
+    return all;
   }
   bool contains(const Box& other) const {
     for (int a = 0; a < D; ++a) {
@@ -144,6 +144,14 @@ class BoxGrid {
 
   template <typename Visit>
   static void query_level(const Level& level, const Box<D>& box, Visit& visit) {
+    // A level of a few boxes (the big objects of a scene) is scanned without finding cells.
+    constexpr std::size_t kFew = D == 2 ? 9 : 27;  // no more than the cells a query visits
+    if (level.items.size() <= kFew) {
+      for (std::size_t k = 0; k < level.items.size(); ++k) {
+        if (level.item_boxes[k].overlaps(box)) visit(level.items[k]);
+      }
+      return;
+    }
     Cell lo = cell_of(box.lo, level.inv_cell), hi = cell_of(box.hi, level.inv_cell);
     double cells = 1.0;
     for (int a = 0; a < D; ++a) {
