@@ -51,8 +51,9 @@ void ElementReader::fail(const char* name, const std::string& problem) {
 bool ElementReader::has(const char* name) const { return element_.Attribute(name) != nullptr; }
 
 bool ElementReader::was_asked(const char* name) const {
+  const std::string_view wanted(name);  // compared by length first
   for (const std::string& asked : asked_) {
-    if (asked == name) return true;
+    if (asked == wanted) return true;
   }
   return false;
 }

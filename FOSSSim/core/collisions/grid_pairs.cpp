@@ -37,6 +37,13 @@ bool comes_later(const CandidatePair& a, const CandidatePair& b) {
 template <int D>
 GridPairs<D>::GridPairs(const SceneModel& model) : model_(&model) {
   const int n = model.num_particles();
+  // The skin: half the median radius. Larger skins are reused longer but give more candidates.
+  std::vector<double> radii(model.particle_radius.begin(), model.particle_radius.end());
+  if (!radii.empty()) {
+    const auto middle = radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2);
+    std::nth_element(radii.begin(), middle, radii.end());
+    if (std::isfinite(*middle) && *middle > 0.0) skin_ = 1.0 * *middle;
+  }
   incident_start_.assign(n + 1, 0);
   for (const Edge& edge : model.edges) {
     ++incident_start_[edge.i + 1];
@@ -53,7 +60,7 @@ GridPairs<D>::GridPairs(const SceneModel& model) : model_(&model) {
 }
 
 template <int D>
-void GridPairs<D>::compute_boxes(const PairQuery& query, bool slack) const {
+void GridPairs<D>::compute_boxes(const PairQuery& query, bool slack, double skin) const {
   const SceneModel& model = *model_;
   const int n = model.num_particles();
   const int num_edges = static_cast<int>(model.edges.size());
@@ -64,6 +71,7 @@ void GridPairs<D>::compute_boxes(const PairQuery& query, bool slack) const {
     const Vec<D> e = particle_vec<D>(query.end, p);
     motion_boxes_[p] = segment_box<D>(s, e);
     if (slack) motion_boxes_[p] = grown(motion_boxes_[p], (e - s).norm());
+    if (skin > 0.0) motion_boxes_[p] = grown(motion_boxes_[p], skin);
     scale = largest_magnitude(motion_boxes_[p], scale);
     scale = larger(scale, model.particle_radius[p]);
   }
@@ -88,6 +96,7 @@ Box<D> GridPairs<D>::edge_box(int e) const {
 
 template <int D>
 void GridPairs<D>::build_grids() const {
+  ++searches_;
   // Level 0's cells are the size of the median box, so most boxes are filed there and a cell
   // holds a few of them.
   extents_.clear();
@@ -169,16 +178,39 @@ void GridPairs<D>::sort_found() const {
 }
 
 template <int D>
+bool GridPairs<D>::can_reuse(const PairQuery& query) const {
+  if (!reusable_ || query.margin != reused_margin_ || query.start.size() != reference_.size()) {
+    return false;
+  }
+  // Every particle still within the skin of where the pairs were found (false for a NaN).
+  for (Eigen::Index k = 0; k < reference_.size(); ++k) {
+    if (!(std::abs(query.start[k] - reference_[k]) <= skin_)) return false;
+  }
+  return true;
+}
+
+template <int D>
 void GridPairs<D>::for_each(const PairQuery& query, const Visitor& visit) const {
-  compute_boxes(query, false);
-  build_grids();
-  find_all_pairs();
-  sort_found();
+  // Particles that stay put (the penalty force, simple impulses): the pairs found with boxes
+  // grown by a skin serve every later query whose particles are still within the skin.
+  const bool fixed_positions = &query.start == &query.end;
+  if (!(fixed_positions && can_reuse(query))) {
+    compute_boxes(query, false, fixed_positions ? skin_ : 0.0);
+    build_grids();
+    find_all_pairs();
+    sort_found();
+    reusable_ = fixed_positions;
+    if (reusable_) {
+      reference_ = query.start;
+      reused_margin_ = query.margin;
+    }
+  }
   for (const CandidatePair& pair : found_) visit(pair);
 }
 
 template <int D>
 void GridPairs<D>::for_each_moving(const PairQuery& query, const MovingVisitor& visit) const {
+  reusable_ = false;  // found_ and the grids change below
   compute_boxes(query, true);
   build_grids();
   find_all_pairs();

@@ -25,6 +25,12 @@ namespace fosssim {
 /// bit-identical: a pair all pairs would visit and this one not is a pair whose objects are
 /// too far apart for the narrow phase to act on.
 ///
+/// Static queries (start and end the same vector: the penalty force, simple impulses) grow every
+/// particle's box by a skin of half the median radius along every axis, and keep the pairs: a
+/// later static query whose particles are all within the skin of where they were gets the same
+/// pairs without a search, since the boxes of its positions lie inside the grown ones (Verlet
+/// lists). Particles that move half a radius in a few steps are searched for every few steps.
+///
 /// Moving queries (for_each_moving) keep every particle's box grown by its displacement over
 /// the step, so that a response that reverses or slows a particle keeps it inside its box; a
 /// particle (and its edges) that a response moves out of its box gets a grown box and is
@@ -38,11 +44,17 @@ class GridPairs final : public CandidatePairs {
   void for_each(const PairQuery& query, const Visitor& visit) const override;
   void for_each_moving(const PairQuery& query, const MovingVisitor& visit) const override;
   bool visits_in_course_order() const override { return true; }
+  /// How many times the grids were built and searched (static queries served from the skin's
+  /// pairs do not count).
+  int searches() const { return searches_; }
 
  private:
   /// Boxes of every particle and edge for `query`; with `slack` each particle's segment is
-  /// grown by its own length first.
-  void compute_boxes(const PairQuery& query, bool slack) const;
+  /// grown by its own length first, and then by `skin` along every axis.
+  void compute_boxes(const PairQuery& query, bool slack, double skin = 0.0) const;
+  /// True when the pairs of the last static query serve `query` (a static one): the same
+  /// margin, and every particle within the skin of where it was.
+  bool can_reuse(const PairQuery& query) const;
   Box<D> particle_box(const PairQuery& query, int p, bool slack) const;
   Box<D> edge_box(int e) const;  // from motion_boxes_
   void build_grids() const;
@@ -63,6 +75,14 @@ class GridPairs final : public CandidatePairs {
 
   const SceneModel* model_;
   std::vector<int> incident_start_, incident_edges_;  // edges of each particle, CSR
+  double skin_ = 0.0;  // how far a particle may move before static pairs are found afresh
+
+  // Static queries: found_ holds the pairs for every particle within skin_ (per axis) of
+  // reference_, for the margin reused_margin_, while reusable_.
+  mutable bool reusable_ = false;
+  mutable int searches_ = 0;
+  mutable Vector reference_;
+  mutable double reused_margin_ = 0.0;
 
   // Scratch, reused from query to query (a GridPairs answers one query at a time).
   mutable double margin_ = 0.0;               // the query's margin, at least 0

@@ -204,6 +204,39 @@ TEST(GridPairs, StaticQueriesMissNoOverlapIn3D) {
   for (unsigned seed = 1; seed <= 5; ++seed) check_static_queries<3>(seed);
 }
 
+/// One GridPairs asked again and again as the particles move a little (within the skin, whose
+/// pairs it reuses) and sometimes far (a new search): never a pair missed.
+template <int D>
+void check_repeated_static_queries(unsigned seed) {
+  TestScene scene = random_scene(D, seed, 300, 200, 3);
+  const SceneModel& model = scene.model;
+  const GridPairs<D> grid(model);
+  Vector q = scene.initial.q;
+  constexpr int kRounds = 16;
+  for (int round = 0; round < kRounds; ++round) {
+    q += (round % 8 == 7 ? 0.05 : 0.003) * scene.initial.v;  // up to 0.009 or 0.15 per axis
+    const PairQuery query{q, q, 0.01};
+    std::vector<CandidatePair> needed;
+    for (const CandidatePair& pair : collect(AllPairs(model), query)) {
+      const Separation<D> s = separation<D>(model, pair, q);
+      if (s.n.norm() < s.radii + query.margin) needed.push_back(pair);
+    }
+    expect_valid_candidates(model, collect(grid, query), needed,
+                            "seed " + std::to_string(seed) + ", round " + std::to_string(round));
+  }
+  // The small moves reused the pairs, the large ones searched again.
+  EXPECT_LT(grid.searches(), kRounds / 2) << "seed " << seed;
+  EXPECT_GE(grid.searches(), 2) << "seed " << seed;
+}
+
+TEST(GridPairs, RepeatedStaticQueriesReuseTheirPairsAndMissNoOverlapIn2D) {
+  for (unsigned seed = 1; seed <= 4; ++seed) check_repeated_static_queries<2>(seed);
+}
+
+TEST(GridPairs, RepeatedStaticQueriesReuseTheirPairsAndMissNoOverlapIn3D) {
+  for (unsigned seed = 1; seed <= 4; ++seed) check_repeated_static_queries<3>(seed);
+}
+
 /// How far the objects of `pair` move from xs to xe at most, added up: a bound on how much
 /// their separation can shrink.
 double largest_approach(const SceneModel& model, const CandidatePair& pair, const Vector& xs,
