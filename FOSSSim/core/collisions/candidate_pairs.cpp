@@ -1,18 +1,12 @@
 #include "core/collisions/candidate_pairs.h"
 
 #include <algorithm>
-#include <tuple>
 #include <vector>
 
 #include "core/collisions/grid_pairs.h"
 #include "core/scene_model.h"
 
 namespace fosssim {
-
-bool precedes_in_course_order(const CandidatePair& a, const CandidatePair& b) {
-  return std::tuple(a.particle, static_cast<int>(a.kind), a.other) <
-         std::tuple(b.particle, static_cast<int>(b.kind), b.other);
-}
 
 void AllPairs::for_each(const PairQuery&, const Visitor& visit) const {
   const SceneModel& model = *model_;

@@ -25,7 +25,11 @@ struct CandidatePair {
 /// (i, j > i) by j, then particle-edge pairs by edge, then particle-half-plane pairs by
 /// half-plane. Methods whose result depends on the order (Gauss-Seidel impulses) visit pairs
 /// in this order; for sums (the penalty force) only round-off depends on it.
-bool precedes_in_course_order(const CandidatePair& a, const CandidatePair& b);
+inline bool precedes_in_course_order(const CandidatePair& a, const CandidatePair& b) {
+  if (a.particle != b.particle) return a.particle < b.particle;
+  if (a.kind != b.kind) return static_cast<int>(a.kind) < static_cast<int>(b.kind);
+  return a.other < b.other;
+}
 
 /// Where the objects may be during a step, for a conservative broad phase: every particle
 /// moves along the segment from `start` to `end` (the same vector for a static query), and
