@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_clock.h"
 #include "core/collisions/candidate_pairs.h"
 #include "core/scene.h"
 #include "core/step/step_pipeline.h"
@@ -24,18 +25,9 @@
 namespace {
 
 using namespace fosssim;
-using Clock = std::chrono::steady_clock;
-
-double milliseconds_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-std::string load_average() {
-  std::ifstream in("/proc/loadavg");
-  std::string one, five, fifteen;
-  in >> one >> five >> fifteen;
-  return one + " " + five + " " + fifteen;
-}
+using bench::Clock;
+using bench::load_average;
+using bench::milliseconds_since;
 
 void add_particle(Scene& scene, double x, double y, double vx, double vy, bool fixed,
                   double radius) {
