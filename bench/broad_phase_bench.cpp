@@ -4,12 +4,14 @@
 // states, which is 0 when the trajectories are the same bit for bit); and the balls scene from
 // 10^3 to 10^6 balls at the contest's density (time per step and per particle and step, which
 // stay about constant when the cost grows linearly), with all pairs beside it where it takes
-// seconds. Every baseline runs in this process. Usage: bench_broad_phase [--quick]
-//   (--quick stops the scaling at 10^5 balls)
+// seconds. Every baseline runs in this process.
+// Usage: bench_broad_phase [--quick | --balls N]
+//   --quick stops the scaling at 10^5 balls; --balls N times only the grid on N balls (to profile)
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <random>
@@ -131,8 +133,8 @@ void contest_scenes() {
 
 void scaling(bool quick) {
   std::printf(
-      "\nScaling: the balls scene at the contest's density (20 steps, 5 from 3e5 balls; all "
-      "pairs 2 steps, up to 3e4 balls)\n\n");
+      "\nScaling: the balls scene at the contest's density (20 steps; all pairs 2 steps, up to "
+      "3e4 balls)\n\n");
   std::printf(
       "| balls | candidates per ball | grid ms/step | grid ns per ball and step | all "
       "pairs ms/step | ratio | largest difference after 2 steps |\n");
@@ -140,8 +142,7 @@ void scaling(bool quick) {
   for (const int count : {1000, 3000, 10000, 30000, 100000, 300000, 1000000}) {
     if (quick && count > 100000) break;
     Scene scene = contest_balls(count, 7);
-    const int steps = count >= 300000 ? 5 : 20;
-    const Run grid = run(scene, PairDetection::kContest, steps);
+    const Run grid = run(scene, PairDetection::kContest, 20);
     const double per_ball = grid.ms_per_step * 1e6 / count;
     std::printf("| %d | %.2f | %.2f | %.0f |", count, candidates_per_particle(scene),
                 grid.ms_per_step, per_ball);
@@ -161,6 +162,11 @@ void scaling(bool quick) {
 
 int main(int argc, char** argv) {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  if (argc > 2 && std::strcmp(argv[1], "--balls") == 0) {  // one size, grid only, to profile
+    Scene scene = contest_balls(std::atoi(argv[2]), 7);
+    std::printf("%.2f ms/step\n", run(scene, PairDetection::kContest, 20).ms_per_step);
+    return 0;
+  }
   std::printf("Broad phase benchmark (load average %s)\n\n", load_average().c_str());
   contest_scenes();
   scaling(quick);
