@@ -65,8 +65,9 @@ class BoxGrid {
   template <typename Visit>
   void for_each_filed(Visit&& visit) const {
     for (const Level& level : levels_) {
-      for (std::size_t k = 0; k < level.items.size(); ++k)
+      for (std::size_t k = 0; k < level.items.size(); ++k) {
         visit(level.items[k], level.item_boxes[k]);
+      }
     }
     for (std::size_t k = 0; k < unbounded_.size(); ++k) visit(unbounded_[k], unbounded_boxes_[k]);
   }

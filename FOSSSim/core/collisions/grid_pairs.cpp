@@ -37,12 +37,12 @@ bool comes_later(const CandidatePair& a, const CandidatePair& b) {
 template <int D>
 GridPairs<D>::GridPairs(const SceneModel& model) : model_(&model) {
   const int n = model.num_particles();
-  // The skin: half the median radius. Larger skins are reused longer but give more candidates.
+  // The skin: one median radius. Larger skins are reused longer but give more candidates.
   std::vector<double> radii(model.particle_radius.begin(), model.particle_radius.end());
   if (!radii.empty()) {
     const auto middle = radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2);
     std::nth_element(radii.begin(), middle, radii.end());
-    if (std::isfinite(*middle) && *middle > 0.0) skin_ = 1.0 * *middle;
+    if (std::isfinite(*middle) && *middle > 0.0) skin_ = *middle;
   }
   incident_start_.assign(n + 1, 0);
   for (const Edge& edge : model.edges) {

@@ -26,10 +26,10 @@ namespace fosssim {
 /// too far apart for the narrow phase to act on.
 ///
 /// Static queries (start and end the same vector: the penalty force, simple impulses) grow every
-/// particle's box by a skin of half the median radius along every axis, and keep the pairs: a
-/// later static query whose particles are all within the skin of where they were gets the same
-/// pairs without a search, since the boxes of its positions lie inside the grown ones (Verlet
-/// lists). Particles that move half a radius in a few steps are searched for every few steps.
+/// particle's box by a skin of one median radius along every axis, and keep the pairs: a later
+/// static query whose particles are all within the skin of where they were gets the same pairs
+/// without a search, since the boxes of its positions lie inside the grown ones (Verlet lists).
+/// Particles that move a radius in a few steps are searched for every few steps.
 ///
 /// Moving queries (for_each_moving) keep every particle's box grown by its displacement over
 /// the step, so that a response that reverses or slows a particle keeps it inside its box; a
