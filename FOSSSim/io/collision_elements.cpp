@@ -232,26 +232,11 @@ std::string separate_run_together_attributes(std::string_view text, const std::s
   int line = 1;
   bool in_tag = false;
   char quote_char = 0;  // the quote of the attribute value we are in, or 0
-  // Jumps to the next character that can change the state, counting the lines passed over.
-  const auto skip_to = [&](std::size_t from, std::string_view stops) {
-    const std::size_t to = std::min(text.find_first_of(stops, from), text.size());
-    line += static_cast<int>(std::count(text.begin() + from, text.begin() + to, '\n'));
-    return to;
-  };
-  std::size_t k = 0;
-  while (k < text.size()) {
-    if (quote_char == '"') {
-      k = skip_to(k, "\"");
-    } else if (quote_char == '\'') {
-      k = skip_to(k, "'");
-    } else if (in_tag) {
-      k = skip_to(k, "\"'>");
-    } else {
-      k = skip_to(k, "<");
-    }
-    if (k >= text.size()) break;
+  for (std::size_t k = 0; k < text.size(); ++k) {
     const char c = text[k];
-    if (quote_char != 0) {
+    if (c == '\n') {
+      ++line;
+    } else if (quote_char != 0) {
       if (c == quote_char) {
         quote_char = 0;
         if (k + 1 < text.size() && is_name_start(text[k + 1])) {
@@ -268,13 +253,12 @@ std::string separate_run_together_attributes(std::string_view text, const std::s
       if (text.substr(k, 4) == "<!--") {  // a comment: skip it whole
         const std::size_t end = text.find("-->", k + 4);
         const std::size_t stop = end == std::string_view::npos ? text.size() : end + 3;
-        for (std::size_t j = k; j < stop; ++j) line += text[j] == '\n';
-        k = stop;
+        line += static_cast<int>(std::count(text.begin() + k, text.begin() + stop, '\n'));
+        k = stop - 1;
         continue;
       }
       in_tag = true;
     }
-    ++k;
   }
   std::string out;
   out.reserve(text.size() + missing.size());
