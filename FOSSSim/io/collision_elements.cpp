@@ -262,29 +262,20 @@ void read_collision_elements(const XMLElement& root, Scene& scene, const std::st
 
 std::string separate_run_together_attributes(std::string_view text, const std::string& file,
                                              std::vector<std::string>& warnings) {
-  std::string out;
-  out.reserve(text.size());
+  // One pass finds where a blank is missing; the text is copied once, with the blanks added.
+  std::vector<std::size_t> missing;  // offsets after which a blank goes
   int line = 1;
   bool in_tag = false;
   char quote_char = 0;  // the quote of the attribute value we are in, or 0
-  std::size_t k = 0;
-  while (k < text.size()) {
+  for (std::size_t k = 0; k < text.size(); ++k) {
     const char c = text[k];
-    if (!in_tag && quote_char == 0 && text.substr(k, 4) == "<!--") {
-      const std::size_t end = text.find("-->", k + 4);
-      const std::size_t stop = end == std::string_view::npos ? text.size() : end + 3;
-      for (std::size_t j = k; j < stop; ++j) line += text[j] == '\n';
-      out.append(text.substr(k, stop - k));
-      k = stop;
-      continue;
-    }
-    out.push_back(c);
-    if (c == '\n') ++line;
-    if (quote_char != 0) {
+    if (c == '\n') {
+      ++line;
+    } else if (quote_char != 0) {
       if (c == quote_char) {
         quote_char = 0;
         if (k + 1 < text.size() && is_name_start(text[k + 1])) {
-          out.push_back(' ');
+          missing.push_back(k + 1);
           warnings.push_back(file + ":" + std::to_string(line) +
                              ": warning: two attributes without a blank between them (such as "
                              "vx=\"0\"vy=\"0\"), read as if separated, as the course reads them");
@@ -294,10 +285,25 @@ std::string separate_run_together_attributes(std::string_view text, const std::s
       if (c == '"' || c == '\'') quote_char = c;
       if (c == '>') in_tag = false;
     } else if (c == '<') {
+      if (text.substr(k, 4) == "<!--") {  // a comment: skip it whole
+        const std::size_t end = text.find("-->", k + 4);
+        const std::size_t stop = end == std::string_view::npos ? text.size() : end + 3;
+        line += static_cast<int>(std::count(text.begin() + k, text.begin() + stop, '\n'));
+        k = stop - 1;
+        continue;
+      }
       in_tag = true;
     }
-    ++k;
   }
+  std::string out;
+  out.reserve(text.size() + missing.size());
+  std::size_t from = 0;
+  for (const std::size_t at : missing) {
+    out.append(text.substr(from, at - from));
+    out.push_back(' ');
+    from = at;
+  }
+  out.append(text.substr(from));
   return out;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The broad phase: which pairs of objects might touch, handed to the narrow phase.
 
+#include <array>
 #include <functional>
 #include <memory>
 
@@ -26,7 +27,11 @@ struct CandidatePair {
 /// half-plane, then particle-sphere pairs by sphere. Methods whose result depends on the order
 /// (Gauss-Seidel impulses) visit pairs in this order; for sums (the penalty force) only round-off
 /// depends on it.
-bool precedes_in_course_order(const CandidatePair& a, const CandidatePair& b);
+inline bool precedes_in_course_order(const CandidatePair& a, const CandidatePair& b) {
+  if (a.particle != b.particle) return a.particle < b.particle;
+  if (a.kind != b.kind) return static_cast<int>(a.kind) < static_cast<int>(b.kind);
+  return a.other < b.other;
+}
 
 /// Where the objects may be during a step, for a conservative broad phase: every particle
 /// moves along the segment from `start` to `end` (the same vector for a static query), and
@@ -35,6 +40,12 @@ struct PairQuery {
   const Vector& start;
   const Vector& end;
   double margin = 0.0;
+};
+
+/// The particles whose end positions a visit changed: those a collision response moved.
+struct MovedParticles {
+  std::array<int, 3> particle{};
+  int count = 0;
 };
 
 /// Finds candidate pairs (the broad phase). Contract: every pair whose objects may come within
@@ -47,10 +58,16 @@ struct PairQuery {
 class CandidatePairs {
  public:
   using Visitor = std::function<void(const CandidatePair&)>;
+  using MovingVisitor = std::function<MovedParticles(const CandidatePair&)>;
   virtual ~CandidatePairs() = default;
 
   /// Calls `visit` on every candidate pair for `query`.
   virtual void for_each(const PairQuery& query, const Visitor& visit) const = 0;
+  /// Calls `visit` on the candidate pairs in the course's order while the visits move
+  /// particles: each visit may change end positions (the vector query.end refers to) and
+  /// returns the particles it moved, and every later pair is a candidate for the positions
+  /// as they are when it comes (continuous-time handling's Gauss-Seidel pass).
+  virtual void for_each_moving(const PairQuery& query, const MovingVisitor& visit) const = 0;
   /// True when for_each visits pairs in the course's order (precedes_in_course_order).
   virtual bool visits_in_course_order() const = 0;
 };
@@ -62,13 +79,20 @@ class AllPairs final : public CandidatePairs {
   /// `model` must outlive this.
   explicit AllPairs(const SceneModel& model) : model_(&model) {}
   void for_each(const PairQuery& query, const Visitor& visit) const override;
+  /// Positions do not matter to all pairs: the same pairs as for_each.
+  void for_each_moving(const PairQuery& query, const MovingVisitor& visit) const override;
   bool visits_in_course_order() const override { return true; }
 
  private:
   const SceneModel* model_;
 };
 
-/// The candidate-pair finder a model asks for (model.collisions.detection).
+/// True when the model's pairs come from FOSSSim's grid (GridPairs) rather than all pairs:
+/// by model.collisions.detection, and by default where the results are those of all pairs bit
+/// for bit (collision_settings.h, PairDetection).
+bool uses_grid_pairs(const SceneModel& model);
+
+/// The candidate-pair finder a model asks for (uses_grid_pairs).
 std::unique_ptr<CandidatePairs> make_candidate_pairs(const SceneModel& model);
 
 /// Visits the candidates of `pairs` in the course's order, sorting them first when the finder

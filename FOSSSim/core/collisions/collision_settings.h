@@ -31,10 +31,15 @@ enum class CollisionMethod {
   kHybrid,          ///< penalty force, Jacobi passes of swept impulses, then rigid impact zones
 };
 
-/// How candidate pairs are found (<collisiondetection type>).
+/// How candidate pairs are found (<collisiondetection type>; docs/collisions.md, "Broad
+/// phase").
 enum class PairDetection {
-  kAllPairs,  ///< every pair, in the course's order (the default)
-  kContest,   ///< the course's contest detector; FOSSSim uses its own broad phase (all pairs now)
+  /// No <collisiondetection>: FOSSSim's grid wherever it gives the results of all pairs
+  /// bit for bit (penalty and simple in 2D, everything in 3D), all pairs for 2D
+  /// continuous-time and hybrid handling, whose polynomial logs list every pair.
+  kDefault,
+  kAllPairs,  ///< type="allpairs": every pair, in the course's order
+  kContest,   ///< type="contest": FOSSSim's grid (core/collisions/grid_pairs.h) for every method
 };
 
 /// How the penalty force enters the matrices of implicit integrators.
@@ -55,7 +60,7 @@ struct CollisionSettings {
   double thickness = 0.01;   ///< penalty thickness T (hybrid's default is 0.1)
   /// Hybrid: the most impulse passes before the geometric stage; ≤ 0 skips them.
   int max_iterations = 10;
-  PairDetection detection = PairDetection::kAllPairs;
+  PairDetection detection = PairDetection::kDefault;
   PenaltyJacobian penalty_jacobian = PenaltyJacobian::kNone;
 
   /// True for the methods that add a penalty force to the model.
