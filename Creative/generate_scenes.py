@@ -304,6 +304,9 @@ def cloth_on_sphere():
     s.add('<spherecolor i="0" r="0.9" g="0.55" b="0.15"/>')
     s.add('<halfplane px="0" py="-0.4" pz="0" nx="0" ny="1" nz="0"/>')
     s.add('<halfplanecolor i="0" r="0.72" g="0.7" b="0.66"/>')
+    # The thickness must stay below the vertex spacing (0.02) minus two vertex radii (2 x 0.003):
+    # a larger one makes neighbouring vertices of the cloth a contact, a penalty force that
+    # local/global takes explicitly, and the cloth blows up at once (0.015 does).
     s.add('<collision type="penalty" k="1000" thickness="0.005"/>')
     s.add('<simplegravity fx="0" fy="-9.8" fz="0"/>')
     s.save("cloth_on_sphere.xml", [
