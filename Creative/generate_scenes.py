@@ -60,6 +60,15 @@ class SceneWriter:
     def path(self, i, duration, color):
         self.add(f'<particlepath i="{i}" duration="{fmt(duration)}" r="{fmt(color[0])}" g="{fmt(color[1])}" b="{fmt(color[2])}"/>')
 
+    def checks(self, n, squares, dark, light):
+        """Colours the vertices of a generated n x n cloth (vertex (r, c) is r n + c) in a
+        checkerboard of about `squares` x `squares` checks."""
+        for r in range(n):
+            for c in range(n):
+                color = dark if (r * squares // n + c * squares // n) % 2 else light
+                self.add(f'<particlecolor i="{r * n + c}" r="{fmt(color[0])}" g="{fmt(color[1])}" '
+                         f'b="{fmt(color[2])}"/>')
+
     def save(self, name, header):
         root = '<scene dim="3">' if self.dim == 3 else "<scene>"
         text = "\n".join(["<!-- Written by Creative/generate_scenes.py; see Creative/README.md -->", root]
@@ -220,13 +229,7 @@ def tablecloth():
     n, squares = 49, 8
     s.add(f'<generate type="cloth" nx="{n}" ny="{n}" plane="xz" pin="corners" k="800" b="0.002" '
           'mass="total" total="0.6"/>')
-    red, cream = (0.8, 0.13, 0.12), (0.97, 0.94, 0.86)
-    for r in range(n):
-        for c in range(n):
-            check = (r * squares // n + c * squares // n) % 2
-            color = red if check else cream
-            s.add(f'<particlecolor i="{r * n + c}" r="{fmt(color[0])}" g="{fmt(color[1])}" '
-                  f'b="{fmt(color[2])}"/>')
+    s.checks(n, squares, (0.8, 0.13, 0.12), (0.97, 0.94, 0.86))
     s.add('<simplegravity fx="0" fy="-9.8" fz="0"/>')
     s.add('<constantforce fx="0.0002" fy="0" fz="0.0005"/>')
     s.save("tablecloth.xml", [
@@ -293,13 +296,7 @@ def cloth_on_sphere():
     n, squares = 81, 9
     s.add(f'<generate type="cloth" nx="{n}" ny="{n}" width="1.6" height="1.6" plane="xz" '
           'pin="none" k="200" b="0.01" mass="total" total="0.4" tx="0" ty="0.5" tz="-0.8"/>')
-    blue, cream = (0.12, 0.3, 0.62), (0.95, 0.93, 0.86)
-    for r in range(n):
-        for c in range(n):
-            check = (r * squares // n + c * squares // n) % 2
-            color = blue if check else cream
-            s.add(f'<particlecolor i="{r * n + c}" r="{fmt(color[0])}" g="{fmt(color[1])}" '
-                  f'b="{fmt(color[2])}"/>')
+    s.checks(n, squares, (0.12, 0.3, 0.62), (0.95, 0.93, 0.86))
     s.add('<sphere px="0" py="0" pz="0" radius="0.35"/>')
     s.add('<spherecolor i="0" r="0.9" g="0.55" b="0.15"/>')
     s.add('<halfplane px="0" py="-0.4" pz="0" nx="0" ny="1" nz="0"/>')
