@@ -3,6 +3,7 @@
 #include <array>
 #include <string_view>
 
+#include "core/integrators/solver_option.h"
 #include "core/step_error.h"
 #include "core/text.h"
 
@@ -10,7 +11,7 @@ namespace fosssim {
 
 void ImplicitEuler::prepare() {
   matrix_.emplace(forces(), FixedParticleRule::kIdentityRows);
-  solver_.emplace(forces().has_symmetric_jacobians());
+  solver_.emplace(forces().has_symmetric_jacobians(), settings_.solver);
 }
 
 ImplicitEuler::NewtonResult ImplicitEuler::solve(const BackwardEulerStep& problem, bool line_search,
@@ -23,8 +24,10 @@ ImplicitEuler::NewtonResult ImplicitEuler::solve(const BackwardEulerStep& proble
   Vector rhs = problem.residual(dv);
   for (int iteration = 1; iteration <= settings_.max_iterations; ++iteration) {
     const Vector v = state.v + dv;
-    const SparseMatrix& A = matrix_->assemble(state.q + h * v, v, h);
-    const auto delta = solver_->solve(A, rhs);
+    const Vector q = state.q + h * v;
+    const SparseMatrix& A = matrix_->assemble(q, v, h);
+    const auto delta = solver_->solve(
+        A, rhs, [&]() -> const SparseMatrix& { return matrix_->assemble_definite(q, v, h); });
     if (!delta) {
       throw StepError(state.step + 1,
                       "implicit Euler: the Newton matrix is singular at iteration " +
@@ -92,6 +95,7 @@ constexpr std::array kOptions = {
                        "1e-9 is the course's"),
     OptionSpec::integer("newton-max-iterations", kDefaults.max_iterations, 1, 1000000,
                         "give up on a step after this many Newton iterations"),
+    kSolverOption,
 };
 }  // namespace
 
@@ -105,8 +109,9 @@ constinit const IntegratorMethod kImplicitEulerMethod{
                    .implicit = true,
                    .energy = EnergyTrend::kDecays},
     .create = [](const OptionValues& options, int) -> std::unique_ptr<Integrator> {
-      return std::make_unique<ImplicitEuler>(NewtonSettings{
-          options.number("newton-tolerance"), options.integer("newton-max-iterations")});
+      return std::make_unique<ImplicitEuler>(
+          NewtonSettings{options.number("newton-tolerance"),
+                         options.integer("newton-max-iterations"), solver_choice(options)});
     },
 };
 

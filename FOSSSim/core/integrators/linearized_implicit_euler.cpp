@@ -4,13 +4,14 @@
 #include <string_view>
 
 #include "core/force_evaluation.h"
+#include "core/integrators/solver_option.h"
 #include "core/step_error.h"
 
 namespace fosssim {
 
 void LinearizedImplicitEuler::prepare() {
   matrix_.emplace(forces(), FixedParticleRule::kIdentityRows);
-  solver_.emplace(forces().has_symmetric_jacobians());
+  solver_.emplace(forces().has_symmetric_jacobians(), choice_);
 }
 
 void LinearizedImplicitEuler::advance(State& state) {
@@ -18,7 +19,9 @@ void LinearizedImplicitEuler::advance(State& state) {
   const Vector predicted_q = state.q + h * state.v;
   const Vector rhs = matrix_->restrict(h * compute_force(forces(), predicted_q, state.v));
   const SparseMatrix& A = matrix_->assemble(predicted_q, state.v, h);
-  const auto dv = solver_->solve(A, rhs);
+  const auto dv = solver_->solve(A, rhs, [&]() -> const SparseMatrix& {
+    return matrix_->assemble_definite(predicted_q, state.v, h);
+  });
   if (!dv) {
     throw StepError(state.step + 1, "linearized implicit Euler: the step matrix is singular");
   }
@@ -28,18 +31,20 @@ void LinearizedImplicitEuler::advance(State& state) {
 
 namespace {
 constexpr std::array<std::string_view, 1> kAliases = {"linearized-implicit"};
+constexpr std::array kOptions = {kSolverOption};
 }  // namespace
 
 constinit const IntegratorMethod kLinearizedImplicitEulerMethod{
     .name = "linearized-implicit-euler",
     .aliases = kAliases,
     .summary = "one Newton step of implicit Euler from the predicted position (Baraff-Witkin)",
+    .options = kOptions,
     .properties = {.order = 1,
                    .course_reference = true,
                    .implicit = true,
                    .energy = EnergyTrend::kDecays},
-    .create = [](const OptionValues&, int) -> std::unique_ptr<Integrator> {
-      return std::make_unique<LinearizedImplicitEuler>();
+    .create = [](const OptionValues& options, int) -> std::unique_ptr<Integrator> {
+      return std::make_unique<LinearizedImplicitEuler>(solver_choice(options));
     },
 };
 

@@ -4,20 +4,23 @@
 #include <string_view>
 
 #include "core/force_evaluation.h"
+#include "core/integrators/solver_option.h"
 #include "core/step_error.h"
 
 namespace fosssim {
 
 void LinearlyImplicitEuler::prepare() {
   matrix_.emplace(forces(), FixedParticleRule::kElimination, project_hessian_);
-  solver_.emplace(forces().has_symmetric_jacobians());
+  solver_.emplace(forces().has_symmetric_jacobians(), choice_);
 }
 
 void LinearlyImplicitEuler::advance(State& state) {
   const double h = model().integrator.dt;
   Vector rhs = h * compute_force(forces(), state.q, state.v);
   const SparseMatrix& A = matrix_->assemble(state.q, state.v, h, &state.v, &rhs);
-  const auto dv = solver_->solve(A, matrix_->restrict(rhs));
+  const auto dv = solver_->solve(A, matrix_->restrict(rhs), [&]() -> const SparseMatrix& {
+    return matrix_->assemble_definite(state.q, state.v, h);
+  });
   if (!dv) throw StepError(state.step + 1, "linearly implicit Euler: the step matrix is singular");
   matrix_->add_solution(*dv, state.v);
   state.q += h * state.v;
@@ -29,6 +32,7 @@ constexpr std::array kOptions = {
     OptionSpec::choice("hessian", kHessians,
                        "\"projected\" drops compressed springs' negative transverse stiffness, "
                        "so the step matrix stays positive definite"),
+    kSolverOption,
 };
 }  // namespace
 
@@ -38,7 +42,8 @@ constinit const IntegratorMethod kLinearlyImplicitEulerMethod{
     .options = kOptions,
     .properties = {.order = 1, .implicit = true, .energy = EnergyTrend::kDecays},
     .create = [](const OptionValues& options, int) -> std::unique_ptr<Integrator> {
-      return std::make_unique<LinearlyImplicitEuler>(options.choice("hessian") == "projected");
+      return std::make_unique<LinearlyImplicitEuler>(options.choice("hessian") == "projected",
+                                                     solver_choice(options));
     },
 };
 
