@@ -24,10 +24,8 @@ ImplicitEuler::NewtonResult ImplicitEuler::solve(const BackwardEulerStep& proble
   Vector rhs = problem.residual(dv);
   for (int iteration = 1; iteration <= settings_.max_iterations; ++iteration) {
     const Vector v = state.v + dv;
-    const Vector q = state.q + h * v;
-    const SparseMatrix& A = matrix_->assemble(q, v, h);
-    const auto delta = solver_->solve(
-        A, rhs, [&]() -> const SparseMatrix& { return matrix_->assemble_definite(q, v, h); });
+    const SparseMatrix& A = matrix_->assemble(state.q + h * v, v, h);
+    const auto delta = solver_->solve(A, rhs);
     if (!delta) {
       throw StepError(state.step + 1,
                       "implicit Euler: the Newton matrix is singular at iteration " +

@@ -19,9 +19,7 @@ void LinearizedImplicitEuler::advance(State& state) {
   const Vector predicted_q = state.q + h * state.v;
   const Vector rhs = matrix_->restrict(h * compute_force(forces(), predicted_q, state.v));
   const SparseMatrix& A = matrix_->assemble(predicted_q, state.v, h);
-  const auto dv = solver_->solve(A, rhs, [&]() -> const SparseMatrix& {
-    return matrix_->assemble_definite(predicted_q, state.v, h);
-  });
+  const auto dv = solver_->solve(A, rhs);
   if (!dv) {
     throw StepError(state.step + 1, "linearized implicit Euler: the step matrix is singular");
   }

@@ -18,9 +18,7 @@ void LinearlyImplicitEuler::advance(State& state) {
   const double h = model().integrator.dt;
   Vector rhs = h * compute_force(forces(), state.q, state.v);
   const SparseMatrix& A = matrix_->assemble(state.q, state.v, h, &state.v, &rhs);
-  const auto dv = solver_->solve(A, matrix_->restrict(rhs), [&]() -> const SparseMatrix& {
-    return matrix_->assemble_definite(state.q, state.v, h);
-  });
+  const auto dv = solver_->solve(A, matrix_->restrict(rhs));
   if (!dv) throw StepError(state.step + 1, "linearly implicit Euler: the step matrix is singular");
   matrix_->add_solution(*dv, state.v);
   state.q += h * state.v;

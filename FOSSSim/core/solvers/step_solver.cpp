@@ -11,10 +11,18 @@ constexpr double kResidualTolerance = 1e-12;
 /// GMRES never keeps more directions than this; a factor that needs more is replaced.
 constexpr int kMaxKrylovIterations = 30;
 /// Operations of a numeric factorization are charged at this fraction of those of a solve:
-/// dense supernodal blocks run near BLAS-3 speed, triangular sweeps at memory speed
-/// (measured on the 81×81 cloth and the tet ball with OpenBLAS, bench_implicit).
-constexpr double kSupernodalFlopWeight = 0.2;
+/// dense supernodal and frontal blocks run near BLAS-3 speed, triangular sweeps at memory
+/// speed (measured on the 81×81 cloth and the tet ball with OpenBLAS, bench_implicit).
+constexpr double kBlockedFlopWeight = 0.2;
 constexpr double kSimplicialFlopWeight = 1.0;
+/// After a Cholesky factorization fails (A is not positive definite), this many
+/// factorizations go straight to LU before Cholesky is tried again.
+constexpr int kLuAfterIndefinite = 4;
+/// The longest run of solves that factor at once after kept factors failed.
+constexpr int kLongestBackoff = 16;
+/// Non-symmetric A (damped springs, vortices): precondition with a Cholesky factor of the
+/// symmetric part, (A + Aᵀ)/2, rather than an LU factor of A (measured, bench_implicit).
+constexpr bool kSymmetricPartForNonSymmetric = true;
 
 double residual_scale(const SparseMatrix& A, const Vector& x, const Vector& b) {
   return b.norm() + A.norm() * x.norm();
@@ -44,11 +52,6 @@ std::vector<int> transposed_slots(const SparseMatrix& A) {
   return slots;
 }
 
-bool same_pattern_as(const SparseMatrix& A, const SparseMatrix& B) {
-  return A.rows() == B.rows() && A.nonZeros() == B.nonZeros() &&
-         std::equal(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1, B.outerIndexPtr()) &&
-         std::equal(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(), B.innerIndexPtr());
-}
 }  // namespace
 
 bool StepSolver::same_pattern(const SparseMatrix& A) const {
@@ -66,22 +69,24 @@ void StepSolver::take_pattern(const SparseMatrix& A) {
   ldlt_analysed_ = false;
   lu_analysed_ = false;
   cholesky_.reset();
+  umfpack_.reset();
   transposed_.clear();
-  structurally_symmetric_ = false;
-  if (choice_ != SolverChoice::kEigen &&
+  skip_cholesky_ = 0;
+  refactor_due_ = true;
+  suitesparse_ = false;
+  if (choice_ != SolverChoice::kEigen && A.rows() > 0 &&
       (choice_ == SolverChoice::kCholmod || A.rows() >= kCholmodFromSize)) {
     transposed_ = transposed_slots(A);
-    structurally_symmetric_ = A.rows() > 0 && !transposed_.empty();
+    // A pattern that is not structurally symmetric has no symmetric part of its own pattern;
+    // step matrices always are (pair blocks come in pairs).
+    suitesparse_ = !transposed_.empty();
   }
 }
 
-bool StepSolver::use_cholmod(const SparseMatrix&) const { return structurally_symmetric_; }
-
-std::optional<Vector> StepSolver::solve(const SparseMatrix& A, const Vector& b,
-                                        const DefiniteMatrix& definite) {
+std::optional<Vector> StepSolver::solve(const SparseMatrix& A, const Vector& b) {
   ++statistics_.solves;
   if (!same_pattern(A)) take_pattern(A);
-  if (use_cholmod(A)) return solve_cholmod(A, b, definite);
+  if (suitesparse_) return solve_suitesparse(A, b);
   return solve_eigen(A, b);
 }
 
@@ -124,58 +129,88 @@ std::optional<Vector> StepSolver::solve_lu(const SparseMatrix& A, const Vector& 
   return x;
 }
 
-void StepSolver::symmetrize(const SparseMatrix& M) {
-  if (!same_pattern_as(preconditioner_, M)) preconditioner_ = M;
-  const double* value = M.valuePtr();
-  double* out = preconditioner_.valuePtr();
+void StepSolver::symmetrize(const SparseMatrix& A) {
+  if (symmetric_part_.nonZeros() != A.nonZeros() || symmetric_part_.rows() != A.rows()) {
+    symmetric_part_ = A;
+  }
+  const double* value = A.valuePtr();
+  double* out = symmetric_part_.valuePtr();
   for (std::size_t k = 0; k < transposed_.size(); ++k) {
     out[k] = 0.5 * (value[k] + value[transposed_[k]]);
   }
 }
 
-bool StepSolver::refactor(const SparseMatrix& A, const DefiniteMatrix& definite) {
+bool StepSolver::factor_cholesky(const SparseMatrix& A) {
+  const SparseMatrix* target = &A;
+  if (!symmetric_) {
+    symmetrize(A);
+    target = &symmetric_part_;
+  }
+  if (!cholesky_) {
+    cholesky_.emplace(CholeskyOptions{});
+    cholesky_->analyze(*target);
+    ++statistics_.analyses;
+  }
   ++statistics_.factorizations;
+  if (!cholesky_->factorize(*target)) return false;
+  factor_ = Factorization::kCholesky;
+  const double weight = cholesky_->is_supernodal() ? kBlockedFlopWeight : kSimplicialFlopWeight;
+  factor_cost_ = weight * cholesky_->factor_flops();
+  iteration_cost_ = 4.0 * cholesky_->factor_nonzeros() + 2.0 * static_cast<double>(A.nonZeros());
+  return true;
+}
+
+bool StepSolver::factor_lu(const SparseMatrix& A) {
+  if (!umfpack_) {
+    umfpack_.emplace();
+    umfpack_->analyze(A);
+    ++statistics_.analyses;
+  }
+  ++statistics_.factorizations;
+  ++statistics_.lu_factorizations;
+  if (!umfpack_->factorize(A)) return false;
+  factor_ = Factorization::kUmfpack;
+  factor_cost_ = kBlockedFlopWeight * umfpack_->factor_flops();
+  iteration_cost_ = 2.0 * umfpack_->factor_nonzeros() + 2.0 * static_cast<double>(A.nonZeros());
+  return true;
+}
+
+bool StepSolver::refactor(const SparseMatrix& A) {
   refactor_due_ = false;
   charged_ = 0.0;
   first_after_factor_ = true;
-  bool ok = false;
-  if (symmetric_) {
-    ok = cholesky_->factorize(A);
-  } else {
-    symmetrize(A);
-    ok = cholesky_->factorize(preconditioner_);
+  const bool try_cholesky = symmetric_ || kSymmetricPartForNonSymmetric;
+  if (try_cholesky && skip_cholesky_ == 0) {
+    if (factor_cholesky(A)) return true;
+    skip_cholesky_ = kLuAfterIndefinite;
+  } else if (skip_cholesky_ > 0) {
+    --skip_cholesky_;
   }
-  if (!ok && definite) {
-    const SparseMatrix& D = definite();
-    if (same_pattern_as(A, D)) {
-      ++statistics_.definite_fallbacks;
-      ++statistics_.factorizations;
-      symmetrize(D);
-      ok = cholesky_->factorize(preconditioner_);
-    }
-  }
-  const double weight = cholesky_->is_supernodal() ? kSupernodalFlopWeight : kSimplicialFlopWeight;
-  factor_cost_ = weight * cholesky_->factor_flops();
-  iteration_cost_ = 4.0 * cholesky_->factor_nonzeros() + 2.0 * static_cast<double>(A.nonZeros());
-  return ok;
+  return factor_lu(A);
 }
 
-std::optional<Vector> StepSolver::solve_cholmod(const SparseMatrix& A, const Vector& b,
-                                                const DefiniteMatrix& definite) {
-  if (!cholesky_) {
-    cholesky_.emplace(CholeskyOptions{});
-    cholesky_->analyze(A);
-    ++statistics_.analyses;
-    refactor_due_ = true;
+void StepSolver::precondition(const double* r, double* z) const {
+  if (factor_ == Factorization::kCholesky) {
+    cholesky_->solve(r, z, 1);
+  } else {
+    umfpack_->solve(r, z);
   }
-  const auto precondition = [this](const double* r, double* z) { cholesky_->solve(r, z, 1); };
+}
+
+std::optional<Vector> StepSolver::solve_suitesparse(const SparseMatrix& A, const Vector& b) {
+  const auto precondition = [this](const double* r, double* z) { this->precondition(r, z); };
   const double a_norm = A.norm();
-  bool fresh = refactor_due_;
+  Vector x(b.size());
+  bool fresh = refactor_due_ || backoff_ > 0;
+  if (backoff_ > 0) --backoff_;
   for (;;) {
-    if (fresh && !refactor(A, definite)) break;
-    Vector x = cholesky_->solve(b);
-    if (!x.allFinite()) break;
+    if (fresh && !refactor(A)) break;
+    // From x = 0, GMRES's first iterate is the best multiple of M⁻¹b: never worse than b, even
+    // when a kept factor is far from A.
+    x.setZero();
+    precondition(b.data(), x.data());
     const double tolerance = kResidualTolerance * (b.norm() + a_norm * x.norm());
+    x.setZero();
     // A kept factor may take as many more iterations than a fresh one as a factorization
     // costs; a fresh one as many as GMRES keeps.
     const double affordable = std::clamp(factor_cost_ / std::max(iteration_cost_, 1.0), 2.0,
@@ -190,17 +225,24 @@ std::optional<Vector> StepSolver::solve_cholmod(const SparseMatrix& A, const Vec
         fresh_iterations_ = result.iterations;
         first_after_factor_ = false;
       } else {
+        backoff_length_ = 0;
         charged_ += std::max(0, result.iterations - fresh_iterations_) * iteration_cost_;
         refactor_due_ = charged_ >= factor_cost_;
       }
-      last_ = Factorization::kCholesky;
+      last_ = factor_;
       return x;
     }
-    if (fresh) break;
+    if (fresh) {
+      // A fresh factor of A's symmetric part did not help: an LU factor of A itself will.
+      if (factor_ != Factorization::kCholesky || symmetric_) break;
+      skip_cholesky_ = kLuAfterIndefinite;
+    } else {
+      backoff_length_ = std::clamp(2 * backoff_length_, 1, kLongestBackoff);
+      backoff_ = backoff_length_;
+    }
     fresh = true;  // the kept factor no longer helps: factor A now and try once more
   }
-  // Neither A, nor its symmetric part, nor the definite matrix made a factor that GMRES could
-  // use: an LU (or LDLᵀ) of A itself, and a fresh try with CHOLMOD at the next solve.
+  // No factor GMRES could use: Eigen's LU (or LDLᵀ) of A itself, and a fresh factor next time.
   ++statistics_.direct_fallbacks;
   refactor_due_ = true;
   return solve_eigen(A, b);

@@ -40,7 +40,7 @@ const SparseMatrix& StepMatrix::assemble(const Vector& q, const Vector& v, doubl
     if (pattern_usable_ && scatter(in, h, u, rhs, matrix_)) return matrix_;
     pattern_usable_ = false;
   }
-  if (!pattern_usable_) assemble_from_triplets(in, h, u, rhs, matrix_);
+  if (!pattern_usable_) build_from_triplets(in, h, u, rhs, matrix_);
   return matrix_;
 }
 
@@ -48,7 +48,7 @@ const SparseMatrix& StepMatrix::assemble_definite(const Vector& q, const Vector&
   const ForceInput in{q, v, forces_->model().mass, true};
   if (!recorded_) record(in);
   if (!pattern_usable_ || !scatter(in, h, nullptr, nullptr, definite_)) {
-    assemble_from_triplets(in, h, nullptr, nullptr, definite_);
+    build_from_triplets(in, h, nullptr, nullptr, definite_);
   }
   return definite_;
 }
@@ -91,8 +91,16 @@ bool StepMatrix::scatter(const ForceInput& in, double h, const Vector* u, Vector
   return true;
 }
 
-void StepMatrix::assemble_from_triplets(const ForceInput& in, double h, const Vector* u,
-                                        Vector* rhs, SparseMatrix& out) {
+const SparseMatrix& StepMatrix::assemble_from_triplets(const Vector& q, const Vector& v, double h,
+                                                       const Vector* u, Vector* rhs) {
+  const ForceInput in{q, v, forces_->model().mass, definite_hessian_};
+  build_from_triplets(in, h, u, rhs, matrix_);
+  recorded_ = false;  // matrix_ may no longer hold the recorded pattern
+  return matrix_;
+}
+
+void StepMatrix::build_from_triplets(const ForceInput& in, double h, const Vector* u, Vector* rhs,
+                                     SparseMatrix& out) {
   const SceneModel& model = forces_->model();
   scratch_.clear();
   scratch_.set_scale(h * h);

@@ -43,6 +43,11 @@ class StepMatrix {
   /// matrix of its own with the pattern of assemble()'s: a positive definite matrix near A
   /// when A is not, to precondition with (StepSolver::DefiniteMatrix).
   const SparseMatrix& assemble_definite(const Vector& q, const Vector& v, double h);
+  /// What assemble() gives, bit for bit, computed the plain way: the forces' values as
+  /// triplets, filtered by the fixed-particle rule and summed by Eigen's setFromTriplets. The
+  /// reference for tests, and the old path of the benchmarks.
+  const SparseMatrix& assemble_from_triplets(const Vector& q, const Vector& v, double h,
+                                             const Vector* u = nullptr, Vector* rhs = nullptr);
 
   /// A full right-hand side over the unknowns: b with fixed DOFs zeroed (kIdentityRows) or P b.
   Vector restrict(const Vector& b) const;
@@ -62,9 +67,9 @@ class StepMatrix {
   /// Scatters A's values at `in` into `out` (of the recorded pattern); false when the forces
   /// wrote other blocks than those recorded (`rhs` is then as it was).
   bool scatter(const ForceInput& in, double h, const Vector* u, Vector* rhs, SparseMatrix& out);
-  /// The fallback for patterns HessianPattern cannot hold: triplets, filtered and summed.
-  void assemble_from_triplets(const ForceInput& in, double h, const Vector* u, Vector* rhs,
-                              SparseMatrix& out);
+  /// Triplets, filtered and summed (the fallback for patterns HessianPattern cannot hold).
+  void build_from_triplets(const ForceInput& in, double h, const Vector* u, Vector* rhs,
+                           SparseMatrix& out);
 
   const ForceSet* forces_;
   FixedParticleRule rule_;
