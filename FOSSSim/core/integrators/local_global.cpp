@@ -53,19 +53,26 @@ void LocalGlobal<D>::advance(State& state) {
   p_ = q + h * v;  // y = pⁿ + h vⁿ: the start, and where fixed particles go
   assemble_constant_rhs(state);
   last_iterations_ = 0;
-  for (int iteration = 1; iteration <= settings_.iterations; ++iteration) {
-    rhs_ = constant_rhs_;
-    add_spring_directions(rhs_);
-    last_change_ = global_solve(rhs_);
-    last_iterations_ = iteration;
-    if (settings_.tolerance > 0.0 && last_change_ <= settings_.tolerance) break;
-  }
+  iterate();
   for (int p : free_.particles()) {
     v.row(p) = (p_.row(p) - q.row(p)) / h;
     q.row(p) = p_.row(p);
   }
   for (int p = 0; p < model().num_particles(); ++p) {
     if (free_.of_particle(p) < 0) q.row(p) = p_.row(p);  // eliminated: moves with its own velocity
+  }
+}
+
+template <int D>
+void LocalGlobal<D>::iterate() {
+  if (settings_.acceleration == Acceleration::kAnderson) return iterate_anderson();
+  if (settings_.acceleration == Acceleration::kChebyshev) return iterate_chebyshev();
+  for (int iteration = 1; iteration <= settings_.iterations; ++iteration) {
+    rhs_ = constant_rhs_;
+    add_spring_directions(rhs_);
+    last_change_ = global_solve(rhs_);
+    last_iterations_ = iteration;
+    if (settings_.tolerance > 0.0 && last_change_ <= settings_.tolerance) break;
   }
 }
 
@@ -107,8 +114,9 @@ template <int D>
 void LocalGlobal<D>::factor() {
   const int n = free_.num_particles();
   if (n == 0) return;
-  const SparseMatrix Q = assemble_local_global_matrix(model().mass, free_, split_.springs, anchors_,
-                                                      model().integrator.dt);
+  q_matrix_ = assemble_local_global_matrix(model().mass, free_, split_.springs, anchors_,
+                                           model().integrator.dt);
+  const SparseMatrix& Q = q_matrix_;
   bool ok = false;
   if (factorizations_ > 0) {
     ok = solver_.refactor(Q);
@@ -191,6 +199,7 @@ constexpr std::array<std::string_view, 1> kAliases = {"fast-mass-springs"};
 constexpr std::array<std::string_view, 2> kPins = {"elimination", "penalty"};
 constexpr std::array<std::string_view, 3> kSolvers = {"auto", "dense", "sparse"};
 constexpr LocalGlobalSettings kDefaults;
+constexpr std::array<std::string_view, 3> kAccelerations = {"none", "anderson", "chebyshev"};
 constexpr std::array kOptions = {
     OptionSpec::integer("iterations", kDefaults.iterations, 1, 1000000,
                         "local/global iterations per step (at most, with a tolerance)"),
@@ -204,6 +213,13 @@ constexpr std::array kOptions = {
     OptionSpec::choice("solver", kSolvers,
                        "factorization of the constant matrix: dense up to 64 free particles "
                        "(auto), dense, or sparse"),
+    OptionSpec::choice(
+        "acceleration", kAccelerations,
+        "none, anderson (Peng et al. 2018, energy safeguarded) or chebyshev (Wang 2015)"),
+    OptionSpec::integer("window", kDefaults.window, 1, 100,
+                        "anderson: the number of recent iterates combined"),
+    OptionSpec::number("rho", kDefaults.rho, 0.0, true,
+                       "chebyshev: the estimated spectral radius of the plain iteration"),
 };
 
 std::unique_ptr<Integrator> make_local_global(const OptionValues& options, int dim) {
@@ -224,6 +240,14 @@ LocalGlobalSettings local_global_settings(const OptionValues& options) {
   settings.solver = solver == "dense"    ? LinearSolverChoice::kDense
                     : solver == "sparse" ? LinearSolverChoice::kSparse
                                          : LinearSolverChoice::kAuto;
+  if (options.has("acceleration")) {
+    const std::string_view a = options.choice("acceleration");
+    settings.acceleration = a == "anderson"    ? Acceleration::kAnderson
+                            : a == "chebyshev" ? Acceleration::kChebyshev
+                                               : Acceleration::kNone;
+    settings.window = options.integer("window");
+    settings.rho = options.number("rho");
+  }
   return settings;
 }
 

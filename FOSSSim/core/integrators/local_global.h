@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/integrators/integrator.h"
+#include "core/solvers/anderson_acceleration.h"
 #include "core/solvers/spd_solver.h"
 #include "core/spring_terms.h"
 #include "core/systems/free_dofs.h"
@@ -25,6 +26,13 @@ enum class LinearSolverChoice {
   kSparse,  ///< sparse Cholesky (Eigen::SimplicialLLT), factored once and reused
 };
 
+/// How the local/global iterations are accelerated.
+enum class Acceleration {
+  kNone,       ///< plain local/global
+  kAnderson,   ///< Anderson acceleration with an energy safeguard (Peng et al. 2018)
+  kChebyshev,  ///< Chebyshev semi-iterative acceleration (Wang 2015)
+};
+
 /// Settings of the local/global solver (options of the "local-global" registry entry).
 struct LocalGlobalSettings {
   /// kAuto solves systems of at most this many free particles densely.
@@ -34,6 +42,9 @@ struct LocalGlobalSettings {
   PinMethod pins = PinMethod::kElimination;
   double penalty_weight = 1e10;  ///< w of the penalty pins, N/m
   LinearSolverChoice solver = LinearSolverChoice::kAuto;
+  Acceleration acceleration = Acceleration::kNone;
+  int window = 5;     ///< Anderson: differences kept
+  double rho = 0.99;  ///< Chebyshev: the estimated spectral radius of the plain iteration
 };
 
 /// Implicit Euler for mass-spring systems by the local/global solver of Liu, Bargteil, O'Brien
@@ -101,6 +112,16 @@ class LocalGlobal final : public Integrator {
   void assemble_constant_rhs(const State& state);
   void add_spring_directions(Points<D>& rhs);
   double global_solve(Points<D>& rhs);
+  /// The iterations of a step from p_ = y, plain or accelerated; p_ ends at the last iterate.
+  void iterate();
+  void iterate_anderson();
+  void iterate_chebyshev();
+  /// The free particles' rows of p_ as one vector, and back.
+  Vector free_positions() const;
+  void set_free_positions(const Vector& u);
+  /// The global step's objective ½ tr(UᵀQU) - tr(UᵀR) at the free positions U for the
+  /// right side R of their local step (rhs_): the local/global energy up to a constant.
+  double objective() const;
 
   LocalGlobalSettings settings_;
   MassSpringForces split_;
@@ -114,6 +135,8 @@ class LocalGlobal final : public Integrator {
   std::vector<AnchorTerm> anchors_;                       // this step's anchors (free particles)
   std::vector<std::pair<int, double>> factored_anchors_;  // (particle, k) in Q
   SpdSolver solver_;
+  SparseMatrix q_matrix_;  // Q, kept for the objective of accelerated iterations
+  AndersonAcceleration anderson_;
   Points<D> p_;             // the current iterate, every particle
   Points<D> d_;             // spring directions times rest lengths, kept between iterations
   Points<D> constant_rhs_;  // the right side without the springs' directions

@@ -205,11 +205,16 @@ std::optional<Vector> StepSolver::solve_suitesparse(const SparseMatrix& A, const
   if (backoff_ > 0) --backoff_;
   for (;;) {
     if (fresh && !refactor(A)) break;
+    // The residual asked for is round-off in the scale ‖b‖ + ‖A‖ ‖x‖ of the system. A fresh
+    // factor gives ‖x‖; a kept one may be far from A, so the scale of the last answer is used.
+    const double b_norm = b.norm();
+    double tolerance = kResidualTolerance * b_norm * (1.0 + scale_ratio_);
+    if (fresh) {
+      precondition(b.data(), x.data());
+      tolerance = kResidualTolerance * (b_norm + a_norm * x.norm());
+    }
     // From x = 0, GMRES's first iterate is the best multiple of M⁻¹b: never worse than b, even
     // when a kept factor is far from A.
-    x.setZero();
-    precondition(b.data(), x.data());
-    const double tolerance = kResidualTolerance * (b.norm() + a_norm * x.norm());
     x.setZero();
     // A kept factor may take as many more iterations than a fresh one as a factorization
     // costs; a fresh one as many as GMRES keeps.
@@ -220,7 +225,10 @@ std::optional<Vector> StepSolver::solve_suitesparse(const SparseMatrix& A, const
               : std::min(kMaxKrylovIterations, fresh_iterations_ + static_cast<int>(affordable));
     const KrylovResult result = gmres_.solve(A, b, x, precondition, tolerance, most);
     statistics_.krylov_iterations += result.iterations;
-    if (result.converged && x.allFinite()) {
+    const double x_norm = x.norm();
+    if (result.converged && x.allFinite() &&
+        result.residual <= kResidualTolerance * (b_norm + a_norm * x_norm)) {
+      scale_ratio_ = b_norm > 0.0 ? a_norm * x_norm / b_norm : 0.0;
       if (first_after_factor_) {
         fresh_iterations_ = result.iterations;
         first_after_factor_ = false;

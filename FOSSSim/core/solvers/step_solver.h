@@ -124,8 +124,9 @@ class StepSolver {
   double charged_ = 0.0;      // cost of the iterations beyond a fresh factor's, since the last one
   int fresh_iterations_ = 0;  // GMRES iterations of the first solve after a factorization
   bool first_after_factor_ = false;
-  int backoff_ = 0;         // solves left that factor at once, after a kept factor failed
-  int backoff_length_ = 0;  // the next backoff: doubles while kept factors keep failing
+  int backoff_ = 0;           // solves left that factor at once, after a kept factor failed
+  int backoff_length_ = 0;    // the next backoff: doubles while kept factors keep failing
+  double scale_ratio_ = 0.0;  // ‖A‖ ‖x‖ / ‖b‖ of the last answer
 };
 
 }  // namespace fosssim
