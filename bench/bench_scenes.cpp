@@ -22,9 +22,7 @@ Scene start_scene(int dim, std::string_view integrator, double dt) {
 
 void add_mesh(Scene& scene, const Mesh& mesh, const MeshMaterial& material,
               const std::vector<int>& pins) {
-  auto springs = append_mesh(scene, mesh, material, pins, "mesh");
-  if (!springs) throw std::runtime_error("bench scene: " + springs.error());
-  scene.model.forces.push_back(std::move(springs).value());
+  scene.model.forces.push_back(append_mesh(scene, mesh, material, pins, "mesh"));
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,9 +49,11 @@ int main(int argc, char** argv) {
   const std::string path =
       argc > 1 ? argv[1] : std::string(FOSSSIM_SOURCE_DIR) + "/assets3d/scenes/cloth_81.xml";
   const int steps = argc > 2 ? std::stoi(argv[2]) : 45;
-  auto loaded = load_scene_file(path);
-  if (!loaded) {
-    std::fprintf(stderr, "%s\n", loaded.error().what());
+  std::optional<Scene> loaded;
+  try {
+    loaded.emplace(load_scene_file(path));
+  } catch (const Error& error) {
+    std::fprintf(stderr, "%s\n", error.what());
     return 2;
   }
   const Scene& scene = *loaded;

@@ -63,8 +63,7 @@ Scene make_cloth(int nx, const char* integrator) {
   material.k = 1000.0;
   material.mass = {MassRule::kTotal, 1.0};
   scene.model.forces.push_back(
-      std::move(append_mesh(scene, cloth.mesh, material, *cloth.find_pins("corners"), "cloth"))
-          .value());
+      append_mesh(scene, cloth.mesh, material, *cloth.find_pins("corners"), "cloth"));
   scene.model.forces.push_back(std::make_unique<SimpleGravityForce<3>>(Vec<3>(0.0, -9.8, 0.0)));
   return scene;
 }

@@ -1,7 +1,11 @@
 #pragma once
-// What the command line does once a scene is loaded; each returns the process exit status.
+// What the command line does once a scene is loaded; each returns the process exit status, and
+// failures they do not report themselves reach main() as Error.
+
+#include <ostream>
 
 #include "app/options.h"
+#include "core/error.h"
 #include "core/scene.h"
 #include "grading/grader.h"
 
@@ -22,6 +26,10 @@ int report_grade(const Scene& scene, const Options& options, const GradeReport& 
 /// reference. In a run the mouse pulls particles with a drag spring the window owns
 /// (viewer/particle_grab.h).
 int run_window(const Scene& scene, const Options& options);
+
+/// Prints an error as the programs do: a located input error ("file:line: error: ...") as it
+/// is, anything else after "FOSSSim: error: ".
+void print_error(std::ostream& out, const Error& error);
 
 /// Finite-difference check of every force at the scene's initial state.
 int run_derivative_check(const Scene& scene, const Options& options);

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/analysis/energy.h"
+#include "core/error.h"
 #include "io/output_file.h"
 #include "io/trajectory_file.h"
 #include "pictures/cairo_painter.h"
@@ -26,15 +27,35 @@ const Image& Frame::image() {
 
 namespace {
 
-/// -o: the trajectory file (docs/command-line.md, 'Trajectory files').
+/// -o: the trajectory file (docs/command-line.md, 'Trajectory files'), in the layout of the
+/// scene's collision method (docs/collisions.md): continuous-time and hybrid steps write their
+/// sync record, then their end-of-step record.
 class TrajectoryOutput final : public FrameOutput {
  public:
-  explicit TrajectoryOutput(TrajectoryWriter writer) : writer_(std::move(writer)) {}
+  TrajectoryOutput(TrajectoryWriter writer, TrajectoryLayout layout)
+      : writer_(std::move(writer)), layout_(layout) {}
   void write(Frame& frame) override {
-    writer_.write_frame(frame.state());
+    const State& state = frame.state();
+    const StepRecord* record = frame.record();
+    if (record == nullptr) {
+      writer_.write_record(layout_, state.q, state.v, {}, {});
+    } else {
+      if (layout_ == TrajectoryLayout::kCollisionsAndPolynomials) {
+        const SyncPoint sync =
+            record->sync.value_or(SyncPoint{state.q, state.v, record->polynomials.size()});
+        const std::vector<Polynomial> logged(
+            record->polynomials.begin(),
+            record->polynomials.begin() + static_cast<std::ptrdiff_t>(sync.polynomials_logged));
+        writer_.write_record(layout_, sync.q, sync.v, record->collisions, logged);
+      }
+      writer_.write_record(layout_, state.q, state.v, record->collisions, record->polynomials);
+    }
     ++frames_;
   }
   void commit() override { writer_.commit(); }
+  std::string describe() const override {
+    return "the trajectory " + writer_.path() + " (" + std::to_string(frames_) + " frames)";
+  }
   std::string abandon() override {
     return "the " + std::to_string(frames_) + " frames computed so far are in " +
            writer_.abandon() + " (" + writer_.path() + " was not written)";
@@ -42,6 +63,7 @@ class TrajectoryOutput final : public FrameOutput {
 
  private:
   TrajectoryWriter writer_;
+  TrajectoryLayout layout_;
   std::int64_t frames_ = 0;
 };
 
@@ -60,13 +82,19 @@ class PictureSequenceOutput final : public FrameOutput {
     } else {
       write_png(frame.image(), directory_ + name);
     }
+    ++pictures_;
   }
   void commit() override {}
+  std::string describe() const override {
+    return std::to_string(pictures_) + (format_ == PictureFormat::kSvg ? " SVG" : " PNG") +
+           " pictures in " + directory_ + "/";
+  }
   std::string abandon() override { return ""; }
 
  private:
   std::string directory_;
   PictureFormat format_;
+  std::int64_t pictures_ = 0;
 };
 
 /// --movie: every stride-th state as a movie frame.
@@ -74,9 +102,15 @@ class MovieOutput final : public FrameOutput {
  public:
   MovieOutput(MovieWriter writer, int stride) : writer_(std::move(writer)), stride_(stride) {}
   void write(Frame& frame) override {
-    if (frame.state().step % stride_ == 0) writer_.write_frame(frame.image());
+    if (frame.state().step % stride_ == 0) {
+      writer_.write_frame(frame.image());
+      ++frames_;
+    }
   }
   void commit() override { writer_.commit(); }
+  std::string describe() const override {
+    return "the movie " + writer_.path() + " (" + std::to_string(frames_) + " frames)";
+  }
   std::string abandon() override {
     const std::string kept = writer_.abandon();
     return kept.empty() ? "" : "the movie so far is in " + kept;
@@ -85,6 +119,7 @@ class MovieOutput final : public FrameOutput {
  private:
   MovieWriter writer_;
   int stride_;
+  std::int64_t frames_ = 0;
 };
 
 /// --energy-plot and --energy-csv: the energies of every state, written when the run ends.
@@ -97,10 +132,16 @@ class EnergyOutput final : public FrameOutput {
     samples_.push_back({frame.state().time, e.kinetic, e.potential});
   }
   void commit() override { write_files(""); }
+  std::string describe() const override {
+    std::string out;
+    if (!plot_.empty()) out = "the energy plot " + plot_;
+    if (!csv_.empty()) out += (out.empty() ? "" : " and ") + std::string("the energies ") + csv_;
+    return out;
+  }
   std::string abandon() override {
     try {
       write_files(".incomplete");
-    } catch (const std::runtime_error&) {
+    } catch (const Error&) {
       return "";
     }
     return "the energies so far are in " + join_names(".incomplete");
@@ -127,7 +168,7 @@ class EnergyOutput final : public FrameOutput {
     return buffer;
   }
   void write_csv(const std::string& path) const {
-    const auto problem = write_output_file(path, [this](std::ostream& out) {
+    write_output_file(path, [this](std::ostream& out) {
       out << "time,kinetic,potential,total\n";
       char line[128];
       for (const EnergySample& s : samples_) {
@@ -136,7 +177,6 @@ class EnergyOutput final : public FrameOutput {
         out << line;
       }
     });
-    if (problem) throw std::runtime_error(*problem);
   }
 
   const Scene& scene_;
@@ -144,11 +184,13 @@ class EnergyOutput final : public FrameOutput {
   std::vector<EnergySample> samples_;
 };
 
-std::optional<std::string> make_directory(const std::string& directory) {
+void make_directory(const std::string& directory) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
-  if (error) return "cannot create the folder " + directory + ": " + error.message();
-  return std::nullopt;
+  if (error) {
+    throw Error(ErrorKind::kCannotWrite,
+                "cannot create the folder " + directory + ": " + error.message());
+  }
 }
 
 }  // namespace
@@ -161,30 +203,22 @@ int movie_stride(const Options& options, double dt) {
              : 1;
 }
 
-Expected<FrameOutputs, std::string> FrameOutputs::open(const Scene& scene, const Options& options) {
+FrameOutputs FrameOutputs::open(const Scene& scene, const Options& options) {
   FrameOutputs outputs;
   if (!options.output.empty()) {
-    auto writer = TrajectoryWriter::open(options.output);
-    if (!writer) return writer.error();
-    outputs.outputs_.push_back(std::make_unique<TrajectoryOutput>(std::move(writer).value()));
+    outputs.outputs_.push_back(std::make_unique<TrajectoryOutput>(
+        TrajectoryWriter::open(options.output), trajectory_layout(scene.model)));
   }
-  auto add_sequence = [&](const std::string& directory,
-                          PictureFormat format) -> std::optional<std::string> {
-    if (auto problem = make_directory(directory)) return problem;
+  auto add_sequence = [&](const std::string& directory, PictureFormat format) {
+    make_directory(directory);
     outputs.outputs_.push_back(std::make_unique<PictureSequenceOutput>(directory, format));
-    return std::nullopt;
   };
-  if (options.png == 1) {
-    if (auto problem = add_sequence(options.png_directory, PictureFormat::kPng)) return *problem;
-  }
-  if (!options.svg_directory.empty()) {
-    if (auto problem = add_sequence(options.svg_directory, PictureFormat::kSvg)) return *problem;
-  }
+  if (options.png == 1) add_sequence(options.png_directory, PictureFormat::kPng);
+  if (!options.svg_directory.empty()) add_sequence(options.svg_directory, PictureFormat::kSvg);
   if (!options.movie.empty()) {
-    auto writer = MovieWriter::open(options.movie, movie_settings(options));
-    if (!writer) return writer.error();
-    outputs.outputs_.push_back(std::make_unique<MovieOutput>(
-        std::move(writer).value(), movie_stride(options, scene.model.integrator.dt)));
+    outputs.outputs_.push_back(
+        std::make_unique<MovieOutput>(MovieWriter::open(options.movie, movie_settings(options)),
+                                      movie_stride(options, scene.model.integrator.dt)));
   }
   if (!options.energy_plot.empty() || !options.energy_csv.empty()) {
     outputs.outputs_.push_back(
@@ -193,13 +227,22 @@ Expected<FrameOutputs, std::string> FrameOutputs::open(const Scene& scene, const
   return outputs;
 }
 
-void FrameOutputs::write(const State& state, const SceneView& view) {
-  Frame frame(state, view);
+void FrameOutputs::write(const State& state, const SceneView& view, const StepRecord* record) {
+  Frame frame(state, view, record);
   for (auto& output : outputs_) output->write(frame);
 }
 
 void FrameOutputs::commit() {
   for (auto& output : outputs_) output->commit();
+}
+
+std::string FrameOutputs::describe() const {
+  std::string out;
+  for (std::size_t k = 0; k < outputs_.size(); ++k) {
+    if (k > 0) out += k + 1 == outputs_.size() ? " and " : ", ";
+    out += outputs_[k]->describe();
+  }
+  return out;
 }
 
 std::string FrameOutputs::abandon() {

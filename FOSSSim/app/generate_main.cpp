@@ -30,11 +30,11 @@ struct GenerateOptions {
 };
 
 /// Writes {"obj": <mesh file relative to the JSON>, "k": k, "b": [pins, 1-based]}.
-std::optional<std::string> write_json_scene(const std::string& path, const std::string& mesh_path,
-                                            double k, const std::vector<int>& pinned) {
+void write_json_scene(const std::string& path, const std::string& mesh_path, double k,
+                      const std::vector<int>& pinned) {
   const auto relative = std::filesystem::path(mesh_path).lexically_relative(
       std::filesystem::absolute(path).parent_path());
-  return write_output_file(path, [&](std::ostream& out) {
+  write_output_file(path, [&](std::ostream& out) {
     out << "{\n  \"obj\": \"" << relative.generic_string() << "\",\n  \"k\": " << to_text(k)
         << ",\n  \"b\": [";
     for (std::size_t p = 0; p < pinned.size(); ++p) out << (p ? ", " : "") << pinned[p] + 1;
@@ -140,13 +140,18 @@ int main(int argc, char** argv) {
     std::cerr << "FOSSSim-generate: error: --json scenes hold OBJ meshes, not tets\n";
     return kExitBadInput;
   }
-  auto error =
-      tets ? write_medit_file(o.output, generated.mesh) : write_obj_file(o.output, generated.mesh);
-  if (!error && !o.json.empty())
-    error = write_json_scene(o.json, std::filesystem::absolute(o.output).string(), o.k, *pinned);
-  if (error) {
-    std::cerr << "FOSSSim-generate: error: " << *error << "\n";
-    return kExitIoError;
+  try {
+    if (tets) {
+      write_medit_file(o.output, generated.mesh);
+    } else {
+      write_obj_file(o.output, generated.mesh);
+    }
+    if (!o.json.empty()) {
+      write_json_scene(o.json, std::filesystem::absolute(o.output).string(), o.k, *pinned);
+    }
+  } catch (const Error& error) {
+    std::cerr << "FOSSSim-generate: error: " << error.what() << "\n";
+    return exit_status(error.kind());
   }
   std::cout << "wrote " << o.output << ": " << generated.mesh.num_vertices() << " vertices, "
             << compute_spring_pairs(generated.mesh).size() << " springs";

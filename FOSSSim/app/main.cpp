@@ -1,9 +1,10 @@
 // FOSSSim command line: loads a scene, then runs it headless (writing trajectories, pictures,
 // movies, energy plots), grades a trajectory against it, checks its derivatives, or opens the
-// window. Only this file chooses exit statuses.
+// window. Only this file turns failures into exit statuses.
 
 #include <algorithm>
 #include <iostream>
+#include <new>
 
 #include "app/commands.h"
 #include "app/interrupt.h"
@@ -14,31 +15,23 @@
 #include "io/scene_loader.h"
 #include "scripting/step_hooks.h"
 
-int main(int argc, char** argv) {
-  using namespace fosssim;
-  Options options;
-  CLI::App app{"FOSSSim", "FOSSSim"};
-  add_options(app, options);
-  if (auto status = parse_command_line(app, argc, argv)) return *status;
+namespace fosssim {
+namespace {
 
-  options.display_given = app.count("--display") > 0;
-  if (auto problem = check_picture_options(options)) {
-    std::cerr << "FOSSSim: error: " << *problem << "\nRun FOSSSim --help for the options.\n";
-    return kExitBadInput;
+/// Loads the scene, applies the overrides and runs what the options ask for.
+int run(Options& options) {
+  try {
+    check_picture_options(options);
+  } catch (const Error& error) {
+    std::cerr << "FOSSSim: error: " << error.what() << "\nRun FOSSSim --help for the options.\n";
+    return exit_status(error.kind());
   }
-
-  auto loaded = load_scene_file(options.scene);
-  if (!loaded) {
-    std::cerr << loaded.error().what() << "\n";
-    return kExitBadInput;
-  }
-  Scene& scene = *loaded;
+  Scene scene = load_scene_file(options.scene);
   try {
     apply_overrides(options, scene);
-  } catch (const Error& error) {
+  } catch (const Error&) {
     for (const std::string& warning : scene.warnings) std::cerr << warning << "\n";
-    std::cerr << "FOSSSim: error: " << error.what() << "\n";
-    return kExitBadInput;
+    throw;
   }
   for (const std::string& warning : scene.warnings) std::cerr << warning << "\n";
   if (!scene.description.empty() && !options.quiet) std::cout << scene.description << std::endl;
@@ -54,4 +47,28 @@ int main(int argc, char** argv) {
   if (options.display == 1) return run_window(scene, options);
   if (!options.input.empty()) return run_grading(scene, options);
   return run_headless(scene, options);
+}
+
+}  // namespace
+}  // namespace fosssim
+
+int main(int argc, char** argv) {
+  using namespace fosssim;
+  Options options;
+  CLI::App app{"FOSSSim", "FOSSSim"};
+  add_options(app, options);
+  if (auto status = parse_command_line(app, argc, argv)) return *status;
+  options.display_given = app.count("--display") > 0;
+  try {
+    return run(options);
+  } catch (const Error& error) {
+    print_error(std::cerr, error);
+    return exit_status(error.kind());
+  } catch (const std::bad_alloc&) {
+    std::cerr << "FOSSSim: error: out of memory\n";
+    return kExitBadInput;
+  } catch (const std::exception& error) {
+    std::cerr << "FOSSSim: error: " << error.what() << "\n";
+    return kExitBadInput;
+  }
 }

@@ -65,23 +65,26 @@ void add_picture_options(CLI::App& app, Options& options) {
       ->group(group);
 }
 
+/// Throws Error (kBadInput) with a message.
+[[noreturn]] void fail(const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); }
+
 /// Parses "WxH" into width and height (each 16..8192).
-std::optional<std::string> parse_size(const std::string& text, int& width, int& height) {
+void parse_size(const std::string& text, int& width, int& height) {
   int w = 0, h = 0;
   char x = 0, extra = 0;
   if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
       w < 16 || h < 16 || w > 8192 || h > 8192) {
-    return "--size must be WIDTHxHEIGHT with each between 16 and 8192 pixels (512x512, say), "
-           "found '" +
-           text + "'";
+    fail(
+        "--size must be WIDTHxHEIGHT with each between 16 and 8192 pixels (512x512, say), "
+        "found '" +
+        text + "'");
   }
   width = w;
   height = h;
-  return std::nullopt;
 }
 
 /// Parses "YAW,PITCH[,DISTANCE]" (degrees, degrees, world units > 0) into `view`.
-std::optional<std::string> parse_view(const std::string& text, OrbitViewSettings& view) {
+void parse_view(const std::string& text, OrbitViewSettings& view) {
   std::vector<double> values;
   bool numbers = true;
   for (std::size_t start = 0;;) {
@@ -97,14 +100,14 @@ std::optional<std::string> parse_view(const std::string& text, OrbitViewSettings
   }
   if (!numbers || values.size() < 2 || values.size() > 3 ||
       (values.size() == 3 && !(values[2] > 0.0))) {
-    return "--view must be YAW,PITCH or YAW,PITCH,DISTANCE: angles in degrees and a distance "
-           "> 0 (30,20 or 30,20,4, say), found '" +
-           text + "'";
+    fail(
+        "--view must be YAW,PITCH or YAW,PITCH,DISTANCE: angles in degrees and a distance "
+        "> 0 (30,20 or 30,20,4, say), found '" +
+        text + "'");
   }
   view.yaw = values[0];
   view.pitch = values[1];
   if (values.size() == 3) view.distance = values[2];
-  return std::nullopt;
 }
 
 /// The --integrator-option values, NAME=VALUE each, as an OptionSource.
@@ -198,26 +201,26 @@ std::string integrator_help() {
 
 }  // namespace
 
-std::optional<std::string> check_picture_options(Options& options) {
-  if (auto problem = parse_size(options.size, options.width, options.height)) return problem;
+void check_picture_options(Options& options) {
+  parse_size(options.size, options.width, options.height);
   const bool pictures = options.png == 1 || !options.svg_directory.empty() ||
                         !options.movie.empty() || !options.energy_plot.empty() ||
                         !options.energy_csv.empty();
   if (pictures && !options.input.empty()) {
-    return "-g, -m, --movie, --energy-plot and --energy-csv picture a run; they cannot be "
-           "combined with grading (-i)";
+    fail(
+        "-g, -m, --movie, --energy-plot and --energy-csv picture a run; they cannot be "
+        "combined with grading (-i)");
   }
   if (!options.movie.empty()) {
-    if (auto problem = check_movie_settings(options.movie, movie_settings(options))) return problem;
+    check_movie_settings(options.movie, movie_settings(options));
     if (options.display_given && options.display == 1) {
-      return "--movie renders headless; leave out -d 1 (the window cannot record movies)";
+      fail("--movie renders headless; leave out -d 1 (the window cannot record movies)");
     }
     options.display = 0;
   }
   if (!options.window_screenshot.empty() && options.display == 0) {
-    return "--window-screenshot needs the window (-d 1)";
+    fail("--window-screenshot needs the window (-d 1)");
   }
-  return std::nullopt;
 }
 
 MovieSettings movie_settings(const Options& options) {
@@ -299,7 +302,6 @@ void add_options(CLI::App& app, Options& options) {
 
 void apply_overrides(const Options& options, Scene& scene) {
   SceneModel& model = scene.model;
-  const auto fail = [](const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); };
   if (options.duration) {
     if (!std::isfinite(*options.duration) || *options.duration < 0.0)
       fail("--duration must be a finite number >= 0, found " + to_text(*options.duration));
@@ -315,9 +317,7 @@ void apply_overrides(const Options& options, Scene& scene) {
     if (model.dim != 3) fail("--view and --orthographic apply to 3D scenes (<scene dim=\"3\">)");
     if (!scene.appearance.camera3d) scene.appearance.camera3d.emplace();
     OrbitViewSettings& view = *scene.appearance.camera3d;
-    if (!options.view.empty()) {
-      if (auto problem = parse_view(options.view, view)) fail(*problem);
-    }
+    if (!options.view.empty()) parse_view(options.view, view);
     if (options.orthographic) view.orthographic = true;
   }
 }

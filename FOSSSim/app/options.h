@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "core/expected.h"
 #include "core/scene.h"
 #include "pictures/movie_writer.h"
 
@@ -50,8 +49,8 @@ struct Options {
 void add_options(CLI::App& app, Options& options);
 
 /// Checks the picture options against each other and the mode, parses --size, and makes
-/// --movie run headless when -d was not given. Returns a message for a bad combination.
-std::optional<std::string> check_picture_options(Options& options);
+/// --movie run headless when -d was not given. Throws Error (kBadInput) for a bad combination.
+void check_picture_options(Options& options);
 
 /// The movie settings of --size and --fps.
 MovieSettings movie_settings(const Options& options);

@@ -9,31 +9,24 @@
 namespace fosssim {
 
 int run_grading(const Scene& scene, const Options& options) {
-  auto file = TrajectoryReader::open(options.input, scene.model.num_dofs());
-  if (!file) {
-    std::cerr << "FOSSSim: error: " << file.error() << "\n";
-    return kExitBadInput;
-  }
+  TrajectoryReader file = open_trajectory(options.input, scene.model);
   ProgressBar progress("grading", scene.model.num_steps(), !options.quiet && stderr_is_terminal());
-  auto report =
-      grade_trajectory(scene, *file, GradingCriteria{},
-                       [&progress](std::int64_t done, std::int64_t) { progress.update(done); });
-  progress.finish();
-  if (!report) {
-    std::cerr << "FOSSSim: error: " << options.input << ": " << report.error() << "\n";
-    return kExitBadInput;
+  GradeReport report;
+  try {
+    report =
+        grade_trajectory(scene, file, GradingCriteria{},
+                         [&progress](std::int64_t done, std::int64_t) { progress.update(done); });
+  } catch (const Error& error) {
+    progress.finish();
+    throw Error(error.kind(), options.input + ": " + error.what());
   }
-  return report_grade(scene, options, *report);
+  progress.finish();
+  return report_grade(scene, options, report);
 }
 
 int report_grade(const Scene& scene, const Options& options, const GradeReport& report) {
   print_grade_report(std::cout, report);
-  try {
-    write_residual_file(options.residual_file, report);
-  } catch (const std::runtime_error& error) {
-    std::cerr << "FOSSSim: error: " << error.what() << "\n";
-    return kExitIoError;
-  }
+  write_residual_file(options.residual_file, report);
   if (!report.passed()) {
     std::cerr << describe_failure(report, scene.model.dim);
     return kExitGradingFailed;

@@ -21,48 +21,49 @@ std::string kept_note(FrameOutputs& outputs) {
 }  // namespace
 
 int run_headless(const Scene& scene, const Options& options) {
-  auto opened = FrameOutputs::open(scene, options);
-  if (!opened) {
-    std::cerr << "FOSSSim: error: " << opened.error() << "\n";
-    return kExitIoError;
-  }
-  FrameOutputs& outputs = *opened;
-  Simulation simulation(scene.model, scene.initial, scripted_additions(scene));
-  SceneView view(scene, simulation.state(), options.width, options.height);
-  ProgressBar progress("simulating", scene.model.num_steps(),
-                       !options.quiet && stderr_is_terminal());
+  FrameOutputs outputs = FrameOutputs::open(scene, options);
   try {
-    outputs.write(simulation.state(), view);
-    while (!simulation.finished()) {
-      if (interrupt_requested()) {
-        progress.finish();
-        std::cerr << "FOSSSim: interrupted at step " << simulation.state().step
-                  << kept_note(outputs) << "\n";
-        return kExitInterrupted;
-      }
-      simulation.step();
-      view.record(simulation.state());
+    Simulation simulation(scene.model, scene.initial, scripted_additions(scene));
+    SceneView view(scene, simulation.state(), options.width, options.height);
+    ProgressBar progress("simulating", scene.model.num_steps(),
+                         !options.quiet && stderr_is_terminal());
+    try {
       outputs.write(simulation.state(), view);
-      progress.update(simulation.state().step);
+      while (!simulation.finished()) {
+        if (interrupt_requested()) {
+          progress.finish();
+          std::cerr << "FOSSSim: interrupted at step " << simulation.state().step
+                    << kept_note(outputs) << "\n";
+          return kExitInterrupted;
+        }
+        simulation.step();
+        view.record(simulation.state());
+        outputs.write(simulation.state(), view, &simulation.last_record());
+        progress.update(simulation.state().step);
+      }
+      progress.finish();
+      outputs.commit();
+    } catch (const Error&) {
+      progress.finish();
+      throw;
     }
-    progress.finish();
-    outputs.commit();
+    for (const std::string& note : simulation.integrator().notes()) {
+      std::cerr << "FOSSSim: note: " << note << "\n";
+    }
+    if (!outputs.empty() && !options.quiet && stderr_is_terminal()) {
+      std::cerr << "FOSSSim: wrote " << outputs.describe() << "\n";
+    }
+    std::cout << "Simulation complete at time " << simulation.state().time << ". Exiting."
+              << std::endl;
+    return kExitOk;
   } catch (const StepError& error) {
-    progress.finish();
     std::cerr << "FOSSSim: error: " << scene.source << ": " << error.what() << kept_note(outputs)
               << "\n";
     return kExitSimulationFailed;
-  } catch (const std::runtime_error& error) {
-    progress.finish();
+  } catch (const Error& error) {
     std::cerr << "FOSSSim: error: " << error.what() << kept_note(outputs) << "\n";
-    return kExitIoError;
+    return exit_status(error.kind());
   }
-  for (const std::string& note : simulation.integrator().notes()) {
-    std::cerr << "FOSSSim: note: " << note << "\n";
-  }
-  std::cout << "Simulation complete at time " << simulation.state().time << ". Exiting."
-            << std::endl;
-  return kExitOk;
 }
 
 }  // namespace fosssim

@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "app/frame_outputs.h"
 #include "app/interrupt.h"
+#include "app/progress_bar.h"
 #include "cli/exit_codes.h"
 #include "io/trajectory_file.h"
 #include "viewer/stepper.h"
@@ -29,12 +30,7 @@ WindowSettings window_settings(const Scene& scene, const Options& options) {
 /// Runs the scene in the window, feeding the outputs of -o, -g, -m and --energy-*; the mouse
 /// can pull particles with the drag spring of ParticleGrab, an interaction force of the run.
 int run_simulation_window(const Scene& scene, const Options& options) {
-  auto opened = FrameOutputs::open(scene, options);
-  if (!opened) {
-    std::cerr << "FOSSSim: error: " << opened.error() << "\n";
-    return kExitIoError;
-  }
-  FrameOutputs& outputs = *opened;
+  FrameOutputs outputs = FrameOutputs::open(scene, options);
   ParticleGrab grab(scene);
   SimulationStepper stepper(scene, {&grab.force()});
   SceneView view(scene, stepper.state(), options.width, options.height);
@@ -49,22 +45,25 @@ int run_simulation_window(const Scene& scene, const Options& options) {
     if (!outputs_open) return;
     try {
       action();
-    } catch (const std::runtime_error& error) {
+    } catch (const Error& error) {
       std::cerr << "FOSSSim: error: " << error.what() << "\n";
       close_outputs("the outputs were stopped");
-      status = kExitIoError;
+      status = exit_status(error.kind());
     }
   };
   guarded([&] { outputs.write(stepper.state(), view); });
 
   WindowEvents events;
   events.stepped = [&](const State& state, const SceneView& v) {
-    guarded([&] { outputs.write(state, v); });
+    guarded([&] { outputs.write(state, v, &stepper.simulation().last_record()); });
   };
   events.finished = [&] {
     guarded([&] {
       outputs.commit();
       outputs_open = false;
+      if (!outputs.empty() && !options.quiet && stderr_is_terminal()) {
+        std::cerr << "FOSSSim: wrote " << outputs.describe() << "\n";
+      }
     });
     for (const std::string& note : stepper.simulation().integrator().notes()) {
       std::cerr << "FOSSSim: note: " << note << "\n";
@@ -78,11 +77,7 @@ int run_simulation_window(const Scene& scene, const Options& options) {
   };
   WindowSettings settings = window_settings(scene, options);
   settings.grab = &grab;
-  auto outcome = run_window(stepper, view, settings, events);
-  if (!outcome) {
-    std::cerr << "FOSSSim: error: " << outcome.error() << "\n";
-    return kExitBadInput;
-  }
+  run_window(stepper, view, settings, events);
   const std::string when = " at step " + std::to_string(stepper.state().step);
   if (interrupt_requested()) {
     if (outputs_open)
@@ -98,17 +93,14 @@ int run_simulation_window(const Scene& scene, const Options& options) {
 /// Replays the -i trajectory in the window, ringing the particles where it disagrees with the
 /// reference; prints the course's report when the last step has been graded.
 int run_grading_window(const Scene& scene, const Options& options) {
-  auto file = TrajectoryReader::open(options.input, scene.model.num_dofs());
-  if (!file) {
-    std::cerr << "FOSSSim: error: " << file.error() << "\n";
-    return kExitBadInput;
-  }
-  auto grader = StepGrader::open(scene, *file);
-  if (!grader) {
-    std::cerr << "FOSSSim: error: " << options.input << ": " << grader.error() << "\n";
-    return kExitBadInput;
-  }
-  GradingStepper stepper(std::move(grader).value());
+  TrajectoryReader file = open_trajectory(options.input, scene.model);
+  GradingStepper stepper = [&] {
+    try {
+      return GradingStepper(StepGrader::open(scene, file));
+    } catch (const Error& error) {
+      throw Error(error.kind(), options.input + ": " + error.what());
+    }
+  }();
   SceneView view(scene, stepper.state(), options.width, options.height);
   std::optional<int> status;
   WindowEvents events;
@@ -116,11 +108,7 @@ int run_grading_window(const Scene& scene, const Options& options) {
   events.failed = [&](const StepError&) {
     status = report_grade(scene, options, stepper.grader().report());
   };
-  auto outcome = run_window(stepper, view, window_settings(scene, options), events);
-  if (!outcome) {
-    std::cerr << "FOSSSim: error: " << outcome.error() << "\n";
-    return kExitBadInput;
-  }
+  run_window(stepper, view, window_settings(scene, options), events);
   if (!status) {
     std::cerr << "FOSSSim: the window was closed at step " << stepper.state().step << " of "
               << stepper.grader().report().steps << ", before grading finished; no grade\n";
@@ -132,10 +120,7 @@ int run_grading_window(const Scene& scene, const Options& options) {
 }  // namespace
 
 int run_window(const Scene& scene, const Options& options) {
-  if (auto problem = check_display()) {
-    std::cerr << "FOSSSim: error: " << *problem << "\n";
-    return kExitBadInput;
-  }
+  check_display();
   if (!options.input.empty()) return run_grading_window(scene, options);
   return run_simulation_window(scene, options);
 }

@@ -2,6 +2,8 @@
 // What the exit status of a FOSSSim program means: FOSSSim, FOSSSim-generate and fosssim-oracle
 // share these numbers.
 
+#include "core/error.h"
+
 namespace fosssim {
 
 /// Exit statuses (FOSSSim lists them in --help, fosssim-oracle in docs/grading.md).
@@ -13,5 +15,20 @@ enum ExitCode : int {
   kExitIoError = 4,           ///< an output file could not be written
   kExitInterrupted = 130,     ///< stopped by Ctrl-C; partial output kept as *.incomplete
 };
+
+/// The exit status for a failure of this kind: bad input and something missing here (a
+/// display, ffmpeg) 2, a failed step 3, an output that cannot be written 4.
+constexpr ExitCode exit_status(ErrorKind kind) {
+  switch (kind) {
+    case ErrorKind::kBadInput:
+    case ErrorKind::kUnavailable:
+      return kExitBadInput;
+    case ErrorKind::kStepFailed:
+      return kExitSimulationFailed;
+    case ErrorKind::kCannotWrite:
+      return kExitIoError;
+  }
+  return kExitBadInput;
+}
 
 }  // namespace fosssim

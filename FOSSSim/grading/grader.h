@@ -11,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include "core/expected.h"
 #include "core/scene.h"
 #include "io/trajectory_file.h"
 
@@ -46,6 +45,26 @@ struct FirstDivergence {
   Vector previous_position, previous_velocity;    ///< the file's frame `step - 1`, the start
 };
 
+/// The comparison of a step's collisions, polynomials and sync record (docs/collisions.md,
+/// 'Grading'), for trajectories whose layout has them.
+struct CollisionGrade {
+  /// The course's report lines, in the order found: "  Missed collision: Particle 0 - Particle 1
+  /// with normal = 0.4 0", "Wrong number of polynomials!", and FOSSSim's own sync-record lines.
+  std::vector<std::string> lines;
+  std::int64_t missed = 0;
+  std::int64_t superfluous = 0;
+  std::int64_t wrong_normal = 0;
+  std::int64_t polynomial_failures = 0;  ///< steps whose polynomial log is wrong
+  std::int64_t sync_failures = 0;        ///< steps whose sync record differs from FOSSSim's
+  double max_sync_residual = 0.0;       ///< max over steps and particles of ‖Δx‖ and ‖Δv‖
+  std::int64_t first_failing_step = 0;  ///< 0 when every step passed
+
+  bool passed() const {
+    return missed == 0 && superfluous == 0 && wrong_normal == 0 && polynomial_failures == 0 &&
+           sync_failures == 0;
+  }
+};
+
 struct GradeReport {
   GradingCriteria criteria;
   std::int64_t steps = 0;
@@ -58,6 +77,9 @@ struct GradeReport {
   /// Set when the reference integrator could not take a step from the file's state; the
   /// comparison stops there and the grade is a failure.
   std::optional<std::string> reference_failure;
+  /// Set when the trajectory's layout records collisions (collision types simple,
+  /// continuous-time and hybrid); it must pass too.
+  std::optional<CollisionGrade> collisions;
 
   bool accumulated_position_passed() const;
   bool accumulated_velocity_passed() const;
@@ -91,14 +113,15 @@ std::array<Criterion, 4> criteria_of(const GradeReport& report);
 using GradingProgress = std::function<void(std::int64_t, std::int64_t)>;
 
 /// Grades `file` against `scene`: for every step k overwrites the state with frame k-1, takes one
-/// reference step and compares with frame k, for every particle (fixed ones included). Fails
-/// (returns the message) when the file does not hold exactly num_steps() + 1 frames.
-Expected<GradeReport, std::string> grade_trajectory(const Scene& scene, TrajectoryReader& file,
-                                                    const GradingCriteria& criteria = {},
-                                                    const GradingProgress& progress = {});
+/// reference step and compares with frame k, for every particle (fixed ones included). Throws
+/// Error (kBadInput) when the file does not hold exactly num_steps() + 1 frames.
+GradeReport grade_trajectory(const Scene& scene, TrajectoryReader& file,
+                             const GradingCriteria& criteria = {},
+                             const GradingProgress& progress = {});
 
-/// Prints the course's report lines: four "<criterion>: <value>   Passed." lines, then
-/// "Overall success: Passed." or "Failed.".
+/// Prints the course's report lines: the collision report's lines (if any), four
+/// "<criterion>: <value>   Passed." lines, "Collisions Passed: Yes." or "No." for trajectories
+/// with collisions, then "Overall success: Passed." or "Failed.".
 void print_grade_report(std::ostream& out, const GradeReport& report);
 
 /// Writes residual.txt: one "<1|0>   <value>" line per criterion, in the report's order. The file

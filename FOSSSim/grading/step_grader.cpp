@@ -1,6 +1,8 @@
 #include "grading/step_grader.h"
 
 #include "core/step_error.h"
+#include "core/text.h"
+#include "grading/collision_grading.h"
 #include "scripting/step_hooks.h"
 
 namespace fosssim {
@@ -11,17 +13,20 @@ StepGrader::StepGrader(const Scene& scene, TrajectoryReader& file, const Grading
   report_.criteria = criteria;
   report_.steps = scene.model.num_steps();
   report_.per_step.reserve(static_cast<std::size_t>(report_.steps));
+  if (file.layout() != TrajectoryLayout::kFrames) report_.collisions.emplace();
   file.read_frame(0, file_state_.q, file_state_.v);
 }
 
-Expected<StepGrader, std::string> StepGrader::open(const Scene& scene, TrajectoryReader& file,
-                                                   const GradingCriteria& criteria) {
+StepGrader StepGrader::open(const Scene& scene, TrajectoryReader& file,
+                            const GradingCriteria& criteria) {
   const std::int64_t steps = scene.model.num_steps();
   if (file.num_frames() != steps + 1) {
-    return "the trajectory has " + std::to_string(file.num_frames()) +
-           " frames, but the scene takes " + std::to_string(steps) + " steps and so needs " +
-           std::to_string(steps + 1) + " (the initial state and one frame per step)" +
-           (file.num_frames() < steps + 1 ? "; the file was cut short" : "");
+    throw Error(ErrorKind::kBadInput,
+                "the trajectory has " + std::to_string(file.num_frames()) +
+                    " frames, but the scene takes " + std::to_string(steps) +
+                    " steps and so needs " + std::to_string(steps + 1) +
+                    " (the initial state and one frame per step)" +
+                    (file.num_frames() < steps + 1 ? "; the file was cut short" : ""));
   }
   return StepGrader(scene, file, criteria);
 }
@@ -40,7 +45,7 @@ bool StepGrader::grade_next_step() {
   reference.step = k - 1;
   reference.time = static_cast<double>(k - 1) * model.integrator.dt;
   try {
-    pipeline_.step(reference);
+    pipeline_.step(reference, &record_);
   } catch (const StepError& error) {
     report_.reference_failure = std::string("the reference integrator failed at ") + error.what();
     return false;
@@ -50,7 +55,40 @@ bool StepGrader::grade_next_step() {
   file_state_.step = k;
   file_state_.time = reference.time;
   compare(reference, previous_q, previous_v);
+  if (report_.collisions) compare_records(k);
   return true;
+}
+
+void StepGrader::compare_records(std::int64_t step) {
+  CollisionGrade& grade = *report_.collisions;
+  const bool passed_before = grade.passed();
+  TrajectoryRecord written;
+  file_->read_record(step, written);
+  compare_collisions(record_.collisions, written.collisions, grade);
+  if (file_->layout() == TrajectoryLayout::kCollisionsAndPolynomials) {
+    if (!compare_polynomials(record_.polynomials, written.polynomials, grade.lines)) {
+      ++grade.polynomial_failures;
+    }
+    TrajectoryRecord sync;
+    file_->read_sync_record(step, sync);
+    const int dim = scene_->model.dim;
+    const Vector& q = record_.sync ? record_.sync->q : file_state_.q;
+    const Vector& v = record_.sync ? record_.sync->v : file_state_.v;
+    double worst = 0.0;
+    for (int p = 0; p < scene_->model.num_particles(); ++p) {
+      for (double r : {(sync.q.segment(dim * p, dim) - q.segment(dim * p, dim)).norm(),
+                       (sync.v.segment(dim * p, dim) - v.segment(dim * p, dim)).norm()}) {
+        if (replaces_maximum(r, worst)) worst = r;
+      }
+    }
+    if (replaces_maximum(worst, grade.max_sync_residual)) grade.max_sync_residual = worst;
+    if (!below_limit(worst, report_.criteria.maximum_limit)) {
+      ++grade.sync_failures;
+      grade.lines.push_back("  Sync record of step " + std::to_string(step) +
+                            " differs from FOSSSim's by " + to_text(worst));
+    }
+  }
+  if (passed_before && !grade.passed()) grade.first_failing_step = step;
 }
 
 void StepGrader::compare(const State& reference, const Vector& previous_q,

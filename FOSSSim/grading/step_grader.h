@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/expected.h"
+#include "core/error.h"
 #include "core/scene.h"
 #include "core/step/step_pipeline.h"
 #include "grading/grader.h"
@@ -20,13 +20,17 @@ namespace fosssim {
 /// pipeline (core/step/step_pipeline.h: the integrator, then the stages a run has, such as the
 /// scene tag's hook) and compares with the file's frame k, for every particle, fixed ones
 /// included. Non-finite reference states are compared, not rejected.
+/// Trajectories whose layout records collisions (docs/collisions.md) are also compared step by
+/// step on their collisions (as sets, normals to 1e-9), their polynomial logs (up to a positive
+/// factor) and their sync records, against FOSSSim's own sync state (FOSSSim's addition: the
+/// course's grader adopts the file's sync record instead).
 /// The report accumulates over the steps graded so far.
 class StepGrader {
  public:
-  /// Starts grading. `scene` and `file` must outlive the grader. Fails (returns the message)
-  /// when the file does not hold exactly num_steps() + 1 frames.
-  static Expected<StepGrader, std::string> open(const Scene& scene, TrajectoryReader& file,
-                                                const GradingCriteria& criteria = {});
+  /// Starts grading. `scene` and `file` must outlive the grader. Throws Error (kBadInput) when
+  /// the file does not hold exactly num_steps() + 1 frames (the message does not name the file).
+  static StepGrader open(const Scene& scene, TrajectoryReader& file,
+                         const GradingCriteria& criteria = {});
 
   /// Grades the next step. Returns false, grading nothing, once every step is graded or the
   /// reference integrator has failed (report().reference_failure says why).
@@ -51,10 +55,12 @@ class StepGrader {
  private:
   StepGrader(const Scene& scene, TrajectoryReader& file, const GradingCriteria& criteria);
   void compare(const State& reference, const Vector& previous_q, const Vector& previous_v);
+  void compare_records(std::int64_t step);
 
   const Scene* scene_;
   TrajectoryReader* file_;
   StepPipeline pipeline_;
+  StepRecord record_;  // what the reference step reported
   GradeReport report_;
   State file_state_;
   std::vector<double> position_residuals_, velocity_residuals_;

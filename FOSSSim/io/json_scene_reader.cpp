@@ -26,16 +26,19 @@ int line_of(std::string_view text, std::size_t offset) {
 
 class JsonSceneParser;
 
-/// The integrator options a JSON scene may set, as its top-level keys. Only "iterations" is
-/// one today; the others are fixed by the format (JsonSceneDefaults).
+/// The integrator options a JSON scene may set, as its top-level keys: "iterations" and
+/// "start"; the others are fixed by the format (JsonSceneDefaults).
 class KeyOptions final : public OptionSource {
  public:
   KeyOptions(JsonSceneParser& parser, const json& root) : parser_(parser), root_(root) {}
   bool has(std::string_view name) override {
-    return name == "iterations" && root_.contains(std::string(name));
+    return (name == "iterations" || name == "start") && root_.contains(std::string(name));
   }
   double number(std::string_view name) override;
-  std::string text(std::string_view name) override { return root_.at(std::string(name)).dump(); }
+  std::string text(std::string_view name) override {
+    const json& value = root_.at(std::string(name));
+    return value.is_string() ? value.get<std::string>() : value.dump();
+  }
   [[noreturn]] void fail(std::string_view name, const std::string& problem) override;
 
  private:
@@ -52,7 +55,7 @@ class JsonSceneParser {
       fail("the file must hold a JSON object such as {\"obj\": \"cloth.obj\", \"k\": 1000}");
     for (const auto& [key, value] : root.items()) {
       if (key != "obj" && key != "k" && key != "b" && key != "m" && key != "h" &&
-          key != "iterations" && key != "duration") {
+          key != "iterations" && key != "start" && key != "duration") {
         scene_.warnings.push_back(name_ + ": warning: unknown key \"" + key + "\" ignored");
       }
     }
@@ -65,6 +68,7 @@ class JsonSceneParser {
     model.integrator.use(integrator_method("local-global"));
     model.integrator.dt = positive(root, "h", JsonSceneDefaults::kTimeStep);
     model.integrator.options.set("iterations", JsonSceneDefaults::kIterations);
+    model.integrator.options.set("start", JsonSceneDefaults::kStart);
     model.integrator.options.set("pins", "penalty");
     model.integrator.options.set("penalty", JsonSceneDefaults::kPenalty);
     KeyOptions options(*this, root);
@@ -74,12 +78,16 @@ class JsonSceneParser {
     const Mesh mesh = read_mesh(root);
     MeshMaterial material;
     material.k = non_negative(root, "k", -1.0);
-    material.mass = root.contains("m") ? MassRule{MassRule::kUniform, positive(root, "m", 0.0)}
-                                       : MassRule{MassRule::kArea, JsonSceneDefaults::kAreaDensity};
-    auto springs =
-        append_mesh(scene_, mesh, material, pinned(root, mesh.num_vertices()), "obj mesh");
-    if (!springs) fail(springs.error());
-    model.forces.push_back(std::move(springs).value());
+    material.mass = root.contains("m")
+                        ? MassRule{MassRule::kUniform, positive(root, "m", 0.0)}
+                        : MassRule{MassRule::kVoronoi, JsonSceneDefaults::kAreaDensity};
+    std::unique_ptr<Force> springs;
+    try {
+      springs = append_mesh(scene_, mesh, material, pinned(root, mesh.num_vertices()), "obj mesh");
+    } catch (const Error& error) {
+      fail(error.what());
+    }
+    model.forces.push_back(std::move(springs));
     model.forces.push_back(
         std::make_unique<ConstantForce<3>>(Vec<3>(0.0, JsonSceneDefaults::kGravity, 0.0)));
     return std::move(scene_);
@@ -167,9 +175,9 @@ void KeyOptions::fail(std::string_view name, const std::string& problem) {
 
 }  // namespace
 
-Expected<Scene, SceneError> load_json_scene_text(std::string_view text, const std::string& name) {
+Scene load_json_scene_text(std::string_view text, const std::string& name) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
-    return SceneError(name, 0, "", "the file is empty (expected a JSON object)");
+    throw SceneError(name, 0, "", "the file is empty (expected a JSON object)");
   }
   json root;
   try {
@@ -178,14 +186,14 @@ Expected<Scene, SceneError> load_json_scene_text(std::string_view text, const st
     std::string what = error.what();
     if (const auto colon = what.find("syntax error"); colon != std::string::npos)
       what = what.substr(colon);
-    return SceneError(name, line_of(text, error.byte == 0 ? 0 : error.byte - 1), "",
-                      "not valid JSON: " + what);
+    throw SceneError(name, line_of(text, error.byte == 0 ? 0 : error.byte - 1), "",
+                     "not valid JSON: " + what);
   }
-  return catch_scene_error<Scene>([&] { return JsonSceneParser(name).parse(root); });
+  return JsonSceneParser(name).parse(root);
 }
 
-Expected<Scene, SceneError> load_json_scene_file(const std::string& path) {
-  return parse_text_file<Scene>(path, load_json_scene_text);
+Scene load_json_scene_file(const std::string& path) {
+  return parse_text_file(path, load_json_scene_text);
 }
 
 }  // namespace fosssim

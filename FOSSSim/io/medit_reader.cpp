@@ -172,12 +172,10 @@ class MeditParser {
 
 }  // namespace
 
-Expected<Mesh, SceneError> read_medit_text(std::string_view text, const std::string& name) {
-  return catch_scene_error<Mesh>([&] { return MeditParser(text, name).parse(); });
+Mesh read_medit_text(std::string_view text, const std::string& name) {
+  return MeditParser(text, name).parse();
 }
 
-Expected<Mesh, SceneError> read_medit_file(const std::string& path) {
-  return parse_text_file<Mesh>(path, read_medit_text);
-}
+Mesh read_medit_file(const std::string& path) { return parse_text_file(path, read_medit_text); }
 
 }  // namespace fosssim

@@ -4,7 +4,6 @@
 #include <string>
 #include <string_view>
 
-#include "core/expected.h"
 #include "io/scene_error.h"
 #include "mesh/mesh.h"
 
@@ -22,10 +21,10 @@ namespace fosssim {
 /// read and ignored (the surface to draw is the tets' boundary). Errors name file, line and
 /// problem: an unknown keyword, a dimension other than 3, a missing or malformed count or
 /// number, a file that ends inside a section, an index out of range, a tet with a repeated
-/// vertex or zero volume, no vertices or no tets.
-Expected<Mesh, SceneError> read_medit_file(const std::string& path);
+/// vertex or zero volume, no vertices or no tets (thrown as SceneError).
+Mesh read_medit_file(const std::string& path);
 
 /// Reads MEDIT text; `name` stands for the file in messages.
-Expected<Mesh, SceneError> read_medit_text(std::string_view text, const std::string& name);
+Mesh read_medit_text(std::string_view text, const std::string& name);
 
 }  // namespace fosssim

@@ -93,11 +93,13 @@ MassRule read_mass_rule(ElementReader& r) {
   const std::string kind = r.has("mass") ? r.text("mass") : "uniform";
   if (kind == "uniform") return {MassRule::kUniform, r.positive("m")};
   if (kind == "total") return {MassRule::kTotal, r.positive("total")};
-  if (kind == "area") return {MassRule::kArea, r.positive("density")};
+  // "area" is the older name of "barycentric".
+  if (kind == "barycentric" || kind == "area") return {MassRule::kArea, r.positive("density")};
+  if (kind == "voronoi") return {MassRule::kVoronoi, r.positive("density")};
   if (kind == "volume") return {MassRule::kVolume, r.positive("density")};
   r.fail("mass",
-         "must be \"uniform\" (with m), \"total\" (with total), \"area\" or \"volume\" (with "
-         "density), found \"" +
+         "must be \"uniform\" (with m), \"total\" (with total), \"barycentric\" (or \"area\"), "
+         "\"voronoi\" or \"volume\" (with density), found \"" +
              kind + "\"");
 }
 
@@ -189,9 +191,13 @@ std::vector<std::unique_ptr<Force>> read_mesh_elements(const XMLElement& root, S
     }
     std::sort(mesh.pinned.begin(), mesh.pinned.end());
     mesh.pinned.erase(std::unique(mesh.pinned.begin(), mesh.pinned.end()), mesh.pinned.end());
-    auto force = append_mesh(scene, mesh.mesh, material, mesh.pinned, mesh.label);
-    if (!force) r.fail(force.error());
-    forces.push_back(std::move(force).value());
+    std::unique_ptr<Force> force;
+    try {
+      force = append_mesh(scene, mesh.mesh, material, mesh.pinned, mesh.label);
+    } catch (const Error& error) {
+      r.fail(error.what());
+    }
+    forces.push_back(std::move(force));
     for (auto& warning : r.unknown_attribute_warnings()) scene.warnings.push_back(warning);
   }
   return forces;

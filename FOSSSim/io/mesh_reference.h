@@ -17,12 +17,11 @@ Mesh read_referenced_mesh(const std::string& scene_file, const std::string& name
                           const std::string& context) {
   std::filesystem::path path(name);
   if (path.is_relative()) path = std::filesystem::path(scene_file).parent_path() / path;
-  auto mesh = reader(path.string());
-  if (!mesh) {
-    const SceneError& e = mesh.error();
+  try {
+    return reader(path.string());
+  } catch (const SceneError& e) {
     throw SceneError(e.file(), e.line(), e.element(), e.problem() + " (" + context + ")");
   }
-  return std::move(mesh).value();
 }
 
 }  // namespace fosssim

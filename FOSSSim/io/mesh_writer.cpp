@@ -13,8 +13,8 @@ void write_vertex_line(std::ostream& out, const char* keyword, const Eigen::Vect
 
 }  // namespace
 
-std::optional<std::string> write_obj_file(const std::string& path, const Mesh& mesh) {
-  return write_output_file(path, [&mesh](std::ostream& out) {
+void write_obj_file(const std::string& path, const Mesh& mesh) {
+  write_output_file(path, [&mesh](std::ostream& out) {
     out << "# written by FOSSSim: " << mesh.num_vertices() << " vertices, " << mesh.faces.size()
         << " faces, " << mesh.segments.size() << " extra springs (l)\n";
     for (const auto& x : mesh.vertices) {
@@ -30,8 +30,8 @@ std::optional<std::string> write_obj_file(const std::string& path, const Mesh& m
   });
 }
 
-std::optional<std::string> write_medit_file(const std::string& path, const Mesh& mesh) {
-  return write_output_file(path, [&mesh](std::ostream& out) {
+void write_medit_file(const std::string& path, const Mesh& mesh) {
+  write_output_file(path, [&mesh](std::ostream& out) {
     out << "MeshVersionFormatted 2\nDimension 3\n\nVertices\n" << mesh.num_vertices() << '\n';
     for (const auto& x : mesh.vertices) {
       write_vertex_line(out, "", x);

@@ -1,7 +1,6 @@
 #pragma once
 // Writes meshes as OBJ and MEDIT files, the formats the readers take.
 
-#include <optional>
 #include <string>
 
 #include "mesh/mesh.h"
@@ -11,11 +10,11 @@ namespace fosssim {
 /// Writes the mesh's vertices, faces ("f", 1-based) and segments ("l a b") as OBJ; tets
 /// cannot be written in OBJ and are left out. Numbers are written in their shortest exact form,
 /// so reading the file back gives the same mesh. The file appears only when complete (written
-/// to "<path>.partial", then renamed). Returns an error message, or nothing on success.
-std::optional<std::string> write_obj_file(const std::string& path, const Mesh& mesh);
+/// to "<path>.partial", then renamed). Throws Error (kCannotWrite) when it cannot be written.
+void write_obj_file(const std::string& path, const Mesh& mesh);
 
 /// Writes the mesh's vertices and tets as an ASCII MEDIT file (MeshVersionFormatted 2,
 /// Dimension 3, reference numbers 0), likewise exact and complete-or-absent.
-std::optional<std::string> write_medit_file(const std::string& path, const Mesh& mesh);
+void write_medit_file(const std::string& path, const Mesh& mesh);
 
 }  // namespace fosssim

@@ -150,12 +150,10 @@ class ObjParser {
 
 }  // namespace
 
-Expected<Mesh, SceneError> read_obj_text(std::string_view text, const std::string& name) {
-  return catch_scene_error<Mesh>([&] { return ObjParser(name).parse(text); });
+Mesh read_obj_text(std::string_view text, const std::string& name) {
+  return ObjParser(name).parse(text);
 }
 
-Expected<Mesh, SceneError> read_obj_file(const std::string& path) {
-  return parse_text_file<Mesh>(path, read_obj_text);
-}
+Mesh read_obj_file(const std::string& path) { return parse_text_file(path, read_obj_text); }
 
 }  // namespace fosssim

@@ -4,7 +4,6 @@
 #include <string>
 #include <string_view>
 
-#include "core/expected.h"
 #include "io/scene_error.h"
 #include "mesh/mesh.h"
 
@@ -19,10 +18,11 @@ namespace fosssim {
 /// counts back from the last vertex read so far. vt, vn, vp, o, g, s, usemtl, mtllib and
 /// comments (#) are ignored. Anything else is an error naming file, line and problem: an
 /// unknown statement, a malformed or non-finite number, an index of 0 or past the last
-/// vertex, a corner repeated within a face, a face of one corner, a file without vertices.
-Expected<Mesh, SceneError> read_obj_file(const std::string& path);
+/// vertex, a corner repeated within a face, a face of one corner, a file without vertices
+/// (thrown as SceneError).
+Mesh read_obj_file(const std::string& path);
 
 /// Reads OBJ text; `name` stands for the file in messages.
-Expected<Mesh, SceneError> read_obj_text(std::string_view text, const std::string& name);
+Mesh read_obj_text(std::string_view text, const std::string& name);
 
 }  // namespace fosssim

@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "core/error.h"
+
 namespace fs = std::filesystem;
 
 namespace fosssim {
@@ -35,8 +37,8 @@ void OutputFile::commit() const {
   fs::rename(write_path_, final_path_, error);
   if (!error) return;
   discard();
-  throw std::runtime_error("cannot rename " + write_path_ + " to " + final_path_ + ": " +
-                           error.message());
+  throw Error(ErrorKind::kCannotWrite,
+              "cannot rename " + write_path_ + " to " + final_path_ + ": " + error.message());
 }
 
 std::string OutputFile::keep_unfinished(const std::string& suffix) const {
@@ -53,41 +55,40 @@ void OutputFile::discard() const {
   fs::remove(write_path_, ignored);
 }
 
-std::optional<std::string> write_output_file(const std::string& path, const std::string& content) {
+void write_output_file(const std::string& path, const std::string& content) {
   const OutputFile output(path);
   const std::string& name = output.write_path();
-  const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) return "cannot create " + name + ": " + std::strerror(errno);
   const auto fail = [&](const char* reason) {
+    throw Error(ErrorKind::kCannotWrite, "cannot write " + name + ": " + reason);
+  };
+  const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    throw Error(ErrorKind::kCannotWrite, "cannot create " + name + ": " + std::strerror(errno));
+  }
+  const auto fail_open = [&](const char* reason) {
     ::close(fd);
     output.discard();
-    return "cannot write " + name + ": " + reason;
+    fail(reason);
   };
   std::size_t written = 0;
   while (written < content.size()) {
     const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return fail(std::strerror(errno));
+    if (n <= 0) fail_open(std::strerror(errno));
     written += static_cast<std::size_t>(n);
   }
-  if (!output.in_place() && ::fsync(fd) != 0) return fail(std::strerror(errno));
+  if (!output.in_place() && ::fsync(fd) != 0) fail_open(std::strerror(errno));
   if (::close(fd) != 0) {
     output.discard();
-    return "cannot write " + name + ": " + std::strerror(errno);
+    fail(std::strerror(errno));
   }
-  try {
-    output.commit();
-  } catch (const std::runtime_error& error) {
-    return error.what();
-  }
-  return std::nullopt;
+  output.commit();
 }
 
-std::optional<std::string> write_output_file(const std::string& path,
-                                             const std::function<void(std::ostream&)>& body) {
+void write_output_file(const std::string& path, const std::function<void(std::ostream&)>& body) {
   std::ostringstream content;
   body(content);
-  return write_output_file(path, content.str());
+  write_output_file(path, content.str());
 }
 
 }  // namespace fosssim

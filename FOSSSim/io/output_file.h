@@ -2,7 +2,6 @@
 // Outputs appear whole or not at all, without ever replacing a device or a link.
 
 #include <functional>
-#include <optional>
 #include <ostream>
 #include <string>
 
@@ -23,8 +22,8 @@ class OutputFile {
   /// True when the output is written directly (a device or FIFO), without rename.
   bool in_place() const { return in_place_; }
 
-  /// Renames the finished temporary file into place; nothing in place. Throws
-  /// std::runtime_error naming both names and the reason (the temporary file is then removed).
+  /// Renames the finished temporary file into place; nothing in place. Throws Error
+  /// (kCannotWrite) naming both names and the reason (the temporary file is then removed).
   void commit() const;
   /// Keeps an unfinished output as "<final path><suffix>" and returns that name; in place,
   /// returns the path written to. Returns "" when there was nothing to keep.
@@ -38,12 +37,11 @@ class OutputFile {
 };
 
 /// Writes `content` to `path` through an OutputFile (a regular file is also flushed to disk
-/// before the rename). Returns a message naming the file and the system's reason, or nothing
-/// on success; a failed output leaves no file behind.
-std::optional<std::string> write_output_file(const std::string& path, const std::string& content);
+/// before the rename). Throws Error (kCannotWrite) naming the file and the system's reason; a
+/// failed output leaves no file behind.
+void write_output_file(const std::string& path, const std::string& content);
 
 /// The same for what `body` streams.
-std::optional<std::string> write_output_file(const std::string& path,
-                                             const std::function<void(std::ostream&)>& body);
+void write_output_file(const std::string& path, const std::function<void(std::ostream&)>& body);
 
 }  // namespace fosssim

@@ -14,7 +14,7 @@ std::string format_message(const std::string& file, int line, const std::string&
 }  // namespace
 
 SceneError::SceneError(std::string file, int line, std::string element, std::string problem)
-    : std::runtime_error(format_message(file, line, element, problem)),
+    : Error(ErrorKind::kBadInput, format_message(file, line, element, problem)),
       file_(std::move(file)),
       line_(line),
       element_(std::move(element)),

@@ -1,13 +1,15 @@
 #pragma once
 
-#include <stdexcept>
 #include <string>
+
+#include "core/error.h"
 
 namespace fosssim {
 
-/// A problem with a scene file, located as precisely as the file allows:
+/// A problem with an input file (scene, mesh), located as precisely as the file allows:
 ///   "scene.xml:7: error: <particle> 2: attribute "m" must be positive, found "-1""
-class SceneError : public std::runtime_error {
+/// An Error of kind kBadInput.
+class SceneError : public Error {
  public:
   /// line 0 means "no line" (a missing or empty file); element may be empty.
   SceneError(std::string file, int line, std::string element, std::string problem);

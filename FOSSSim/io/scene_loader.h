@@ -4,7 +4,6 @@
 #include <string>
 #include <string_view>
 
-#include "core/expected.h"
 #include "core/scene.h"
 #include "io/scene_error.h"
 
@@ -12,12 +11,12 @@ namespace fosssim {
 
 /// Loads a scene file. Every malformed input (missing file, empty file, not XML, unknown
 /// element, missing or non-numeric attribute, index out of range, non-positive mass, ...) is
-/// returned as a SceneError naming file, line, element and problem; nothing is defaulted
+/// thrown as a SceneError naming file, line, element and problem; nothing is defaulted
 /// silently. Attributes nobody reads become warnings in Scene::warnings. A path ending in
 /// ".json" is read as a fast mass-springs JSON scene instead (load_json_scene_file).
-Expected<Scene, SceneError> load_scene_file(const std::string& path);
+Scene load_scene_file(const std::string& path);
 
 /// Loads a scene from XML text; `name` stands for the file in messages.
-Expected<Scene, SceneError> load_scene_text(std::string_view text, const std::string& name);
+Scene load_scene_text(std::string_view text, const std::string& name);
 
 }  // namespace fosssim

@@ -16,17 +16,18 @@ bool is_space(char c) {
 }
 }  // namespace
 
-Expected<std::string, SceneError> read_text_file(const std::string& path) {
+std::string read_text_file(const std::string& path) {
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored)) {
-    return SceneError(path, 0, "", "is a directory, not a file");
+    throw SceneError(path, 0, "", "is a directory, not a file");
   }
   std::ifstream in(path, std::ios::binary);
-  if (!in)
-    return SceneError(path, 0, "", std::string("cannot open the file: ") + std::strerror(errno));
+  if (!in) {
+    throw SceneError(path, 0, "", std::string("cannot open the file: ") + std::strerror(errno));
+  }
   std::ostringstream content;
   content << in.rdbuf();
-  if (in.bad()) return SceneError(path, 0, "", "cannot read the file");
+  if (in.bad()) throw SceneError(path, 0, "", "cannot read the file");
   return content.str();
 }
 

@@ -6,13 +6,12 @@
 #include <string_view>
 #include <vector>
 
-#include "core/expected.h"
 #include "io/scene_error.h"
 
 namespace fosssim {
 
-/// The whole content of a file, or a SceneError naming it and the system's reason.
-Expected<std::string, SceneError> read_text_file(const std::string& path);
+/// The whole content of a file. Throws SceneError naming it and the system's reason.
+std::string read_text_file(const std::string& path);
 
 /// A word of a text and the 1-based line it is on.
 struct Word {
@@ -36,22 +35,11 @@ bool parse_int(std::string_view text, int& value);
 /// `"text"`, for messages.
 std::string quote(std::string_view text);
 
-/// Runs `parse` (which throws SceneError on bad input) and returns its result or the error.
-template <typename T, typename Parse>
-Expected<T, SceneError> catch_scene_error(Parse parse) {
-  try {
-    return parse();
-  } catch (const SceneError& error) {
-    return error;
-  }
-}
-
-/// Reads the file at `path` and returns parse_text(text, path), or the error of reading it.
-template <typename T, typename ParseText>
-Expected<T, SceneError> parse_text_file(const std::string& path, ParseText parse_text) {
-  auto text = read_text_file(path);
-  if (!text) return text.error();
-  return parse_text(text.value(), path);
+/// Reads the file at `path` and returns parse_text(text, path); throws SceneError when it cannot
+/// be read or parsed.
+template <typename ParseText>
+auto parse_text_file(const std::string& path, ParseText parse_text) {
+  return parse_text(read_text_file(path), path);
 }
 
 }  // namespace fosssim

@@ -14,28 +14,26 @@ constexpr double kEdgeRadiusPerLength = 0.05;
 
 }  // namespace
 
-Expected<std::unique_ptr<Force>, std::string> append_mesh(Scene& scene, const Mesh& mesh,
-                                                          const MeshMaterial& material,
-                                                          const std::vector<int>& pinned,
-                                                          const std::string& label) {
+std::unique_ptr<Force> append_mesh(Scene& scene, const Mesh& mesh, const MeshMaterial& material,
+                                   const std::vector<int>& pinned, const std::string& label) {
+  const auto fail = [](const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); };
   SceneModel& model = scene.model;
   const int dim = model.dim;
   const int n = mesh.num_vertices();
   if (dim == 2) {
     for (int v = 0; v < n; ++v) {
       if (mesh.vertices[v].z() != 0.0 || material.velocity.z() != 0.0) {
-        return "vertex " + std::to_string(v) + " has z = " + to_text(mesh.vertices[v].z()) +
-               " (or the initial velocity has a z component), but the scene is 2D; use "
-               "<scene dim=\"3\">";
+        fail("vertex " + std::to_string(v) + " has z = " + to_text(mesh.vertices[v].z()) +
+             " (or the initial velocity has a z component), but the scene is 2D; use "
+             "<scene dim=\"3\">");
       }
     }
   }
-  auto masses = compute_vertex_masses(mesh, material.mass);
-  if (!masses) return masses.error();
+  const std::vector<double> masses = compute_vertex_masses(mesh, material.mass);
   for (int v : pinned) {
     if (v < 0 || v >= n) {
-      return "pinned vertex " + std::to_string(v) + " is out of range (the mesh has " +
-             std::to_string(n) + " vertices, 0-based)";
+      fail("pinned vertex " + std::to_string(v) + " is out of range (the mesh has " +
+           std::to_string(n) + " vertices, 0-based)");
     }
   }
   const auto pairs = compute_spring_pairs(mesh);
@@ -46,8 +44,8 @@ Expected<std::unique_ptr<Force>, std::string> append_mesh(Scene& scene, const Me
   for (const auto& [a, b] : pairs) {
     const double length = (mesh.vertices[a] - mesh.vertices[b]).norm();
     if (length == 0.0) {
-      return "vertices " + std::to_string(a) + " and " + std::to_string(b) +
-             " (0-based) coincide, so the spring between them has no direction";
+      fail("vertices " + std::to_string(a) + " and " + std::to_string(b) +
+           " (0-based) coincide, so the spring between them has no direction");
     }
     springs.push_back({first + a, first + b, material.k, length, material.b});
     total_length += length;
@@ -60,7 +58,7 @@ Expected<std::unique_ptr<Force>, std::string> append_mesh(Scene& scene, const Me
   scene.initial.v.conservativeResize(dim * total);
   for (int v = 0; v < n; ++v) {
     const int p = first + v;
-    model.mass.segment(dim * p, dim).setConstant((*masses)[v]);
+    model.mass.segment(dim * p, dim).setConstant(masses[v]);
     scene.initial.q.segment(dim * p, dim) = mesh.vertices[v].head(dim);
     scene.initial.v.segment(dim * p, dim) = material.velocity.head(dim);
   }
@@ -75,11 +73,11 @@ Expected<std::unique_ptr<Force>, std::string> append_mesh(Scene& scene, const Me
   // The mean spring length sets the drawn sizes.
   const double length = springs.empty() ? 0.0 : total_length / static_cast<double>(springs.size());
   Appearance& look = scene.appearance;
-  look.particle_radius.resize(total, kParticleRadiusPerLength * length);
+  model.particle_radius.resize(total, kParticleRadiusPerLength * length);
   look.particle_color.resize(total, Appearance::kDefaultMeshColor);
   for (const SpringTerm& s : springs) {
     model.edges.push_back({s.i, s.j});
-    look.edge_radius.push_back(kEdgeRadiusPerLength * length);
+    model.edge_radius.push_back(kEdgeRadiusPerLength * length);
     look.edge_color.push_back(Appearance::kDefaultEdgeColor);
   }
   auto add_triangles = [&](const std::vector<std::array<int, 3>>& triangles) {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/expected.h"
+#include "core/error.h"
 #include "core/force.h"
 #include "core/scene.h"
 #include "mesh/mesh.h"
@@ -28,11 +28,9 @@ struct MeshMaterial {
 /// initial length. The springs are returned as one SpringSetForce, labelled `label`, for the
 /// caller to place in the force order. The appearance gets small particles and edges (scaled
 /// by the mean spring length) and the surface triangles. In a 2D scene every vertex must have
-/// z = 0. Fails with a message on a massless vertex, coincident spring ends, a pinned index
-/// out of range, or z ≠ 0 in 2D.
-Expected<std::unique_ptr<Force>, std::string> append_mesh(Scene& scene, const Mesh& mesh,
-                                                          const MeshMaterial& material,
-                                                          const std::vector<int>& pinned,
-                                                          const std::string& label);
+/// z = 0. Throws Error (kBadInput) on a massless vertex, coincident spring ends, a pinned index
+/// out of range, or z ≠ 0 in 2D, leaving the scene unchanged.
+std::unique_ptr<Force> append_mesh(Scene& scene, const Mesh& mesh, const MeshMaterial& material,
+                                   const std::vector<int>& pinned, const std::string& label);
 
 }  // namespace fosssim

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <variant>
 
+#include "core/error.h"
 #include "io/output_file.h"
 #include "pictures/file_names.h"
 
@@ -117,9 +118,10 @@ void paint_shape(cairo_t* cr, const Triangle& triangle) {
   cairo_stroke(cr);
 }
 
-void check_status(cairo_status_t status, const std::string& what) {
+void check_status(cairo_status_t status, const std::string& what,
+                  ErrorKind kind = ErrorKind::kCannotWrite) {
   if (status != CAIRO_STATUS_SUCCESS) {
-    throw std::runtime_error(what + ": " + cairo_status_to_string(status));
+    throw Error(kind, what + ": " + cairo_status_to_string(status));
   }
 }
 
@@ -147,6 +149,15 @@ void paint_drawing(cairo_t* cr, const Drawing& drawing) {
 
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  for (const Region& region : drawing.regions) {
+    cairo_set_source_rgb(cr, region.color.r, region.color.g, region.color.b);
+    cairo_move_to(cr, region.corners[0].x, region.corners[0].y);
+    for (std::size_t k = 1; k < region.corners.size(); ++k) {
+      cairo_line_to(cr, region.corners[k].x, region.corners[k].y);
+    }
+    cairo_close_path(cr);
+    cairo_fill(cr);
+  }
   for (const Polyline& line : drawing.paths) paint_polyline(cr, line);
   for (const Shape& shape : drawing.shapes) {
     std::visit([cr](const auto& s) { paint_shape(cr, s); }, shape);
@@ -211,7 +222,8 @@ void write_picture(const std::string& path, PictureFormat format, int width, int
   surface.reset();
   if (status != CAIRO_STATUS_SUCCESS) {
     output.discard();
-    throw std::runtime_error("cannot write " + target + ": " + cairo_status_to_string(status));
+    throw Error(ErrorKind::kCannotWrite,
+                "cannot write " + target + ": " + cairo_status_to_string(status));
   }
   output.commit();
 }
@@ -228,7 +240,7 @@ void write_svg(const Drawing& drawing, const std::string& path) {
 
 Image read_png(const std::string& path) {
   SurfacePtr surface(cairo_image_surface_create_from_png(path.c_str()));
-  check_status(cairo_surface_status(surface.get()), "cannot read " + path);
+  check_status(cairo_surface_status(surface.get()), "cannot read " + path, ErrorKind::kBadInput);
   SurfacePtr argb(cairo_image_surface_create(CAIRO_FORMAT_ARGB32,
                                              cairo_image_surface_get_width(surface.get()),
                                              cairo_image_surface_get_height(surface.get())));

@@ -21,7 +21,7 @@ void paint_drawing(cairo_t* cr, const Drawing& drawing);
 Image render_image(const Drawing& drawing);
 
 /// Writes `drawing` as a PNG file. Written to "<path>.partial" and renamed, so `path` is never
-/// half written. Throws std::runtime_error naming the path and the reason.
+/// half written. Throws Error (kCannotWrite) naming the path and the reason.
 void write_png(const Drawing& drawing, const std::string& path);
 
 /// Writes `drawing` as an SVG file (vector shapes, sizes in px), atomically as write_png.
@@ -34,14 +34,14 @@ PictureFormat picture_format_for(const std::string& path);
 
 /// Makes a width × height picture, lets `paint` draw on it (user space in pixels, origin top-left)
 /// and writes it to `path` as PNG or SVG: to "<path>.partial" first, renamed when complete.
-/// Throws std::runtime_error naming the path and Cairo's reason.
+/// Throws Error (kCannotWrite) naming the path and Cairo's reason.
 void write_picture(const std::string& path, PictureFormat format, int width, int height,
                    const std::function<void(cairo_t*)>& paint);
 
 /// Writes an image as a PNG file, atomically as write_png.
 void write_png(const Image& image, const std::string& path);
 
-/// Reads a PNG file into an image (for tests and comparisons); throws std::runtime_error.
+/// Reads a PNG file into an image (for tests and comparisons); throws Error (kBadInput).
 Image read_png(const std::string& path);
 
 }  // namespace fosssim

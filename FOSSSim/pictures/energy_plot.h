@@ -21,7 +21,7 @@ struct EnergyPlotStyle {
 
 /// Plots kinetic, potential and total energy against time (a LinePlot, pictures/line_plot.h),
 /// with axes, ticks, labels and a legend, as a PNG, or an SVG when `path` ends in ".svg". Written
-/// under a temporary name and renamed. Non-finite samples are left out. Throws std::runtime_error
+/// under a temporary name and renamed. Non-finite samples are left out. Throws Error (kCannotWrite)
 /// on an I/O error.
 void write_energy_plot(const std::vector<EnergySample>& samples, const std::string& path,
                        const EnergyPlotStyle& style = {});

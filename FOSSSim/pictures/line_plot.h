@@ -86,7 +86,7 @@ std::vector<double> nice_ticks(double low, double high, int target = 6);
 /// Writes the plot as a PNG, or an SVG when `path` ends in ".svg": white background, title,
 /// grid and tick labels, axis titles, reference lines, curves (clipped to the plot area), and
 /// below the axes a legend of the named curves followed by the note. Written under a temporary
-/// name and renamed. Throws std::runtime_error on an I/O error.
+/// name and renamed. Throws Error (kCannotWrite) on an I/O error.
 void write_line_plot(const LinePlot& plot, const std::string& path);
 
 }  // namespace fosssim

@@ -86,20 +86,21 @@ std::string read_log(std::FILE* log) {
 
 }  // namespace
 
-std::optional<std::string> check_movie_settings(const std::string& path, const MovieSettings& s) {
+void check_movie_settings(const std::string& path, const MovieSettings& s) {
+  const auto fail = [](const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); };
   if (!has_extension(path, ".mp4")) {
-    return "the movie " + path + " must be named *.mp4 (FOSSSim writes H.264 in MP4)";
+    fail("the movie " + path + " must be named *.mp4 (FOSSSim writes H.264 in MP4)");
   }
   if (s.width < 2 || s.height < 2 || s.width % 2 != 0 || s.height % 2 != 0) {
-    return "a movie's width and height must be even and at least 2 (H.264 with 4:2:0 colour), "
-           "found " +
-           std::to_string(s.width) + "x" + std::to_string(s.height);
+    fail(
+        "a movie's width and height must be even and at least 2 (H.264 with 4:2:0 colour), "
+        "found " +
+        std::to_string(s.width) + "x" + std::to_string(s.height));
   }
   if (!(s.fps > 0.0) || s.fps > 1000.0) {
-    return "a movie's frame rate must be in (0, 1000] frames per second, found " +
-           format_number(s.fps);
+    fail("a movie's frame rate must be in (0, 1000] frames per second, found " +
+         format_number(s.fps));
   }
-  return std::nullopt;
 }
 
 std::optional<std::string> find_program(const std::string& name) {
@@ -118,21 +119,22 @@ std::optional<std::string> find_program(const std::string& name) {
   return std::nullopt;
 }
 
-Expected<MovieWriter, std::string> MovieWriter::open(const std::string& path,
-                                                     const MovieSettings& settings) {
-  if (auto problem = check_movie_settings(path, settings)) return *problem;
+MovieWriter MovieWriter::open(const std::string& path, const MovieSettings& settings) {
+  check_movie_settings(path, settings);
   const auto program = find_program("ffmpeg");
   if (!program) {
-    return std::string(
-        "writing a movie needs the ffmpeg program, which is not on PATH "
-        "(on Debian: apt-get install ffmpeg)");
+    throw Error(ErrorKind::kCannotWrite,
+                "writing a movie needs the ffmpeg program, which is not on PATH "
+                "(on Debian: apt-get install ffmpeg)");
   }
   // A dead ffmpeg must turn our next write into an EPIPE error, not kill FOSSSim.
   std::signal(SIGPIPE, SIG_IGN);
 
   int fds[2];
-  if (::pipe2(fds, O_CLOEXEC) != 0)
-    return "cannot create a pipe: " + std::string(std::strerror(errno));
+  if (::pipe2(fds, O_CLOEXEC) != 0) {
+    throw Error(ErrorKind::kCannotWrite,
+                "cannot create a pipe: " + std::string(std::strerror(errno)));
+  }
   std::FILE* log = std::tmpfile();
   OutputFile output(path);
   const auto arguments = ffmpeg_arguments(*program, settings, output.write_path());
@@ -164,7 +166,8 @@ Expected<MovieWriter, std::string> MovieWriter::open(const std::string& path,
   if (spawned != 0) {
     ::close(fds[1]);
     if (log != nullptr) std::fclose(log);
-    return "cannot start " + *program + ": " + std::strerror(spawned);
+    throw Error(ErrorKind::kCannotWrite,
+                "cannot start " + *program + ": " + std::strerror(spawned));
   }
   return MovieWriter(path, std::move(output), settings, pid, fds[1], log);
 }
@@ -211,8 +214,8 @@ void MovieWriter::write_frame(const Image& frame) {
       const auto message = finish_process();
       done_ = true;
       output_.discard();
-      throw std::runtime_error("ffmpeg stopped while writing " + path_ + ": " +
-                               message.value_or("it closed its input"));
+      throw Error(ErrorKind::kCannotWrite, "ffmpeg stopped while writing " + path_ + ": " +
+                                               message.value_or("it closed its input"));
     }
     data += written;
     left -= static_cast<std::size_t>(written);
@@ -240,7 +243,7 @@ void MovieWriter::commit() {
   done_ = true;
   if (auto problem = finish_process()) {
     output_.discard();
-    throw std::runtime_error("cannot write the movie " + path_ + ": " + *problem);
+    throw Error(ErrorKind::kCannotWrite, "cannot write the movie " + path_ + ": " + *problem);
   }
   output_.commit();
 }

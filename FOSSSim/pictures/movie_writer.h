@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "core/expected.h"
+#include "core/error.h"
 #include "io/output_file.h"
 #include "pictures/image.h"
 
@@ -27,19 +27,19 @@ struct MovieSettings {
 class MovieWriter {
  public:
   /// Checks the settings and the file name (must end in .mp4), finds ffmpeg on PATH and starts
-  /// it. The error says what is wrong, e.g. that ffmpeg is not installed.
-  static Expected<MovieWriter, std::string> open(const std::string& path,
-                                                 const MovieSettings& settings);
+  /// it. Throws Error saying what is wrong: bad settings (kBadInput); ffmpeg not installed, or no
+  /// process or pipe (kCannotWrite: the movie cannot be written).
+  static MovieWriter open(const std::string& path, const MovieSettings& settings);
 
   MovieWriter(MovieWriter&& other) noexcept;
   MovieWriter& operator=(MovieWriter&&) = delete;
   /// Abandons the movie if neither commit() nor abandon() was called.
   ~MovieWriter();
 
-  /// Sends one frame (its size must be the settings' size). Throws std::runtime_error with
+  /// Sends one frame (its size must be the settings' size). Throws Error (kCannotWrite) with
   /// ffmpeg's own message if ffmpeg has stopped.
   void write_frame(const Image& frame);
-  /// Ends the movie: waits for ffmpeg and renames the file. Throws std::runtime_error with
+  /// Ends the movie: waits for ffmpeg and renames the file. Throws Error (kCannotWrite) with
   /// ffmpeg's message if it failed.
   void commit();
   /// Stops ffmpeg, keeps what it wrote as "<path>.incomplete" if anything, and returns that name
@@ -64,10 +64,9 @@ class MovieWriter {
   bool done_ = false;
 };
 
-/// Why `path` and `settings` cannot make a movie (not *.mp4, odd size, bad frame rate), or
-/// nothing when they can.
-std::optional<std::string> check_movie_settings(const std::string& path,
-                                                const MovieSettings& settings);
+/// Throws Error (kBadInput) saying why `path` and `settings` cannot make a movie (not *.mp4,
+/// odd size, bad frame rate); returns when they can.
+void check_movie_settings(const std::string& path, const MovieSettings& settings);
 
 /// The full path of an executable `name` on PATH, or nothing.
 std::optional<std::string> find_program(const std::string& name);

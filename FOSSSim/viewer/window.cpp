@@ -174,7 +174,7 @@ void Window::take_screenshot() {
   }
   try {
     write_png(shot, settings_.screenshot_path);
-  } catch (const std::runtime_error& error) {
+  } catch (const Error& error) {
     std::cerr << "FOSSSim: error: " << error.what() << "\n";
   }
   glutLeaveMainLoop();
@@ -248,23 +248,25 @@ void Window::reshape(int width, int height) {
 
 }  // namespace
 
-std::optional<std::string> check_display() {
+void check_display() {
   // The connection stays open for the life of the process: an X server whose last client
   // leaves resets itself, and connections attempted during the reset (GLUT's own, moments
   // later) fail.
   static Display* const connection = XOpenDisplay(nullptr);
-  if (connection != nullptr) return std::nullopt;
+  if (connection != nullptr) return;
   const char* name = std::getenv("DISPLAY");
-  return std::string("cannot open the window: ") +
-         (name == nullptr || *name == '\0' ? "there is no display (DISPLAY is not set)"
-                                           : "cannot connect to display " + std::string(name)) +
-         "; run headless with -d 0 (pictures: -g 1, -m DIR, --movie FILE.mp4) or under xvfb-run";
+  throw Error(
+      ErrorKind::kUnavailable,
+      std::string("cannot open the window: ") +
+          (name == nullptr || *name == '\0' ? "there is no display (DISPLAY is not set)"
+                                            : "cannot connect to display " + std::string(name)) +
+          "; run headless with -d 0 (pictures: -g 1, -m DIR, --movie FILE.mp4) or "
+          "under xvfb-run");
 }
 
-Expected<WindowOutcome, std::string> run_window(Stepper& stepper, SceneView& view,
-                                                const WindowSettings& settings,
-                                                const WindowEvents& events) {
-  if (auto problem = check_display()) return *problem;
+WindowOutcome run_window(Stepper& stepper, SceneView& view, const WindowSettings& settings,
+                         const WindowEvents& events) {
+  check_display();
   int argc = 1;
   char program[] = "FOSSSim";
   char* argv[] = {program, nullptr};

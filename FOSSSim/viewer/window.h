@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "core/expected.h"
+#include "core/error.h"
 #include "core/step_error.h"
 #include "render/scene_view.h"
 #include "viewer/particle_grab.h"
@@ -44,18 +44,18 @@ struct WindowOutcome {
   bool failed = false;    ///< a step failed
 };
 
-/// Nothing when an X display can be opened, else why not (GLUT itself would end the process).
-std::optional<std::string> check_display();
+/// Returns when an X display can be opened, else throws Error (kUnavailable) saying why (GLUT
+/// itself would end the process).
+void check_display();
 
 /// Opens a window of view.width() × view.height() pixels showing `stepper`'s state through
 /// `view`, and handles keys and mouse (controls.h, mouse_control.h; docs/viewing.md) until the
 /// user quits (q, Esc or closing the window).
 /// Steps at most settings.max_steps_per_second per wall second while running. Each picture is
 /// the view's drawing painted by Cairo (pictures/cairo_painter.h) and copied to the window, so
-/// the window shows exactly what the PNG, SVG and movie outputs show. Fails (returns the
-/// message) when there is no X display to open the window on.
-Expected<WindowOutcome, std::string> run_window(Stepper& stepper, SceneView& view,
-                                                const WindowSettings& settings,
-                                                const WindowEvents& events);
+/// the window shows exactly what the PNG, SVG and movie outputs show. Throws Error
+/// (kUnavailable) when there is no X display to open the window on.
+WindowOutcome run_window(Stepper& stepper, SceneView& view, const WindowSettings& settings,
+                         const WindowEvents& events);
 
 }  // namespace fosssim

@@ -53,28 +53,18 @@ std::string diagnosis_stem(const std::string& folder, const std::string& scene_n
   return folder + "/" + stem;
 }
 
-std::optional<std::string> write_diagnosis(const std::string& folder, const SceneResult& result,
-                                           const GradeReport* report) {
+void write_diagnosis(const std::string& folder, const SceneResult& result,
+                     const GradeReport* report) {
   const std::string stem = diagnosis_stem(folder, result.name);
-  if (auto problem = write_file_atomically(stem + ".diagnosis.txt", diagnosis_text(result))) {
-    return problem;
-  }
-  if (report == nullptr) return std::nullopt;
-  if (auto problem =
-          write_file_atomically(stem + ".residuals.tsv", residual_table_tsv(*report, result.dt))) {
-    return problem;
-  }
+  write_file_atomically(stem + ".diagnosis.txt", diagnosis_text(result));
+  if (report == nullptr) return;
+  write_file_atomically(stem + ".residuals.tsv", residual_table_tsv(*report, result.dt));
   ResidualPlotOptions plot;
   plot.title = result.name + ": largest residual per step (" + result.integrator + ")";
   plot.dt = result.dt;
   plot.limit = report->criteria.maximum_limit;
   if (report->first_divergence) plot.marked_step = report->first_divergence->step;
-  try {
-    write_line_plot(residual_plot(report->per_step, plot), stem + ".residuals.svg");
-  } catch (const std::runtime_error& error) {
-    return error.what();
-  }
-  return std::nullopt;
+  write_line_plot(residual_plot(report->per_step, plot), stem + ".residuals.svg");
 }
 
 }  // namespace fosssim

@@ -20,10 +20,9 @@ std::string residual_table_tsv(const GradeReport& report, double dt);
 
 /// Writes the diagnosis files of a failing scene under `folder`, named after the scene (its
 /// name without ".xml"): NAME.diagnosis.txt always, and when the trajectory was graded
-/// (`report` not null) NAME.residuals.tsv and NAME.residuals.svg. Returns an error message or
-/// nothing.
-std::optional<std::string> write_diagnosis(const std::string& folder, const SceneResult& result,
-                                           const GradeReport* report);
+/// (`report` not null) NAME.residuals.tsv and NAME.residuals.svg. Throws Error (kCannotWrite).
+void write_diagnosis(const std::string& folder, const SceneResult& result,
+                     const GradeReport* report);
 
 /// The path without extension that write_diagnosis uses for a scene: "<folder>/assets/t1m1/x".
 std::string diagnosis_stem(const std::string& folder, const std::string& scene_name);

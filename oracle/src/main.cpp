@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cstring>
 #include <iostream>
+#include <variant>
 
 #include "atomic_file.h"
 #include "batch.h"
@@ -14,6 +15,7 @@
 #include "cli/exit_codes.h"
 #include "cli/parse_command_line.h"
 #include "gradescope_report.h"
+#include "io/text_lines.h"
 #include "junit_report.h"
 #include "manifest.h"
 #include "result_table.h"
@@ -92,11 +94,12 @@ int report(const GradingRun& run, const ReportOptions& options) {
   const auto write = [&status](const std::string& path, const std::string& content,
                                const char* what) {
     if (path.empty()) return;
-    if (auto problem = write_file_atomically(path, content)) {
-      std::cerr << "fosssim-oracle: error: " << *problem << "\n";
-      status = kExitIoError;
-    } else {
+    try {
+      write_file_atomically(path, content);
       std::cout << what << " written to " << path << "\n";
+    } catch (const Error& error) {
+      std::cerr << "fosssim-oracle: error: " << error.what() << "\n";
+      status = exit_status(error.kind());
     }
   };
   write(options.junit, junit_xml(run), "JUnit XML");
@@ -106,17 +109,9 @@ int report(const GradingRun& run, const ReportOptions& options) {
 
 int run_grade(const GradeCommand& command) {
   const auto start = std::chrono::steady_clock::now();
-  auto shard = parse_shard(command.shard);
-  if (!shard) {
-    std::cerr << "fosssim-oracle: error: " << shard.error() << "\n";
-    return kExitBadInput;
-  }
-  auto scenes = discover_scenes(command.folders, command.extra_credit);
-  if (!scenes) {
-    std::cerr << "fosssim-oracle: error: " << scenes.error() << "\n";
-    return kExitBadInput;
-  }
-  if (scenes->empty()) {
+  const Shard shard = parse_shard(command.shard);
+  const std::vector<SceneEntry> scenes = discover_scenes(command.folders, command.extra_credit);
+  if (scenes.empty()) {
     std::cerr << "fosssim-oracle: error: no scene files (*.xml) in the given folders\n";
     return kExitBadInput;
   }
@@ -134,13 +129,13 @@ int run_grade(const GradeCommand& command) {
 
   GradingRun run;
   run.candidate = command.candidate;
-  run.shard = *shard;
-  run.scenes = listing_of(*scenes);
-  const std::vector<SceneEntry> selected = select_shard(*scenes, *shard);
+  run.shard = shard;
+  run.scenes = listing_of(scenes);
+  const std::vector<SceneEntry> selected = select_shard(scenes, shard);
   if (!command.reports.quiet) {
-    std::cerr << "fosssim-oracle: grading " << selected.size() << " of " << scenes->size()
-              << " scenes (shard " << shard->index << "/" << shard->count << ") with "
-              << command.jobs << (command.jobs == 1 ? " job" : " jobs") << "\n";
+    std::cerr << "fosssim-oracle: grading " << selected.size() << " of " << scenes.size()
+              << " scenes (shard " << shard.index << "/" << shard.count << ") with " << command.jobs
+              << (command.jobs == 1 ? " job" : " jobs") << "\n";
   }
   install_interrupt_handler();
   const bool quiet = command.reports.quiet;
@@ -155,11 +150,12 @@ int run_grade(const GradeCommand& command) {
   }
   int status = report(run, command.reports);
   if (!command.shard_result.empty()) {
-    if (auto problem = write_file_atomically(command.shard_result, shard_result_json(run))) {
-      std::cerr << "fosssim-oracle: error: " << *problem << "\n";
-      status = kExitIoError;
-    } else {
+    try {
+      write_file_atomically(command.shard_result, shard_result_json(run));
       std::cout << "Shard results written to " << command.shard_result << "\n";
+    } catch (const Error& error) {
+      std::cerr << "fosssim-oracle: error: " << error.what() << "\n";
+      status = exit_status(error.kind());
     }
   }
   return status;
@@ -168,33 +164,21 @@ int run_grade(const GradeCommand& command) {
 int run_merge(const MergeCommand& command) {
   std::vector<GradingRun> shards;
   for (const std::string& file : command.files) {
-    const auto text = read_whole_file(file);
-    if (!text) {
-      std::cerr << "fosssim-oracle: error: cannot read " << file << "\n";
-      return kExitBadInput;
+    std::string text;
+    try {
+      text = read_text_file(file);
+    } catch (const Error&) {
+      throw Error(ErrorKind::kBadInput, "cannot read " + file);
     }
-    auto shard = parse_shard_result(*text, file);
-    if (!shard) {
-      std::cerr << "fosssim-oracle: error: " << shard.error() << "\n";
-      return kExitBadInput;
-    }
-    shards.push_back(std::move(shard).value());
+    shards.push_back(parse_shard_result(text, file));
   }
-  auto merged = merge_shards(shards, command.files);
-  if (!merged) {
-    std::cerr << "fosssim-oracle: error: " << merged.error() << "\n";
-    return kExitBadInput;
-  }
-  return report(*merged, command.reports);
+  return report(merge_shards(shards, command.files), command.reports);
 }
 
 /// The manifest entries of a fresh run, or an exit status.
 std::variant<std::vector<ManifestEntry>, int> compute_for(const ManifestCommand& command) {
-  auto scenes = discover_scenes(command.scene_folders, {}, /*missing_folders_are_empty=*/true);
-  if (!scenes) {
-    std::cerr << "fosssim-oracle: error: " << scenes.error() << "\n";
-    return kExitBadInput;
-  }
+  const std::vector<SceneEntry> scenes =
+      discover_scenes(command.scene_folders, {}, /*missing_folders_are_empty=*/true);
   CandidateRunOptions options;
   options.candidate = resolve_executable(command.candidate);
   if (options.candidate.empty()) {
@@ -203,7 +187,7 @@ std::variant<std::vector<ManifestEntry>, int> compute_for(const ManifestCommand&
   }
   options.timeout_seconds = command.timeout;
   install_interrupt_handler();
-  auto entries = compute_manifest(*scenes, options, command.work_dir, command.jobs);
+  auto entries = compute_manifest(scenes, options, command.work_dir, command.jobs);
   if (children_stopped()) return kExitInterrupted;
   return entries;
 }
@@ -212,10 +196,7 @@ int run_manifest_update(const ManifestCommand& command) {
   auto computed = compute_for(command);
   if (auto* status = std::get_if<int>(&computed)) return *status;
   const auto& entries = std::get<std::vector<ManifestEntry>>(computed);
-  if (auto problem = write_manifest(command.folder, entries, kRegenerateCommand)) {
-    std::cerr << "fosssim-oracle: error: " << *problem << "\n";
-    return kExitIoError;
-  }
+  write_manifest(command.folder, entries, kRegenerateCommand);
   std::cout << "Manifest of " << entries.size() << " scenes written to " << command.folder << "\n";
   for (const ManifestEntry& e : entries) {
     if (e.status != "ok") std::cout << "  note: " << e.scene << ": " << e.status << "\n";
@@ -224,16 +205,17 @@ int run_manifest_update(const ManifestCommand& command) {
 }
 
 int run_manifest_check(const ManifestCommand& command) {
-  auto golden = read_manifest(command.folder);
-  if (!golden) {
-    std::cerr << "fosssim-oracle: error: " << golden.error() << "; create it with `"
-              << kRegenerateCommand << "`\n";
-    return kExitBadInput;
+  std::vector<ManifestEntry> golden;
+  try {
+    golden = read_manifest(command.folder);
+  } catch (const Error& error) {
+    throw Error(error.kind(),
+                std::string(error.what()) + "; create it with `" + kRegenerateCommand + "`");
   }
   auto computed = compute_for(command);
   if (auto* status = std::get_if<int>(&computed)) return *status;
   const auto& entries = std::get<std::vector<ManifestEntry>>(computed);
-  const auto problems = compare_manifest(*golden, entries, kRegenerateCommand);
+  const auto problems = compare_manifest(golden, entries, kRegenerateCommand);
   if (problems.empty()) {
     std::cout << "All " << entries.size() << " scenes match the manifest " << command.folder
               << "\n";
@@ -345,9 +327,17 @@ int main(int argc, char** argv) {
           "Run fosssim-oracle --help (or fosssim-oracle COMMAND --help) for the options.")) {
     return *status;
   }
-  if (app.got_subcommand("grade")) return run_grade(grade);
-  if (app.got_subcommand("merge")) return run_merge(merge);
-  if (update->parsed()) return run_manifest_update(manifest);
-  if (check->parsed()) return run_manifest_check(manifest);
+  try {
+    if (app.got_subcommand("grade")) return run_grade(grade);
+    if (app.got_subcommand("merge")) return run_merge(merge);
+    if (update->parsed()) return run_manifest_update(manifest);
+    if (check->parsed()) return run_manifest_check(manifest);
+  } catch (const Error& error) {
+    std::cerr << "fosssim-oracle: error: " << error.what() << "\n";
+    return exit_status(error.kind());
+  } catch (const std::exception& error) {
+    std::cerr << "fosssim-oracle: error: " << error.what() << "\n";
+    return kExitBadInput;
+  }
   return kExitBadInput;
 }

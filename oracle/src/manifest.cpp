@@ -10,6 +10,7 @@
 #include "core/text.h"
 #include "diagnosis.h"
 #include "io/scene_loader.h"
+#include "io/text_lines.h"
 #include "io/trajectory_file.h"
 #include "sha256.h"
 
@@ -30,8 +31,10 @@ ManifestEntry compute_entry(const SceneEntry& scene, const CandidateRunOptions& 
                             const std::string& work_dir) {
   ManifestEntry entry;
   entry.scene = scene.name;
-  auto loaded = load_scene_file(scene.path);
-  if (!loaded) {
+  std::optional<Scene> loaded;
+  try {
+    loaded.emplace(load_scene_file(scene.path));
+  } catch (const Error&) {
     entry.status = "scene-error";
     return entry;
   }
@@ -39,7 +42,8 @@ ManifestEntry compute_entry(const SceneEntry& scene, const CandidateRunOptions& 
   const std::int64_t expected = expected_trajectory_bytes(model);
   try {
     WorkFolder work(work_dir);
-    const CandidateRun run = run_candidate(scene.path, expected, options, work);
+    const CandidateRun run =
+        run_candidate(scene.path, expected, options, work, trajectory_size_is_exact(model));
     if (run.problem) {
       entry.status = verdict_id(*run.problem);
       if (*run.problem == Verdict::kExitStatus)
@@ -48,14 +52,18 @@ ManifestEntry compute_entry(const SceneEntry& scene, const CandidateRunOptions& 
     }
     // A trajectory that cannot be opened, or read through for its digest, is "unreadable": an
     // empty digest must never pass for "ok".
-    auto file = TrajectoryReader::open(run.trajectory_path, model.num_dofs());
+    std::optional<TrajectoryReader> file;
+    try {
+      file.emplace(open_trajectory(run.trajectory_path, model));
+    } catch (const Error&) {
+    }
     const std::string digest = file ? sha256_file_hex(run.trajectory_path) : "";
     if (digest.empty()) {
       entry.status = "unreadable";
       return entry;
     }
     entry.frames = file->num_frames();
-    entry.bytes = expected;
+    entry.bytes = static_cast<std::int64_t>(std::filesystem::file_size(run.trajectory_path));
     entry.sha256 = digest;
     Vector q, v;
     file->read_frame(entry.frames - 1, q, v);
@@ -108,9 +116,8 @@ std::vector<ManifestEntry> compute_manifest(const std::vector<SceneEntry>& scene
   return entries;
 }
 
-std::optional<std::string> write_manifest(const std::string& folder,
-                                          const std::vector<ManifestEntry>& entries,
-                                          const std::string& regenerate_command) {
+void write_manifest(const std::string& folder, const std::vector<ManifestEntry>& entries,
+                    const std::string& regenerate_command) {
   std::ostringstream table;
   table << "# FOSSSim regression manifest: SHA-256 of FOSSSim's trajectory of every scene.\n"
         << "# Generated; do not edit. Regenerate after an intended change with:\n"
@@ -124,10 +131,10 @@ std::optional<std::string> write_manifest(const std::string& folder,
     const std::string path = final_state_path(folder, e.scene);
     const std::string header = "# final state (frame " + std::to_string(e.frames - 1) + ") of " +
                                e.scene + ": particle, position, velocity\n";
-    if (auto problem = write_file_atomically(path, header + e.final_state)) return problem;
+    write_file_atomically(path, header + e.final_state);
     kept.insert(fs::path(path).lexically_normal().string());
   }
-  if (auto problem = write_file_atomically(folder + "/" + kTableName, table.str())) return problem;
+  write_file_atomically(folder + "/" + kTableName, table.str());
   std::error_code error;
   const fs::path final_folder = fs::path(folder) / kFinalFolder;
   std::vector<fs::path> stale;
@@ -138,15 +145,19 @@ std::optional<std::string> write_manifest(const std::string& folder,
     }
   }
   for (const fs::path& path : stale) fs::remove(path, error);
-  return std::nullopt;
 }
 
-Expected<std::vector<ManifestEntry>, std::string> read_manifest(const std::string& folder) {
+std::vector<ManifestEntry> read_manifest(const std::string& folder) {
+  const auto fail = [](const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); };
   const std::string table_path = folder + "/" + kTableName;
-  const auto table = read_whole_file(table_path);
-  if (!table) return "cannot read the manifest " + table_path;
+  std::string table;
+  try {
+    table = read_text_file(table_path);
+  } catch (const Error&) {
+    fail("cannot read the manifest " + table_path);
+  }
   std::vector<ManifestEntry> entries;
-  std::istringstream lines(*table);
+  std::istringstream lines(table);
   std::string line;
   int number = 0;
   while (std::getline(lines, line)) {
@@ -157,18 +168,22 @@ Expected<std::vector<ManifestEntry>, std::string> read_manifest(const std::strin
     std::string digest;
     if (!std::getline(fields, e.scene, '\t') || !std::getline(fields, e.status, '\t') ||
         !(fields >> e.frames >> e.bytes >> digest)) {
-      return table_path + ":" + std::to_string(number) +
-             ": expected scene, status, frames, bytes and sha256 separated by tabs";
+      fail(table_path + ":" + std::to_string(number) +
+           ": expected scene, status, frames, bytes and sha256 separated by tabs");
     }
     if (digest != "-") e.sha256 = digest;
     if (e.status == "ok") {
       const std::string path = final_state_path(folder, e.scene);
-      auto text = read_whole_file(path);
-      if (!text) return "the manifest lists " + e.scene + " but " + path + " is missing";
-      const std::size_t header_end = text->find('\n');
-      e.final_state = (*text)[0] == '#' && header_end != std::string::npos
-                          ? text->substr(header_end + 1)
-                          : *text;
+      std::string text;
+      try {
+        text = read_text_file(path);
+      } catch (const Error&) {
+        fail("the manifest lists " + e.scene + " but " + path + " is missing");
+      }
+      const std::size_t header_end = text.find('\n');
+      e.final_state = !text.empty() && text[0] == '#' && header_end != std::string::npos
+                          ? text.substr(header_end + 1)
+                          : text;
     }
     entries.push_back(std::move(e));
   }

@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "candidate_run.h"
-#include "core/expected.h"
 #include "core/types.h"
 #include "scene_list.h"
 
@@ -39,13 +38,13 @@ std::vector<ManifestEntry> compute_manifest(const std::vector<SceneEntry>& scene
                                             const std::string& work_dir, int jobs);
 
 /// Writes golden.tsv and final/ under `folder` (each file atomically) and deletes final-state
-/// files of scenes no longer listed. `regenerate_command` goes into the header comment.
-std::optional<std::string> write_manifest(const std::string& folder,
-                                          const std::vector<ManifestEntry>& entries,
-                                          const std::string& regenerate_command);
+/// files of scenes no longer listed. `regenerate_command` goes into the header comment. Throws
+/// Error (kCannotWrite).
+void write_manifest(const std::string& folder, const std::vector<ManifestEntry>& entries,
+                    const std::string& regenerate_command);
 
-/// Reads a manifest folder; a missing golden.tsv is an error naming it.
-Expected<std::vector<ManifestEntry>, std::string> read_manifest(const std::string& folder);
+/// Reads a manifest folder; throws Error (kBadInput) naming a missing or malformed file.
+std::vector<ManifestEntry> read_manifest(const std::string& folder);
 
 /// Every difference between the manifest and a fresh computation, one message per scene:
 /// changed digests (with the first particle whose final state differs), changed status, scenes

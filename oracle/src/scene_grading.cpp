@@ -74,13 +74,21 @@ std::optional<std::string> replay_checking_frames(StepGrader& grader, Trajectory
 std::optional<GradeReport> grade_file(const Scene& scene, const std::string& path,
                                       SceneResult& result) {
   const int dim = scene.model.dim;
-  auto file = TrajectoryReader::open(path, scene.model.num_dofs());
-  if (!file) {
+  std::optional<TrajectoryReader> file;
+  try {
+    file.emplace(open_trajectory(path, scene.model));
+  } catch (const Error& error) {
     result.verdict = Verdict::kNoOutput;
-    result.reason = file.error();
+    result.reason = error.what();
     return std::nullopt;
   }
-  auto grader = StepGrader::open(scene, *file);
+  std::optional<StepGrader> grader;
+  std::string cannot_grade;
+  try {
+    grader.emplace(StepGrader::open(scene, *file));
+  } catch (const Error& error) {
+    cannot_grade = error.what();
+  }
   auto bad = grader ? replay_checking_frames(*grader, *file, dim) : find_non_finite(*file, dim);
   if (bad) {
     result.verdict = Verdict::kGarbage;
@@ -89,7 +97,7 @@ std::optional<GradeReport> grade_file(const Scene& scene, const std::string& pat
   }
   if (!grader) {
     result.verdict = Verdict::kShort;
-    result.reason = grader.error();
+    result.reason = cannot_grade;
     return std::nullopt;
   }
   take_grade(grader->report(), dim, result);
@@ -115,6 +123,15 @@ std::string failure_reason(const GradeReport& report) {
     if (c.passed) continue;
     reason += (reason.empty() ? "" : ", ") + std::string(c.name) + " " + to_text(c.value) +
               " (limit " + to_text(c.limit) + ")";
+  }
+  if (report.collisions && !report.collisions->passed()) {
+    const CollisionGrade& c = *report.collisions;
+    reason += (reason.empty() ? "" : ", ") + std::string("Collisions from step ") +
+              std::to_string(c.first_failing_step) + " (" + std::to_string(c.missed) + " missed, " +
+              std::to_string(c.superfluous) + " superfluous, " + std::to_string(c.wrong_normal) +
+              " wrong normals, " + std::to_string(c.polynomial_failures) +
+              " steps with wrong polynomials, " + std::to_string(c.sync_failures) +
+              " wrong sync records)";
   }
   if (const auto& d = report.first_divergence) {
     reason += "; first divergence at step " + std::to_string(d->step) + ", particle " +
@@ -156,10 +173,12 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
   SceneResult result;
   result.name = entry.name;
   result.extra_credit = entry.extra_credit;
-  auto loaded = load_scene_file(entry.path);
-  if (!loaded) {
+  std::optional<Scene> loaded;
+  try {
+    loaded.emplace(load_scene_file(entry.path));
+  } catch (const Error& error) {
     result.verdict = Verdict::kSceneError;
-    result.details = printable_text(loaded.error().what());
+    result.details = printable_text(error.what());
     result.reason = first_line(result.details);
     return result;
   }
@@ -176,7 +195,8 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
   try {
     WorkFolder work(options.work_dir);
     if (options.keep_work) work.keep();
-    const CandidateRun run = run_candidate(entry.path, expected_bytes, options.run, work);
+    const CandidateRun run = run_candidate(entry.path, expected_bytes, options.run, work,
+                                           trajectory_size_is_exact(model));
     result.run_seconds = run.seconds;
     result.stderr_tail = run.stderr_tail;
     if (run.problem) {
@@ -194,8 +214,11 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
     result.reason = std::string("the oracle could not run this scene: ") + error.what();
   }
   if (!result.passed() && !options.diagnose_dir.empty()) {
-    if (auto problem = write_diagnosis(options.diagnose_dir, result, report ? &*report : nullptr)) {
-      result.details += "(could not write the diagnosis files: " + *problem + ")\n";
+    try {
+      write_diagnosis(options.diagnose_dir, result, report ? &*report : nullptr);
+    } catch (const Error& error) {
+      result.details +=
+          std::string("(could not write the diagnosis files: ") + error.what() + ")\n";
     }
   }
   return result;

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 
+#include "core/error.h"
 #include "printable_text.h"
 #include "scene_result.h"
 
@@ -27,50 +28,51 @@ bool is_scene_file(const fs::directory_entry& entry) {
   return entry.is_regular_file(error) && entry.path().extension() == ".xml";
 }
 
-/// Appends the scenes under one folder argument; returns an error message or nothing.
-std::optional<std::string> collect(const std::string& argument, bool extra_credit,
-                                   bool missing_is_empty, std::vector<SceneEntry>& out) {
+[[noreturn]] void fail(const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); }
+
+/// Appends the scenes under one folder argument; throws Error (kBadInput) when it cannot.
+void collect(const std::string& argument, bool extra_credit, bool missing_is_empty,
+             std::vector<SceneEntry>& out) {
   const fs::path folder(argument);
   std::error_code error;
   const fs::file_status status = fs::status(folder, error);
   if (!fs::exists(status)) {
-    if (missing_is_empty) return std::nullopt;
-    return "the scene folder " + argument + " does not exist";
+    if (missing_is_empty) return;
+    fail("the scene folder " + argument + " does not exist");
   }
   if (fs::is_regular_file(status)) {
     out.push_back({printable_text(folder.filename().string()),
                    fs::absolute(folder).lexically_normal().string(), extra_credit});
-    return std::nullopt;
+    return;
   }
-  if (!fs::is_directory(status)) return argument + " is neither a folder nor a scene file";
+  if (!fs::is_directory(status)) fail(argument + " is neither a folder nor a scene file");
   const std::string label = folder_label(folder);
   fs::recursive_directory_iterator it(folder, fs::directory_options::follow_directory_symlink,
                                       error);
-  if (error) return "cannot read the folder " + argument + ": " + error.message();
+  if (error) fail("cannot read the folder " + argument + ": " + error.message());
   for (const fs::recursive_directory_iterator end; it != end; it.increment(error)) {
-    if (error) return "cannot read the folder " + argument + ": " + error.message();
+    if (error) fail("cannot read the folder " + argument + ": " + error.message());
     if (!is_scene_file(*it)) continue;
     const fs::path relative = it->path().lexically_relative(folder);
     out.push_back({printable_text(label + "/" + relative.generic_string()),
                    fs::absolute(it->path()).lexically_normal().string(), extra_credit});
   }
-  if (error) return "cannot read the folder " + argument + ": " + error.message();
-  return std::nullopt;
+  if (error) fail("cannot read the folder " + argument + ": " + error.message());
 }
 
 }  // namespace
 
 std::string SceneEntry::suite() const { return suite_of_scene(name); }
 
-Expected<std::vector<SceneEntry>, std::string> discover_scenes(
-    const std::vector<std::string>& folders, const std::vector<std::string>& extra_credit_folders,
-    bool missing_folders_are_empty) {
+std::vector<SceneEntry> discover_scenes(const std::vector<std::string>& folders,
+                                        const std::vector<std::string>& extra_credit_folders,
+                                        bool missing_folders_are_empty) {
   std::vector<SceneEntry> regular, extra;
   for (const std::string& folder : folders) {
-    if (auto problem = collect(folder, false, missing_folders_are_empty, regular)) return *problem;
+    collect(folder, false, missing_folders_are_empty, regular);
   }
   for (const std::string& folder : extra_credit_folders) {
-    if (auto problem = collect(folder, true, missing_folders_are_empty, extra)) return *problem;
+    collect(folder, true, missing_folders_are_empty, extra);
   }
   const auto by_name = [](const SceneEntry& a, const SceneEntry& b) { return a.name < b.name; };
   std::sort(regular.begin(), regular.end(), by_name);
@@ -82,16 +84,16 @@ Expected<std::vector<SceneEntry>, std::string> discover_scenes(
     auto [it, inserted] = seen.emplace(entry.name, &entry);
     if (!inserted) {
       if (it->second->path == entry.path) {
-        return "the scene " + entry.path + " is listed twice (two folder arguments overlap)";
+        fail("the scene " + entry.path + " is listed twice (two folder arguments overlap)");
       }
-      return "two scenes would both be named " + entry.name + " (" + it->second->path + " and " +
-             entry.path + "); give folders with different names";
+      fail("two scenes would both be named " + entry.name + " (" + it->second->path + " and " +
+           entry.path + "); give folders with different names");
     }
   }
   return all;
 }
 
-Expected<Shard, std::string> parse_shard(const std::string& text) {
+Shard parse_shard(const std::string& text) {
   const std::size_t slash = text.find('/');
   Shard shard;
   const auto parse = [](std::string_view digits, int& value) {
@@ -101,10 +103,10 @@ Expected<Shard, std::string> parse_shard(const std::string& text) {
   };
   if (slash == std::string::npos || !parse(std::string_view(text).substr(0, slash), shard.index) ||
       !parse(std::string_view(text).substr(slash + 1), shard.count)) {
-    return "--shard takes K/N with whole numbers, as in 2/8; found \"" + text + "\"";
+    fail("--shard takes K/N with whole numbers, as in 2/8; found \"" + text + "\"");
   }
   if (shard.count < 1 || shard.index < 1 || shard.index > shard.count) {
-    return "--shard K/N needs 1 <= K <= N; found \"" + text + "\"";
+    fail("--shard K/N needs 1 <= K <= N; found \"" + text + "\"");
   }
   return shard;
 }

@@ -6,8 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "core/expected.h"
-
 namespace fosssim {
 
 /// One scene to grade.
@@ -24,11 +22,11 @@ struct SceneEntry {
 
 /// Finds every "*.xml" file under `folders` (searched recursively; a file argument is taken as
 /// one scene) and under `extra_credit_folders`, sorted by name with regular scenes first.
-/// Fails with a message when a folder does not exist (unless `missing_folders_are_empty`) or
-/// when two scenes would get the same name.
-Expected<std::vector<SceneEntry>, std::string> discover_scenes(
-    const std::vector<std::string>& folders, const std::vector<std::string>& extra_credit_folders,
-    bool missing_folders_are_empty = false);
+/// Throws Error (kBadInput) when a folder does not exist (unless `missing_folders_are_empty`)
+/// or when two scenes would get the same name.
+std::vector<SceneEntry> discover_scenes(const std::vector<std::string>& folders,
+                                        const std::vector<std::string>& extra_credit_folders,
+                                        bool missing_folders_are_empty = false);
 
 /// Shard K of N (1 <= K <= N): the scenes at positions i (0-based, in the sorted list) with
 /// i mod N == K - 1. Round robin spreads long scenes of one folder over all shards.
@@ -42,8 +40,8 @@ struct Shard {
   bool contains(std::size_t position) const { return holding(position, count).index == index; }
 };
 
-/// Parses "K/N"; the message says what is wrong.
-Expected<Shard, std::string> parse_shard(const std::string& text);
+/// Parses "K/N"; throws Error (kBadInput) saying what is wrong.
+Shard parse_shard(const std::string& text);
 
 /// The entries of `all` that belong to `shard`, in order.
 std::vector<SceneEntry> select_shard(const std::vector<SceneEntry>& all, const Shard& shard);

@@ -6,6 +6,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "core/error.h"
+
 namespace fosssim {
 
 namespace {
@@ -42,7 +44,7 @@ class Sha256 {
 
   /// OpenSSL fails here only when it cannot allocate or finds no SHA-256 provider.
   static void check(bool ok) {
-    if (!ok) throw std::runtime_error("OpenSSL cannot compute a SHA-256 digest");
+    if (!ok) throw Error(ErrorKind::kUnavailable, "OpenSSL cannot compute a SHA-256 digest");
   }
 
   std::unique_ptr<EVP_MD_CTX, ContextDeleter> context_;

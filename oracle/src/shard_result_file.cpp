@@ -3,6 +3,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "core/error.h"
 #include "printable_text.h"
 #include "scene_list.h"
 
@@ -11,6 +12,9 @@ namespace fosssim {
 using json = nlohmann::ordered_json;
 
 namespace {
+
+/// Throws Error (kBadInput) with a message.
+[[noreturn]] void fail(const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); }
 
 constexpr const char* kFormat = "fosssim-oracle-results";
 constexpr int kVersion = 1;
@@ -27,7 +31,7 @@ double number_from(const json& value) {
     if (text == "nan") return std::nan("");
     if (text == "inf") return HUGE_VAL;
     if (text == "-inf") return -HUGE_VAL;
-    throw std::runtime_error("\"" + text + "\" is not a number");
+    throw std::invalid_argument("\"" + text + "\" is not a number");
   }
   return value.get<double>();
 }
@@ -73,7 +77,7 @@ SceneResult result_from(const json& j) {
   r.dt = number_from(j.at("dt"));
   const std::string verdict = j.at("verdict").get<std::string>();
   const auto parsed = verdict_from_id(verdict);
-  if (!parsed) throw std::runtime_error("unknown verdict \"" + verdict + "\" for " + r.name);
+  if (!parsed) throw std::invalid_argument("unknown verdict \"" + verdict + "\" for " + r.name);
   r.verdict = *parsed;
   r.reason = j.at("reason").get<std::string>();
   r.details = j.at("details").get<std::string>();
@@ -114,24 +118,23 @@ std::string shard_result_json(const GradingRun& run) {
   return document.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
-Expected<GradingRun, std::string> parse_shard_result(const std::string& text,
-                                                     const std::string& source) {
+GradingRun parse_shard_result(const std::string& text, const std::string& source) {
   try {
     const json document = json::parse(text);
     if (!document.is_object() || document.value("format", "") != kFormat) {
-      return source + " is not a fosssim-oracle result file (no \"format\": \"" + kFormat + "\")";
+      fail(source + " is not a fosssim-oracle result file (no \"format\": \"" + kFormat + "\")");
     }
     if (document.at("version").get<int>() != kVersion) {
-      return source + " has result format version " + document.at("version").dump() +
-             "; this oracle reads version " + std::to_string(kVersion);
+      fail(source + " has result format version " + document.at("version").dump() +
+           "; this oracle reads version " + std::to_string(kVersion));
     }
     GradingRun run;
     run.candidate = document.at("candidate").get<std::string>();
     run.shard.index = document.at("shard").at("index").get<int>();
     run.shard.count = document.at("shard").at("count").get<int>();
     if (run.shard.count < 1 || run.shard.index < 1 || run.shard.index > run.shard.count) {
-      return source + ": invalid shard " + std::to_string(run.shard.index) + "/" +
-             std::to_string(run.shard.count);
+      fail(source + ": invalid shard " + std::to_string(run.shard.index) + "/" +
+           std::to_string(run.shard.count));
     }
     run.wall_seconds = number_from(document.at("wall_seconds"));
     for (const json& s : document.at("scenes")) {
@@ -139,36 +142,38 @@ Expected<GradingRun, std::string> parse_shard_result(const std::string& text,
     }
     for (const json& r : document.at("results")) run.results.push_back(result_from(r));
     return run;
+  } catch (const Error&) {
+    throw;
   } catch (const std::exception& error) {
-    return source + ": not a valid result file: " + error.what();
+    fail(source + ": not a valid result file: " + error.what());
   }
 }
 
-Expected<GradingRun, std::string> merge_shards(const std::vector<GradingRun>& shards,
-                                               const std::vector<std::string>& sources) {
-  if (shards.empty()) return std::string("no shard result files to merge");
+GradingRun merge_shards(const std::vector<GradingRun>& shards,
+                        const std::vector<std::string>& sources) {
+  if (shards.empty()) fail(std::string("no shard result files to merge"));
   const GradingRun& first = shards.front();
   const int count = first.shard.count;
   std::vector<const GradingRun*> by_index(static_cast<std::size_t>(count), nullptr);
   for (std::size_t s = 0; s < shards.size(); ++s) {
     const GradingRun& shard = shards[s];
     if (shard.shard.count != count) {
-      return sources[s] + " is shard " + std::to_string(shard.shard.index) + "/" +
-             std::to_string(shard.shard.count) + ", but " + sources[0] + " is one of " +
-             std::to_string(count);
+      fail(sources[s] + " is shard " + std::to_string(shard.shard.index) + "/" +
+           std::to_string(shard.shard.count) + ", but " + sources[0] + " is one of " +
+           std::to_string(count));
     }
     if (shard.scenes != first.scenes) {
-      return sources[s] + " lists other scenes than " + sources[0] +
-             " (shards of different runs or of a changed suite)";
+      fail(sources[s] + " lists other scenes than " + sources[0] +
+           " (shards of different runs or of a changed suite)");
     }
     if (shard.candidate != first.candidate) {
-      return sources[s] + " graded the candidate " + shard.candidate + ", but " + sources[0] +
-             " graded " + first.candidate;
+      fail(sources[s] + " graded the candidate " + shard.candidate + ", but " + sources[0] +
+           " graded " + first.candidate);
     }
     const GradingRun*& slot = by_index[static_cast<std::size_t>(shard.shard.index - 1)];
     if (slot != nullptr) {
-      return "shard " + std::to_string(shard.shard.index) + "/" + std::to_string(count) +
-             " is given twice (" + sources[s] + ")";
+      fail("shard " + std::to_string(shard.shard.index) + "/" + std::to_string(count) +
+           " is given twice (" + sources[s] + ")");
     }
     slot = &shard;
   }
@@ -179,7 +184,7 @@ Expected<GradingRun, std::string> merge_shards(const std::vector<GradingRun>& sh
           (missing.empty() ? "" : ", ") + std::to_string(k + 1) + "/" + std::to_string(count);
     }
   }
-  if (!missing.empty()) return "the shards " + missing + " are missing";
+  if (!missing.empty()) fail("the shards " + missing + " are missing");
 
   GradingRun merged;
   merged.candidate = first.candidate;
@@ -190,15 +195,15 @@ Expected<GradingRun, std::string> merge_shards(const std::vector<GradingRun>& sh
     const auto k = static_cast<std::size_t>(Shard::holding(i, count).index - 1);
     const GradingRun& shard = *by_index[k];
     if (next[k] >= shard.results.size() || shard.results[next[k]].name != merged.scenes[i].name) {
-      return "shard " + std::to_string(k + 1) + "/" + std::to_string(count) +
-             " does not hold the result of " + merged.scenes[i].name + " where expected";
+      fail("shard " + std::to_string(k + 1) + "/" + std::to_string(count) +
+           " does not hold the result of " + merged.scenes[i].name + " where expected");
     }
     merged.results.push_back(shard.results[next[k]++]);
   }
   for (std::size_t k = 0; k < next.size(); ++k) {
     if (next[k] != by_index[k]->results.size()) {
-      return "shard " + std::to_string(k + 1) + "/" + std::to_string(count) +
-             " holds more results than its scenes";
+      fail("shard " + std::to_string(k + 1) + "/" + std::to_string(count) +
+           " holds more results than its scenes");
     }
   }
   return merged;

@@ -15,6 +15,9 @@
 
 #include "core/step/simulation.h"
 #include "io/scene_loader.h"
+#include "support/scratch_folder.h"
+#include "support/thrown.h"
+#include "support/trajectories.h"
 
 namespace fosssim {
 namespace {
@@ -37,32 +40,12 @@ constexpr const char* kScene = R"(<scene>
   <dragdamping b="0.05"/>
 </scene>)";
 
-class Grader : public testing::Test {
+class Grader : public ::testing::Test {
  protected:
   void SetUp() override {
-    auto loaded = load_scene_text(kScene, "grader.xml");
-    ASSERT_TRUE(loaded) << loaded.error().what();
-    scene_ = std::make_unique<Scene>(std::move(loaded).value());
-    dir_ = fs::temp_directory_path() /
-           ("fosssim_grader_" +
-            std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    file_ = (dir_ / "run.bin").string();
-    write_trajectory(*scene_, file_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  static void write_trajectory(const Scene& scene, const std::string& path) {
-    auto writer = TrajectoryWriter::open(path);
-    ASSERT_TRUE(writer);
-    Simulation simulation(scene.model, scene.initial);
-    writer->write_frame(simulation.state());
-    while (!simulation.finished()) {
-      simulation.step();
-      writer->write_frame(simulation.state());
-    }
-    writer->commit();
+    scene_ = std::make_unique<Scene>(load_scene_text(kScene, "grader.xml"));
+    file_ = folder_ / "run.bin";
+    testing::write_simulated_trajectory(*scene_, file_);
   }
 
   /// Adds delta to one double of the file: frame k, particle p, coordinate c, of q or v.
@@ -78,114 +61,106 @@ class Grader : public testing::Test {
     io.write(reinterpret_cast<const char*>(&value), 8);
   }
 
-  Expected<GradeReport, std::string> grade() {
+  GradeReport grade() {
     auto reader = TrajectoryReader::open(file_, scene_->model.num_dofs());
-    if (!reader) return reader.error();
-    return grade_trajectory(*scene_, *reader);
+    return grade_trajectory(*scene_, reader);
   }
 
   std::unique_ptr<Scene> scene_;
-  fs::path dir_;
+  testing::ScratchFolder folder_;
   std::string file_;
 };
 
 TEST_F(Grader, PassesItsOwnTrajectoryWithZeroResidual) {
   auto report = grade();
-  ASSERT_TRUE(report) << report.error();
-  EXPECT_TRUE(report->passed());
-  EXPECT_EQ(report->steps, 50);
-  EXPECT_EQ(report->per_step.size(), 50u);
-  EXPECT_EQ(report->accumulated_position, 0.0);
-  EXPECT_EQ(report->accumulated_velocity, 0.0);
-  EXPECT_EQ(report->max_position, 0.0);
-  EXPECT_EQ(report->max_velocity, 0.0);
-  EXPECT_FALSE(report->first_divergence.has_value());
+  EXPECT_TRUE(report.passed());
+  EXPECT_EQ(report.steps, 50);
+  EXPECT_EQ(report.per_step.size(), 50u);
+  EXPECT_EQ(report.accumulated_position, 0.0);
+  EXPECT_EQ(report.accumulated_velocity, 0.0);
+  EXPECT_EQ(report.max_position, 0.0);
+  EXPECT_EQ(report.max_velocity, 0.0);
+  EXPECT_FALSE(report.first_divergence.has_value());
 }
 
 TEST_F(Grader, FailsAPositionPerturbedBy1e9AtExactlyThatStepAndParticle) {
   perturb(/*frame=*/17, /*particle=*/2, /*coordinate=*/1, /*velocity=*/false, 1e-9);
   auto report = grade();
-  ASSERT_TRUE(report) << report.error();
-  EXPECT_FALSE(report->passed());
-  EXPECT_FALSE(report->max_position_passed());
-  ASSERT_TRUE(report->first_divergence.has_value());
-  EXPECT_EQ(report->first_divergence->step, 17);
-  EXPECT_EQ(report->first_divergence->particle, 2);
-  EXPECT_NEAR(report->first_divergence->position_residual, 1e-9, 1e-15);
-  for (std::int64_t k = 1; k < 17; ++k) EXPECT_EQ(report->per_step[k - 1].max_position, 0.0) << k;
-  EXPECT_EQ(report->per_step[16].max_position_particle, 2);
+  EXPECT_FALSE(report.passed());
+  EXPECT_FALSE(report.max_position_passed());
+  ASSERT_TRUE(report.first_divergence.has_value());
+  EXPECT_EQ(report.first_divergence->step, 17);
+  EXPECT_EQ(report.first_divergence->particle, 2);
+  EXPECT_NEAR(report.first_divergence->position_residual, 1e-9, 1e-15);
+  for (std::int64_t k = 1; k < 17; ++k) EXPECT_EQ(report.per_step[k - 1].max_position, 0.0) << k;
+  EXPECT_EQ(report.per_step[16].max_position_particle, 2);
 }
 
 TEST_F(Grader, FailsAVelocityPerturbationOnTheVelocityCriterion) {
   perturb(/*frame=*/3, /*particle=*/1, /*coordinate=*/0, /*velocity=*/true, -1e-9);
   auto report = grade();
-  ASSERT_TRUE(report) << report.error();
-  EXPECT_FALSE(report->passed());
-  EXPECT_FALSE(report->max_velocity_passed());
-  ASSERT_TRUE(report->first_divergence.has_value());
-  EXPECT_EQ(report->first_divergence->step, 3);
-  EXPECT_EQ(report->first_divergence->particle, 1);
-  EXPECT_NEAR(report->first_divergence->velocity_residual, 1e-9, 1e-15);
+  EXPECT_FALSE(report.passed());
+  EXPECT_FALSE(report.max_velocity_passed());
+  ASSERT_TRUE(report.first_divergence.has_value());
+  EXPECT_EQ(report.first_divergence->step, 3);
+  EXPECT_EQ(report.first_divergence->particle, 1);
+  EXPECT_NEAR(report.first_divergence->velocity_residual, 1e-9, 1e-15);
 }
 
 TEST_F(Grader, PerturbingTheFixedParticleIsCaughtToo) {
   perturb(/*frame=*/40, /*particle=*/0, /*coordinate=*/0, /*velocity=*/false, 1e-9);
   auto report = grade();
-  ASSERT_TRUE(report) << report.error();
-  EXPECT_FALSE(report->passed());
-  EXPECT_EQ(report->first_divergence->step, 40);
-  EXPECT_EQ(report->first_divergence->particle, 0);
+  EXPECT_FALSE(report.passed());
+  EXPECT_EQ(report.first_divergence->step, 40);
+  EXPECT_EQ(report.first_divergence->particle, 0);
 }
 
 // Grading measures each step's local error: a perturbation below the maximum limit passes.
 TEST_F(Grader, ToleratesAPerturbationBelowTheLimit) {
   perturb(/*frame=*/10, /*particle=*/1, /*coordinate=*/0, /*velocity=*/false, 3e-11);
   auto report = grade();
-  ASSERT_TRUE(report) << report.error();
-  EXPECT_TRUE(report->passed());
-  EXPECT_GT(report->max_position, 1e-11);
-  EXPECT_LT(report->max_position, 1e-10);
+  EXPECT_TRUE(report.passed());
+  EXPECT_GT(report.max_position, 1e-11);
+  EXPECT_LT(report.max_position, 1e-10);
 }
 
 TEST_F(Grader, NotANumberInTheFileFails) {
   perturb(/*frame=*/5, /*particle=*/1, /*coordinate=*/0, /*velocity=*/false,
           std::numeric_limits<double>::quiet_NaN());
   auto report = grade();
-  ASSERT_TRUE(report) << report.error();
-  EXPECT_FALSE(report->passed());
-  EXPECT_TRUE(std::isnan(report->max_position));
-  EXPECT_EQ(report->first_divergence->step, 5);
+  EXPECT_FALSE(report.passed());
+  EXPECT_TRUE(std::isnan(report.max_position));
+  EXPECT_EQ(report.first_divergence->step, 5);
 }
 
 TEST_F(Grader, RejectsAFileWithTooFewFrames) {
   fs::resize_file(file_, 50 * 2 * 6 * 8);  // 50 frames instead of 51
-  auto report = grade();
-  ASSERT_FALSE(report);
-  EXPECT_EQ(report.error(),
-            "the trajectory has 50 frames, but the scene takes 50 steps and so needs 51 (the "
-            "initial state and one frame per step); the file was cut short");
+  const Error report_error = thrown_by<Error>([&] { grade(); });
+  EXPECT_EQ(report_error.kind(), ErrorKind::kBadInput);
+  EXPECT_STREQ(report_error.what(),
+               "the trajectory has 50 frames, but the scene takes 50 steps and so needs 51 (the "
+               "initial state and one frame per step); the file was cut short");
 }
 
 TEST_F(Grader, RejectsAFileWithTooManyFrames) {
   fs::resize_file(file_, 52 * 2 * 6 * 8);
-  auto report = grade();
-  ASSERT_FALSE(report);
-  EXPECT_EQ(report.error(),
-            "the trajectory has 52 frames, but the scene takes 50 steps and so needs 51 (the "
-            "initial state and one frame per step)");
+  const Error report_error = thrown_by<Error>([&] { grade(); });
+  EXPECT_EQ(report_error.kind(), ErrorKind::kBadInput);
+  EXPECT_STREQ(report_error.what(),
+               "the trajectory has 52 frames, but the scene takes 50 steps and so needs 51 (the "
+               "initial state and one frame per step)");
 }
 
 TEST_F(Grader, ReportsAReferenceStepThatCannotBeTaken) {
   scene_->model.integrator.options.set("newton-max-iterations", 1);
   scene_->model.integrator.options.set("newton-tolerance", 1e-300);
   auto report = grade();
-  ASSERT_TRUE(report) << report.error();
-  EXPECT_FALSE(report->passed());
-  ASSERT_TRUE(report->reference_failure.has_value());
+  EXPECT_FALSE(report.passed());
+  ASSERT_TRUE(report.reference_failure.has_value());
   EXPECT_NE(
-      report->reference_failure->find("step 1: implicit Euler: Newton's method did not converge"),
+      report.reference_failure->find("step 1: implicit Euler: Newton's method did not converge"),
       std::string::npos)
-      << *report->reference_failure;
+      << *report.reference_failure;
 }
 
 TEST(GradeReport, CriteriaAreStrict) {
@@ -222,13 +197,11 @@ TEST(GradeReport, WritesTheResidualFile) {
   GradeReport report;
   report.accumulated_position = 2.5e-7;
   report.max_position = 0.5;
-  const auto path = fs::temp_directory_path() / "fosssim_residual_test.txt";
-  write_residual_file(path.string(), report);
-  std::ifstream in(path);
-  const std::string content{std::istreambuf_iterator<char>(in), {}};
-  fs::remove(path);
-  EXPECT_EQ(content, "1   2.5e-07\n1   0\n0   0.5\n1   0\n");
-  EXPECT_FALSE(fs::exists(path.string() + ".partial"));
+  const testing::ScratchFolder folder;
+  const std::string path = folder / "residual.txt";
+  write_residual_file(path, report);
+  EXPECT_EQ(testing::read_file(path), "1   2.5e-07\n1   0\n0   0.5\n1   0\n");
+  EXPECT_FALSE(fs::exists(path + ".partial"));
 }
 
 }  // namespace

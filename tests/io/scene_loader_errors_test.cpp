@@ -4,10 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 
 #include "core/integrators/integrator_registry.h"
 #include "io/scene_loader.h"
+#include "support/scratch_folder.h"
+#include "support/thrown.h"
 
 namespace fosssim {
 namespace {
@@ -22,9 +23,12 @@ constexpr const char* kTwoParticles =
     "<edge i=\"0\" j=\"1\"/>\n";
 
 std::string error_of(const std::string& xml) {
-  auto scene = load_scene_text(xml, "bad.xml");
-  if (scene) return "(loaded without error)";
-  return scene.error().what();
+  try {
+    load_scene_text(xml, "bad.xml");
+  } catch (const SceneError& error) {
+    return error.what();
+  }
+  return "(loaded without error)";
 }
 
 struct Case {
@@ -33,7 +37,7 @@ struct Case {
   const char* message;
 };
 
-class MalformedScene : public testing::TestWithParam<Case> {};
+class MalformedScene : public ::testing::TestWithParam<Case> {};
 
 TEST_P(MalformedScene, NamesFileLineElementAndProblem) {
   const Case& c = GetParam();
@@ -117,19 +121,22 @@ const Case kCases[] = {
      "bad.xml:3: error: <viewport>: attribute \"size\" must be positive, found 0"},
 };
 
-INSTANTIATE_TEST_SUITE_P(SceneLoader, MalformedScene, testing::ValuesIn(kCases),
-                         [](const testing::TestParamInfo<Case>& info) { return info.param.name; });
+INSTANTIATE_TEST_SUITE_P(SceneLoader, MalformedScene, ::testing::ValuesIn(kCases),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           return info.param.name;
+                         });
 
 TEST(SceneLoaderErrors, UnknownIntegratorListsEveryTypeOfTheRegistry) {
   const std::string error =
       error_of("<scene>\n<duration time=\"1\"/>\n<integrator type=\"rk4\" dt=\"0.1\"/>\n</scene>");
-  EXPECT_EQ(
-      error,
+  // The course's four first, with their aliases; then FOSSSim's own, whatever the registry holds.
+  const std::string start =
       "bad.xml:3: error: <integrator>: attribute \"type\" names an unknown integrator \"rk4\" "
       "(expected one of explicit-euler, symplectic-euler (or forward-backward-euler, "
       "semi-implicit-euler), linearized-implicit-euler (or linearized-implicit), "
-      "implicit-euler (or implicit), local-global (or fast-mass-springs), "
-      "linearly-implicit-euler)");
+      "implicit-euler (or implicit), ";
+  EXPECT_EQ(error.substr(0, start.size()), start);
+  EXPECT_EQ(error.back(), ')');
   for (const IntegratorMethod* method : integrator_methods()) {
     EXPECT_NE(error.find(std::string(method->name)), std::string::npos) << method->name;
   }
@@ -193,36 +200,36 @@ TEST(SceneLoaderErrors, EmptyText) {
 }
 
 TEST(SceneLoaderErrors, MissingFileAndDirectory) {
-  const auto missing = load_scene_file("/nonexistent/scene.xml");
-  ASSERT_FALSE(missing);
-  EXPECT_STREQ(missing.error().what(),
+  const SceneError missing =
+      thrown_by<SceneError>([] { load_scene_file("/nonexistent/scene.xml"); });
+  EXPECT_STREQ(missing.what(),
                "/nonexistent/scene.xml: error: cannot open the file: No such file or directory");
-  const auto directory = load_scene_file(std::filesystem::temp_directory_path().string());
-  ASSERT_FALSE(directory);
-  EXPECT_EQ(directory.error().problem(), "is a directory, not a file");
+  EXPECT_EQ(missing.kind(), ErrorKind::kBadInput);
+  const SceneError directory = thrown_by<SceneError>(
+      [] { load_scene_file(std::filesystem::temp_directory_path().string()); });
+  EXPECT_EQ(directory.problem(), "is a directory, not a file");
 }
 
 TEST(SceneLoaderErrors, EmptyFileOnDisk) {
-  const auto path = std::filesystem::temp_directory_path() / "fosssim_empty_scene.xml";
-  std::ofstream(path).close();
-  const auto scene = load_scene_file(path.string());
-  std::filesystem::remove(path);
-  ASSERT_FALSE(scene);
-  EXPECT_EQ(scene.error().file(), path.string());
-  EXPECT_EQ(scene.error().line(), 0);
-  EXPECT_EQ(scene.error().problem(), "the file is empty (expected a <scene> element)");
+  const testing::ScratchFolder folder;
+  const std::string path = folder.write("empty.xml", "");
+  const SceneError error = thrown_by<SceneError>([&] { load_scene_file(path); });
+  EXPECT_EQ(error.file(), path);
+  EXPECT_EQ(error.line(), 0);
+  EXPECT_EQ(error.problem(), "the file is empty (expected a <scene> element)");
 }
 
 TEST(SceneLoaderErrors, ErrorCarriesItsParts) {
-  const auto scene = load_scene_text(
-      std::string(kHeader) +
-          "<particle m=\"x\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/></scene>",
-      "parts.xml");
-  ASSERT_FALSE(scene);
-  EXPECT_EQ(scene.error().file(), "parts.xml");
-  EXPECT_EQ(scene.error().line(), 3);
-  EXPECT_EQ(scene.error().element(), "<particle> 0");
-  EXPECT_EQ(scene.error().problem(), "attribute \"m\" must be a finite number, found \"x\"");
+  const SceneError error = thrown_by<SceneError>([] {
+    load_scene_text(
+        std::string(kHeader) +
+            "<particle m=\"x\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/></scene>",
+        "parts.xml");
+  });
+  EXPECT_EQ(error.file(), "parts.xml");
+  EXPECT_EQ(error.line(), 3);
+  EXPECT_EQ(error.element(), "<particle> 0");
+  EXPECT_EQ(error.problem(), "attribute \"m\" must be a finite number, found \"x\"");
 }
 
 }  // namespace

@@ -44,8 +44,7 @@ bool contains(const std::string& text, const std::string& part) {
 TEST(GradeScene, FossSimPassesEveryTestSceneWithZeroResiduals) {
   TemporaryFolder work;
   auto scenes = discover_scenes({testing::kAssets}, {testing::kExtraCredit});
-  ASSERT_TRUE(scenes);
-  const auto results = grade_scenes(*scenes, options_for(testing::kFossSim, work), 2);
+  const auto results = grade_scenes(scenes, options_for(testing::kFossSim, work), 2);
   ASSERT_EQ(results.size(), 5u);
   for (const SceneResult& r : results) {
     EXPECT_EQ(r.verdict, Verdict::kPassed) << r.name << ": " << r.reason;
@@ -58,6 +57,22 @@ TEST(GradeScene, FossSimPassesEveryTestSceneWithZeroResiduals) {
   EXPECT_EQ(results[0].steps, 50);
   // The work folders are gone.
   EXPECT_TRUE(std::filesystem::is_empty(work.path()));
+}
+
+TEST(GradeScene, CollisionScenesAreGradedOnTheirCollisionRecordsToo) {
+  TemporaryFolder work;
+  const SceneEntry scene{"collisions/ball_pair_simple.xml",
+                         testing::kData + "/collisions/ball_pair_simple.xml", false};
+  const SceneResult own = grade_scene(scene, options_for(testing::kFossSim, work));
+  EXPECT_EQ(own.verdict, Verdict::kPassed) << own.reason;
+  // A candidate that misses the collision: its file has the right layout but no records.
+  testing::set_env("FOSSSIM", testing::kFossSim);
+  const SceneResult thin =
+      grade_scene(scene, options_for(testing::candidate("thin_balls_candidate.sh"), work));
+  EXPECT_EQ(thin.verdict, Verdict::kFailed);
+  EXPECT_TRUE(contains(thin.reason, "Collisions from step 1 (1 missed")) << thin.reason;
+  EXPECT_TRUE(contains(thin.details, "  Missed collision: Particle 0 - Particle 1 with normal"))
+      << thin.details;
 }
 
 TEST(GradeScene, PerturbedCandidateFailsAtExactlyThePerturbedStepAndParticle) {
@@ -233,17 +248,16 @@ TEST(GradeScenes, OneBadCandidateRunDoesNotStopTheBatch) {
   // The crashing candidate fails every scene, each with its reason, and all are reported.
   TemporaryFolder work;
   auto scenes = discover_scenes({testing::kAssets}, {testing::kExtraCredit});
-  ASSERT_TRUE(scenes);
   std::size_t finished = 0;
   const auto results =
-      grade_scenes(*scenes, options_for(testing::candidate("crashing_candidate.sh"), work), 2,
+      grade_scenes(scenes, options_for(testing::candidate("crashing_candidate.sh"), work), 2,
                    [&finished](const SceneResult&, std::size_t done, std::size_t total) {
                      EXPECT_EQ(done, ++finished);
                      EXPECT_EQ(total, 5u);
                    });
   ASSERT_EQ(results.size(), 5u);
   for (std::size_t k = 0; k < results.size(); ++k) {
-    EXPECT_EQ(results[k].name, (*scenes)[k].name);  // in scene order, whatever finished first
+    EXPECT_EQ(results[k].name, (scenes)[k].name);  // in scene order, whatever finished first
     EXPECT_EQ(results[k].verdict, Verdict::kCrashed);
   }
 }

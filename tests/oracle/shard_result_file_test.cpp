@@ -9,6 +9,7 @@
 #include "junit_report.h"
 #include "printable_text.h"
 #include "report_samples.h"
+#include "support/thrown.h"
 
 namespace fosssim {
 namespace {
@@ -20,13 +21,12 @@ TEST(ShardResultFile, RoundTripsEveryFieldBitForBit) {
   run.results[1].residuals->accumulated_position = 0.1 + 0.2;  // not a short decimal
   run.results[1].residuals->accumulated_velocity = -HUGE_VAL;
   auto parsed = parse_shard_result(shard_result_json(run), "test");
-  ASSERT_TRUE(parsed) << parsed.error();
-  EXPECT_EQ(parsed->candidate, run.candidate);
-  EXPECT_EQ(parsed->scenes, run.scenes);
-  ASSERT_EQ(parsed->results.size(), run.results.size());
+  EXPECT_EQ(parsed.candidate, run.candidate);
+  EXPECT_EQ(parsed.scenes, run.scenes);
+  ASSERT_EQ(parsed.results.size(), run.results.size());
   for (std::size_t k = 0; k < run.results.size(); ++k) {
     const SceneResult& a = run.results[k];
-    const SceneResult& b = parsed->results[k];
+    const SceneResult& b = parsed.results[k];
     EXPECT_EQ(a.name, b.name);
     EXPECT_EQ(a.verdict, b.verdict);
     EXPECT_EQ(printable_text(a.reason), b.reason);  // texts are stored printable
@@ -43,17 +43,17 @@ TEST(ShardResultFile, RoundTripsEveryFieldBitForBit) {
     EXPECT_EQ(a.first_divergence.has_value(), b.first_divergence.has_value());
   }
   // The reports written from the parsed run are the same bytes.
-  EXPECT_EQ(junit_xml(*parsed), junit_xml(run));
-  EXPECT_EQ(gradescope_json(*parsed), gradescope_json(run));
+  EXPECT_EQ(junit_xml(parsed), junit_xml(run));
+  EXPECT_EQ(gradescope_json(parsed), gradescope_json(run));
 }
 
 TEST(ShardResultFile, RejectsOtherFiles) {
-  EXPECT_FALSE(parse_shard_result("not json", "x"));
-  EXPECT_FALSE(parse_shard_result("{\"tests\": []}", "x"));
-  auto wrong =
-      parse_shard_result("{\"format\": \"fosssim-oracle-results\", \"version\": 99}", "x.json");
-  ASSERT_FALSE(wrong);
-  EXPECT_NE(wrong.error().find("version 99"), std::string::npos);
+  EXPECT_THROW(parse_shard_result("not json", "x"), Error);
+  EXPECT_THROW(parse_shard_result("{\"tests\": []}", "x"), Error);
+  const Error wrong_error = thrown_by<Error>([&] {
+    parse_shard_result("{\"format\": \"fosssim-oracle-results\", \"version\": 99}", "x.json");
+  });
+  EXPECT_NE(std::string(wrong_error.what()).find("version 99"), std::string::npos);
 }
 
 /// Splits a run into its shards the way `grade --shard K/N` selects scenes.
@@ -76,12 +76,11 @@ TEST(MergeShards, GivesTheWholeRunsReportsWhateverTheShardOrder) {
   std::vector<GradingRun> shards = split(whole, 4);
   std::swap(shards[0], shards[3]);
   auto merged = merge_shards(shards, {"a", "b", "c", "d"});
-  ASSERT_TRUE(merged) << merged.error();
-  ASSERT_EQ(merged->results.size(), whole.results.size());
+  ASSERT_EQ(merged.results.size(), whole.results.size());
   for (std::size_t k = 0; k < whole.results.size(); ++k) {
-    EXPECT_EQ(merged->results[k].name, whole.results[k].name);
+    EXPECT_EQ(merged.results[k].name, whole.results[k].name);
   }
-  GradingRun timeless = *merged;
+  GradingRun timeless = merged;
   timeless.wall_seconds = whole.wall_seconds;
   EXPECT_EQ(junit_xml(timeless), junit_xml(whole));
   EXPECT_EQ(gradescope_json(timeless), gradescope_json(whole));
@@ -90,25 +89,31 @@ TEST(MergeShards, GivesTheWholeRunsReportsWhateverTheShardOrder) {
 TEST(MergeShards, RefusesIncompleteDuplicatedOrForeignShards) {
   const GradingRun whole = testing::sample_run();
   std::vector<GradingRun> shards = split(whole, 3);
-  auto missing = merge_shards({shards[0], shards[2]}, {"a", "c"});
-  ASSERT_FALSE(missing);
-  EXPECT_NE(missing.error().find("2/3 are missing"), std::string::npos) << missing.error();
-  auto twice = merge_shards({shards[0], shards[1], shards[1], shards[2]}, {"a", "b", "b2", "c"});
-  ASSERT_FALSE(twice);
-  EXPECT_NE(twice.error().find("given twice"), std::string::npos);
+  const Error missing_error = thrown_by<Error>([&] {
+    merge_shards({shards[0], shards[2]}, {"a", "c"});
+  });
+  EXPECT_NE(std::string(missing_error.what()).find("2/3 are missing"), std::string::npos)
+      << missing_error.what();
+  const Error twice_error = thrown_by<Error>([&] {
+    merge_shards({shards[0], shards[1], shards[1], shards[2]}, {"a", "b", "b2", "c"});
+  });
+  EXPECT_NE(std::string(twice_error.what()).find("given twice"), std::string::npos);
   GradingRun foreign = shards[2];
   foreign.scenes.pop_back();
-  auto other = merge_shards({shards[0], shards[1], foreign}, {"a", "b", "c"});
-  ASSERT_FALSE(other);
-  EXPECT_NE(other.error().find("lists other scenes"), std::string::npos);
+  const Error other_error = thrown_by<Error>([&] {
+    merge_shards({shards[0], shards[1], foreign}, {"a", "b", "c"});
+  });
+  EXPECT_NE(std::string(other_error.what()).find("lists other scenes"), std::string::npos);
   GradingRun wrong_count = shards[2];
   wrong_count.shard = Shard{3, 4};
-  EXPECT_FALSE(merge_shards({shards[0], shards[1], wrong_count}, {"a", "b", "c"}));
+  EXPECT_THROW(merge_shards({shards[0], shards[1], wrong_count}, {"a", "b", "c"}), Error);
   GradingRun lost = shards[1];
   lost.results.pop_back();
-  auto incomplete = merge_shards({shards[0], lost, shards[2]}, {"a", "b", "c"});
-  ASSERT_FALSE(incomplete);
-  EXPECT_NE(incomplete.error().find("does not hold the result"), std::string::npos);
+  const Error incomplete_error = thrown_by<Error>([&] {
+    merge_shards({shards[0], lost, shards[2]}, {"a", "b", "c"});
+  });
+  EXPECT_NE(std::string(incomplete_error.what()).find("does not hold the result"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "app_render/program_runner.h"
-#include "render/tiny_scene.h"
+#include "support/scratch_folder.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {
@@ -78,7 +78,8 @@ TEST(WritePng, ReportsAnUnwritablePath) {
   try {
     write_png(testing::tiny_drawing(scene), "/nonexistent-folder/x.png");
     FAIL() << "expected an error";
-  } catch (const std::runtime_error& error) {
+  } catch (const Error& error) {
+    EXPECT_EQ(error.kind(), ErrorKind::kCannotWrite);
     EXPECT_NE(std::string(error.what()).find("/nonexistent-folder/x.png"), std::string::npos);
   }
 }

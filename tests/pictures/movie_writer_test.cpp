@@ -5,9 +5,11 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "app_render/program_runner.h"
 #include "pictures/cairo_painter.h"
-#include "render/tiny_scene.h"
+#include "support/run_program.h"
+#include "support/scratch_folder.h"
+#include "support/thrown.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {
@@ -46,11 +48,10 @@ TEST(MovieWriter, WritesAnMp4WithOneFramePerImage) {
   settings.height = 512;
   settings.fps = 24;
   auto movie = MovieWriter::open(folder / "tiny.mp4", settings);
-  ASSERT_TRUE(movie.has_value()) << movie.error();
   const Image frame = render_image(testing::tiny_drawing(scene));
-  for (int k = 0; k < 17; ++k) movie->write_frame(frame);
+  for (int k = 0; k < 17; ++k) movie.write_frame(frame);
   EXPECT_FALSE(std::filesystem::exists(folder / "tiny.mp4"));  // not before commit
-  movie->commit();
+  movie.commit();
   EXPECT_FALSE(std::filesystem::exists(folder / "tiny.mp4.partial"));
   EXPECT_EQ(count_frames(folder, folder / "tiny.mp4"), 17);
   const auto probe = testing::run_command(
@@ -67,10 +68,9 @@ TEST(MovieWriter, AnAbandonedMovieIsKeptAsIncomplete) {
   const testing::ScratchFolder folder;
   const Scene scene = testing::tiny_scene();
   auto movie = MovieWriter::open(folder / "cut.mp4", MovieSettings{});
-  ASSERT_TRUE(movie.has_value()) << movie.error();
   const Image frame = render_image(testing::tiny_drawing(scene));
-  for (int k = 0; k < 5; ++k) movie->write_frame(frame);
-  EXPECT_EQ(movie->abandon(), folder / "cut.mp4.incomplete");
+  for (int k = 0; k < 5; ++k) movie.write_frame(frame);
+  EXPECT_EQ(movie.abandon(), folder / "cut.mp4.incomplete");
   EXPECT_FALSE(std::filesystem::exists(folder / "cut.mp4"));
   EXPECT_EQ(count_frames(folder, folder / "cut.mp4.incomplete"), 5);
 }
@@ -78,24 +78,26 @@ TEST(MovieWriter, AnAbandonedMovieIsKeptAsIncomplete) {
 TEST(MovieWriter, SaysSoWhenFfmpegIsMissing) {
   const testing::ScratchFolder folder;
   const ScopedPath empty_path(folder.path().string());
-  auto movie = MovieWriter::open(folder / "x.mp4", MovieSettings{});
-  ASSERT_FALSE(movie.has_value());
-  EXPECT_NE(movie.error().find("ffmpeg"), std::string::npos);
-  EXPECT_NE(movie.error().find("not on PATH"), std::string::npos);
+  const Error error = thrown_by([&] { MovieWriter::open(folder / "x.mp4", MovieSettings{}); });
+  EXPECT_EQ(error.kind(), ErrorKind::kCannotWrite);
+  EXPECT_NE(std::string(error.what()).find("ffmpeg"), std::string::npos);
+  EXPECT_NE(std::string(error.what()).find("not on PATH"), std::string::npos);
 }
 
 TEST(CheckMovieSettings, RejectsOddSizesOtherFormatsAndBadRates) {
   MovieSettings ok;
-  EXPECT_FALSE(check_movie_settings("a.mp4", ok).has_value());
-  EXPECT_FALSE(check_movie_settings("A.MP4", ok).has_value());
-  EXPECT_TRUE(check_movie_settings("a.avi", ok).has_value());
-  EXPECT_TRUE(check_movie_settings("a", ok).has_value());
+  EXPECT_NO_THROW(check_movie_settings("a.mp4", ok));
+  EXPECT_NO_THROW(check_movie_settings("A.MP4", ok));
+  EXPECT_THROW(check_movie_settings("a.avi", ok), Error);
+  EXPECT_THROW(check_movie_settings("a", ok), Error);
   MovieSettings odd = ok;
   odd.width = 511;
-  EXPECT_NE(check_movie_settings("a.mp4", odd)->find("even"), std::string::npos);
+  const Error error = thrown_by([&] { check_movie_settings("a.mp4", odd); });
+  EXPECT_EQ(error.kind(), ErrorKind::kBadInput);
+  EXPECT_NE(std::string(error.what()).find("even"), std::string::npos);
   MovieSettings slow = ok;
   slow.fps = 0.0;
-  EXPECT_TRUE(check_movie_settings("a.mp4", slow).has_value());
+  EXPECT_THROW(check_movie_settings("a.mp4", slow), Error);
 }
 
 TEST(FindProgram, FindsExecutablesOnPath) {

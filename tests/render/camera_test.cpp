@@ -71,13 +71,12 @@ TEST(InitialCamera, UsesTheViewportWhenTheSceneHasOne) {
     <particle m="1" px="1" py="0" vx="0" vy="0" fixed="0"/>
     <viewport cx="3" cy="-2" size="7.5"/></scene>)",
                                "viewport.xml");
-  ASSERT_TRUE(scene.has_value());
-  const Camera camera = initial_camera(*scene, scene->initial, 512, 512);
+  const Camera camera = initial_camera(scene, scene.initial, 512, 512);
   EXPECT_DOUBLE_EQ(camera.cx, 3.0);
   EXPECT_DOUBLE_EQ(camera.cy, -2.0);
   EXPECT_DOUBLE_EQ(camera.scale, 7.5);
-  scene->appearance.viewport.reset();
-  EXPECT_DOUBLE_EQ(initial_camera(*scene, scene->initial, 512, 512).cx, 0.5);
+  scene.appearance.viewport.reset();
+  EXPECT_DOUBLE_EQ(initial_camera(scene, scene.initial, 512, 512).cx, 0.5);
 }
 
 TEST(PixelMapping, PutsTheCameraCentreInTheMiddleAndYDown) {

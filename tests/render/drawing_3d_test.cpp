@@ -7,12 +7,12 @@
 #include "io/scene_loader.h"
 #include "render/scene_view.h"
 #include "render/shading.h"
-#include "render/tiny_scene_3d.h"
+#include "support/scene_builder.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {
 
-using testing::add_edge;
 using testing::front_camera;
 using testing::particles_at;
 
@@ -76,35 +76,34 @@ TEST(ComposeDrawing3D, OutlinesOnlyCoarseSurfaces) {
 }
 
 TEST(ComposeDrawing3D, LeavesOutShapesBehindTheEye) {
-  Scene scene = particles_at({{0, 0, 0}, {0, 0, 7}, {1, 0, 7}, {0, 1, 7}});
+  testing::TestScene scene = particles_at({{0, 0, 0}, {0, 0, 7}, {1, 0, 7}, {0, 1, 7}});
   scene.appearance.triangles = {{1, 2, 3}};
-  add_edge(scene, 0, 1);
+  scene.add_edge(0, 1, 0.02);
   const Drawing d = draw(scene, front_camera());
   ASSERT_EQ(d.shapes.size(), 1u);
   EXPECT_TRUE(std::holds_alternative<Disc>(d.shapes[0]));
 }
 
 TEST(SceneParts3D, SurfacesStandForTheirMeshesAndPinsAreMarked) {
-  auto scene = load_scene_text(R"(<scene dim="3">
+  testing::TestScene scene(load_scene_text(R"(<scene dim="3">
     <duration time="1"/><integrator type="local-global" dt="0.01"/>
     <particle m="1" px="0" py="3" pz="0" vx="0" vy="0" vz="0" fixed="1"/>
     <particle m="1" px="0" py="2" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
     <edge i="0" j="1"/>
     <generate type="tetbox" nx="2" ny="2" nz="2" pin="bottom" k="10" m="0.1"/>
   </scene>)",
-                               "parts.xml");
-  ASSERT_TRUE(scene.has_value()) << scene.error().what();
-  add_edge(*scene, 1, 2);  // from a loose particle to the box's first vertex
-  ASSERT_EQ(scene->appearance.interior_particles.size(), 1u);  // the box's centre
-  const SceneParts3D parts = compute_scene_parts_3d(*scene);
+                                           "parts.xml"));
+  scene.add_edge(1, 2, 0.02);  // from a loose particle to the box's first vertex
+  ASSERT_EQ(scene.appearance.interior_particles.size(), 1u);  // the box's centre
+  const SceneParts3D parts = compute_scene_parts_3d(scene);
   EXPECT_EQ(parts.particles, (std::vector<int>{0, 1}));
   // The box's bottom vertices (9 of its 27) are pinned and all on its surface.
   ASSERT_EQ(parts.pins.size(), 9u);
-  for (int p : parts.pins) EXPECT_TRUE(scene->model.fixed[p]);
+  for (int p : parts.pins) EXPECT_TRUE(scene.model.fixed[p]);
   // Edges: 0-1 and 1-2 (to a surface vertex) are drawn; the box's springs are not.
   ASSERT_EQ(parts.edges.size(), 2u);
   for (int e : parts.edges) {
-    const Edge& edge = scene->model.edges[e];
+    const Edge& edge = scene.model.edges[e];
     EXPECT_TRUE(edge.i <= 1 || edge.j <= 1);
   }
 }
@@ -113,7 +112,7 @@ TEST(ComposeDrawing3D, RingsFixedParticlesAndDrawsPinsAsDots) {
   Scene scene = particles_at({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, -1, 0}});
   scene.appearance.triangles = {{0, 1, 2}};
   scene.model.fixed = {true, false, false, true};
-  scene.appearance.particle_radius[3] = 1e-4;  // tiny: drawn at kPinMinPixels
+  scene.model.particle_radius[3] = 1e-4;  // tiny: drawn at kPinMinPixels
   const Drawing d = draw(scene, front_camera());
   int rings = 0, dots = 0;
   for (const Shape& shape : d.shapes) {
@@ -188,10 +187,9 @@ TEST(SceneView, KeepsTheTwoDimensionalCameraFor2DScenes) {
     <particle m="1" px="0" py="0" vx="0" vy="0" fixed="0"/>
     <viewport cx="0" cy="0" size="1"/></scene>)",
                                "flat.xml");
-  ASSERT_TRUE(scene.has_value());
-  SceneView view(*scene, scene->initial, 512, 512);
+  SceneView view(scene, scene.initial, 512, 512);
   EXPECT_FALSE(view.is_3d());
-  EXPECT_TRUE(view.compose(scene->initial).shapes.empty());
+  EXPECT_TRUE(view.compose(scene.initial).shapes.empty());
   const Ray ray = view.ray_through(384.0, 128.0);  // world (0.5, 0.5)
   EXPECT_EQ(ray.origin, Eigen::Vector3d(0.5, 0.5, 1.0));
   EXPECT_EQ(ray.direction, -Eigen::Vector3d::UnitZ());

@@ -138,8 +138,7 @@ TEST(InitialOrbitCamera, DefaultsToAFittedThreeQuarterView) {
     <particle m="1" px="0" py="0" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
     <particle m="1" px="2" py="1" pz="-4" vx="0" vy="0" vz="0" fixed="0"/></scene>)",
                                "two.xml");
-  ASSERT_TRUE(scene.has_value()) << scene.error().what();
-  const OrbitCamera camera = initial_orbit_camera(*scene, scene->initial, 512, 512);
+  const OrbitCamera camera = initial_orbit_camera(scene, scene.initial, 512, 512);
   EXPECT_DOUBLE_EQ(camera.yaw, kDefaultYawDegrees * kDegree);
   EXPECT_DOUBLE_EQ(camera.pitch, kDefaultPitchDegrees * kDegree);
   EXPECT_DOUBLE_EQ(camera.fov, kDefaultFovDegrees * kDegree);
@@ -156,8 +155,7 @@ TEST(InitialOrbitCamera, FollowsCamera3dAndFitsWhatItLeavesOut) {
     <particle m="1" px="2" py="1" pz="-4" vx="0" vy="0" vz="0" fixed="0"/>
     <camera3d yaw="-45" pitch="95" fov="50" projection="orthographic"/></scene>)",
                                "camera.xml");
-  ASSERT_TRUE(scene.has_value()) << scene.error().what();
-  OrbitCamera camera = initial_orbit_camera(*scene, scene->initial, 512, 512);
+  OrbitCamera camera = initial_orbit_camera(scene, scene.initial, 512, 512);
   EXPECT_DOUBLE_EQ(camera.yaw, -45.0 * kDegree);
   EXPECT_DOUBLE_EQ(camera.pitch, kMaxPitchDegrees * kDegree);  // clamped
   EXPECT_DOUBLE_EQ(camera.fov, 50.0 * kDegree);
@@ -165,9 +163,9 @@ TEST(InitialOrbitCamera, FollowsCamera3dAndFitsWhatItLeavesOut) {
   EXPECT_TRUE(camera.target.isApprox(Eigen::Vector3d(1.0, 0.5, -2.0)));
   EXPECT_DOUBLE_EQ(camera.distance, fit_distance(camera, Eigen::Vector3d(0, 0, -4),
                                                  Eigen::Vector3d(2, 1, 0), 512, 512));
-  scene->appearance.camera3d->target = std::array<double, 3>{5.0, 6.0, 7.0};
-  scene->appearance.camera3d->distance = 9.0;
-  camera = initial_orbit_camera(*scene, scene->initial, 512, 512);
+  scene.appearance.camera3d->target = std::array<double, 3>{5.0, 6.0, 7.0};
+  scene.appearance.camera3d->distance = 9.0;
+  camera = initial_orbit_camera(scene, scene.initial, 512, 512);
   EXPECT_EQ(camera.target, Eigen::Vector3d(5.0, 6.0, 7.0));
   EXPECT_DOUBLE_EQ(camera.distance, 9.0);
 }
@@ -179,8 +177,7 @@ TEST(InitialOrbitCamera, AViewportGivesTheTwoDimensionalCamerasView) {
     <particle m="1" px="0.7" py="-0.3" pz="-2" vx="0" vy="0" vz="0" fixed="0"/>
     <viewport cx="0.5" cy="0.25" size="2"/></scene>)",
                                "viewport.xml");
-  ASSERT_TRUE(scene.has_value()) << scene.error().what();
-  const OrbitCamera camera = initial_orbit_camera(*scene, scene->initial, 640, 480);
+  const OrbitCamera camera = initial_orbit_camera(scene, scene.initial, 640, 480);
   EXPECT_EQ(camera.projection, Projection::kOrthographic);
   const OrbitProjection view(camera, 640, 480);
   const PixelMapping flat(Camera{0.5, 0.25, 2.0}, 640, 480);

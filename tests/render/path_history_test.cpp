@@ -22,8 +22,7 @@ TEST(PathHistory, KeepsTheLastPositionsOfEachTracedParticle) {
     <particlepath i="1" duration="0.3" r="1" g="0" b="0"/>
     <particlepath i="0" duration="0.0" r="0" g="0" b="1"/></scene>)",
                                "paths.xml");
-  ASSERT_TRUE(scene.has_value());
-  PathHistory paths(*scene);
+  PathHistory paths(scene);
   ASSERT_EQ(paths.trails().size(), 2u);
   EXPECT_EQ(paths.trails()[0].particle, 1);
   EXPECT_EQ(paths.trails()[0].capacity, 3u);

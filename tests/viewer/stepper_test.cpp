@@ -5,10 +5,10 @@
 #include <cmath>
 #include <limits>
 
-#include "app_render/program_runner.h"
 #include "core/step_error.h"
 #include "io/scene_loader.h"
 #include "io/trajectory_file.h"
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {
@@ -23,11 +23,7 @@ constexpr const char* kTwoSprings = R"(<scene>
   <simplegravity fx="0" fy="-9.81"/>
 </scene>)";
 
-Scene load() {
-  auto scene = load_scene_text(kTwoSprings, "springs.xml");
-  EXPECT_TRUE(scene.has_value());
-  return std::move(scene).value();
-}
+Scene load() { return load_scene_text(kTwoSprings, "springs.xml"); }
 
 TEST(GradingMarks, RingsByHowFarTheFileIsFromTheReference) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -64,22 +60,18 @@ TEST(GradingStepper, ShowsTheFilesFramesAndRingsTheParticlesItGotWrong) {
   const Scene scene = load();
   {  // A run of the scene with particle 2's position off by 1e-6 at step 20.
     auto writer = TrajectoryWriter::open(folder / "run.bin");
-    ASSERT_TRUE(writer.has_value());
     Simulation simulation(scene.model, scene.initial);
-    writer->write_frame(simulation.state());
+    writer.write_frame(simulation.state());
     while (!simulation.finished()) {
       simulation.step();
       State frame = simulation.state();
       if (frame.step == 20) frame.q[4] += 1e-6;
-      writer->write_frame(frame);
+      writer.write_frame(frame);
     }
-    writer->commit();
+    writer.commit();
   }
   auto file = TrajectoryReader::open(folder / "run.bin", scene.model.num_dofs());
-  ASSERT_TRUE(file.has_value());
-  auto grader = StepGrader::open(scene, *file);
-  ASSERT_TRUE(grader.has_value());
-  GradingStepper stepper(std::move(grader).value());
+  GradingStepper stepper(StepGrader::open(scene, file));
   EXPECT_EQ(stepper.state().step, 0);
   for (int k = 1; k < 20; ++k) {
     stepper.step();
@@ -88,7 +80,7 @@ TEST(GradingStepper, ShowsTheFilesFramesAndRingsTheParticlesItGotWrong) {
   stepper.step();
   EXPECT_EQ(stepper.state().step, 20);
   Vector q(6), v(6);
-  file->read_frame(20, q, v);
+  file.read_frame(20, q, v);
   EXPECT_EQ(stepper.state().q, q);  // the file's frame is what is shown
   const Overlay overlay = stepper.overlay();
   ASSERT_EQ(overlay.marks.size(), 1u);

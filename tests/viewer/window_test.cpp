@@ -7,13 +7,13 @@
 #include <filesystem>
 #include <set>
 
-#include "app_render/program_runner.h"
 #include "io/scene_loader.h"
 #include "io/trajectory_file.h"
 #include "pictures/cairo_painter.h"
-#include "render/tiny_scene.h"
-#include "render/tiny_scene_3d.h"
-#include "viewer/xvfb_server.h"
+#include "support/run_program.h"
+#include "support/scratch_folder.h"
+#include "support/tiny_scenes.h"
+#include "support/xvfb_server.h"
 
 namespace fosssim {
 namespace {
@@ -82,8 +82,8 @@ TEST_F(WindowTest, ShowsA3DSceneExactlyAsTheHeadlessPictures) {
   EXPECT_EQ(shot.pixels, read_png(folder_ / "pngs/frame_00017.png").pixels);
   // The window's run, with its idle drag spring, steps exactly as the headless one: its 18
   // frames (kept as .incomplete, since the screenshot closed the window) are the same bytes.
-  const std::string kept = testing::read_text(folder_ / "window.bin.incomplete");
-  const std::string full = testing::read_text(folder_ / "headless.bin");
+  const std::string kept = testing::read_file(folder_ / "window.bin.incomplete");
+  const std::string full = testing::read_file(folder_ / "headless.bin");
   ASSERT_EQ(kept.size(), 18u * 2u * 36u * 3u * 8u);
   EXPECT_EQ(kept, full.substr(0, kept.size()));
   EXPECT_NE(shot.pixels, read_png(folder_ / "pngs/frame_00016.png").pixels);
@@ -92,19 +92,16 @@ TEST_F(WindowTest, ShowsA3DSceneExactlyAsTheHeadlessPictures) {
 TEST_F(WindowTest, GradingModeRingsTheParticleTheFileGotWrong) {
   ASSERT_EQ(fosssim("-s scene.xml -d 0 -o run.bin").status, 0);
   auto scene = load_scene_text(kTinyScene, "scene.xml");
-  ASSERT_TRUE(scene.has_value());
   {  // Move particle 0 by 0.01 (2.56 pixels) at step 12.
-    auto reader = TrajectoryReader::open(folder_ / "run.bin", scene->model.num_dofs());
-    ASSERT_TRUE(reader.has_value());
+    auto reader = TrajectoryReader::open(folder_ / "run.bin", scene.model.num_dofs());
     auto writer = TrajectoryWriter::open(folder_ / "bad.bin");
-    ASSERT_TRUE(writer.has_value());
     State frame;
-    for (std::int64_t k = 0; k < reader->num_frames(); ++k) {
-      reader->read_frame(k, frame.q, frame.v);
+    for (std::int64_t k = 0; k < reader.num_frames(); ++k) {
+      reader.read_frame(k, frame.q, frame.v);
       if (k == 12) frame.q[0] += 0.01;
-      writer->write_frame(frame);
+      writer.write_frame(frame);
     }
-    writer->commit();
+    writer.commit();
   }
   const auto result =
       fosssim("-s scene.xml -i bad.bin --window-screenshot shot.png --window-screenshot-step 12");
@@ -112,8 +109,8 @@ TEST_F(WindowTest, GradingModeRingsTheParticleTheFileGotWrong) {
   const Image shot = read_png(folder_ / "shot.png");
   // The red ring around particle 0: radius 25.6 + 3 pixels around its centre, 2 pixels wide.
   Vector q, v;
-  auto reader = TrajectoryReader::open(folder_ / "bad.bin", scene->model.num_dofs());
-  reader->read_frame(12, q, v);
+  auto reader = TrajectoryReader::open(folder_ / "bad.bin", scene.model.num_dofs());
+  reader.read_frame(12, q, v);
   const PixelMapping mapping(Camera{0, 0, 1}, 512, 512);
   const Point2 centre = mapping.to_pixel(q[0], q[1]);
   int red = 0;

@@ -13,6 +13,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
 
 #include "io/scene_loader.h"
@@ -23,9 +24,11 @@ int main(int argc, char** argv) {
     std::cerr << "usage: perturb_trajectory SCENE FILE FRAME PARTICLE COMPONENT DELTA|flip-bit\n";
     return 2;
   }
-  auto scene = fosssim::load_scene_file(argv[1]);
-  if (!scene) {
-    std::cerr << scene.error().what() << "\n";
+  std::optional<fosssim::Scene> scene;
+  try {
+    scene.emplace(fosssim::load_scene_file(argv[1]));
+  } catch (const fosssim::Error& error) {
+    std::cerr << error.what() << "\n";
     return 2;
   }
   const int dim = scene->model.dim;
