@@ -112,20 +112,15 @@ int run_accuracy_case() {
       return iterations_effort(scene, index, text, most);
     };
   };
-  const auto anderson = [](Scene& scene) { set_option(scene, "acceleration", "anderson"); };
   const std::vector<Variant> variants = {
       {"local/global (Liu et al. 2013)", "local-global", iterations(2048)},
-      {"local/global + Chebyshev (Wang 2015)", "local-global",
+      {"local/global + Chebyshev (Wang 2015)", "accelerated-local-global",
        [&](Scene& scene, int index, std::string& text) {
          set_option(scene, "acceleration", "chebyshev");
          set_option(scene, "rho", 0.9992);
          return iterations_effort(scene, index, text, 2048);
        }},
-      {"local/global + Anderson (Peng et al. 2018)", "local-global",
-       [&](Scene& scene, int index, std::string& text) {
-         anderson(scene);
-         return iterations_effort(scene, index, text, 2048);
-       }},
+      {"local/global + Anderson (Peng et al. 2018)", "accelerated-local-global", iterations(2048)},
       {"quasi-Newton, L-BFGS (Liu et al. 2017)", "quasi-newton", iterations(1024)},
       {"Newton (newton)", "newton", tolerance_effort},
   };

@@ -233,7 +233,7 @@ void scaling_table(bool quick) {
         {"Newton (newton)", "newton"},
         {"quasi-Newton (quasi-newton)", "quasi-newton"},
         {"local/global, 10 iterations", "local-global"},
-        {"Anderson local/global", "anderson-local-global"},
+        {"Anderson local/global, 10 iterations", "accelerated-local-global"},
         {"old path: LIE, triplets + Eigen LDLT", "old-lie"},
         {"Levin's recipe: SimplicialLDLT every step", "levin"},
         {"Eigen SparseLU every step", "sparselu"}}},

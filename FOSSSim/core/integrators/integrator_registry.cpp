@@ -18,9 +18,9 @@ namespace {
 /// The course's four methods first, in the order its milestones introduce them; then the
 /// methods for meshes.
 const std::array kMethods = {
-    &kExplicitEulerMethod, &kSymplecticEulerMethod, &kLinearizedImplicitEulerMethod,
-    &kImplicitEulerMethod, &kLocalGlobalMethod,     &kLinearlyImplicitEulerMethod,
-    &kNewtonMethod,        &kQuasiNewtonMethod,
+    &kExplicitEulerMethod,         &kSymplecticEulerMethod, &kLinearizedImplicitEulerMethod,
+    &kImplicitEulerMethod,         &kLocalGlobalMethod,     &kAcceleratedLocalGlobalMethod,
+    &kLinearlyImplicitEulerMethod, &kNewtonMethod,          &kQuasiNewtonMethod,
 };
 }  // namespace
 

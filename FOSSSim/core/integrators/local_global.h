@@ -163,6 +163,11 @@ class LocalGlobal final : public Integrator {
 /// start, pins, penalty, solver.
 extern const IntegratorMethod kLocalGlobalMethod;
 
+/// Registry entry: "accelerated-local-global", also "anderson-local-global": LocalGlobal with
+/// Acceleration::kAnderson (or kChebyshev). Options: those of local-global, and acceleration,
+/// window, rho.
+extern const IntegratorMethod kAcceleratedLocalGlobalMethod;
+
 /// The settings the options of kLocalGlobalMethod hold.
 LocalGlobalSettings local_global_settings(const OptionValues& options);
 
