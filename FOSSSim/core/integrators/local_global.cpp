@@ -56,6 +56,7 @@ void LocalGlobal<D>::advance(State& state) {
     for (int p : free_.particles()) p_.row(p) = q.row(p);
   }
   assemble_constant_rhs(state);
+  if (settings_.acceleration == Acceleration::kAnderson) start_q_ = state.q;
   last_iterations_ = 0;
   iterate();
   for (int p : free_.particles()) {
@@ -118,9 +119,8 @@ template <int D>
 void LocalGlobal<D>::factor() {
   const int n = free_.num_particles();
   if (n == 0) return;
-  q_matrix_ = assemble_local_global_matrix(model().mass, free_, split_.springs, anchors_,
-                                           model().integrator.dt);
-  const SparseMatrix& Q = q_matrix_;
+  const SparseMatrix Q = assemble_local_global_matrix(model().mass, free_, split_.springs, anchors_,
+                                                      model().integrator.dt);
   bool ok = false;
   if (factorizations_ > 0) {
     ok = solver_.refactor(Q);

@@ -130,9 +130,11 @@ class LocalGlobal final : public Integrator {
   /// The free particles' rows of p_ as one vector, and back.
   Vector free_positions() const;
   void set_free_positions(const Vector& u);
-  /// The global step's objective ½ tr(UᵀQU) - tr(UᵀR) at the free positions U for the
-  /// right side R of their local step (rhs_): the local/global energy up to a constant.
-  double objective() const;
+  /// The energy local/global iterations decrease, at p_: ½|p - y|²_M / h² + the springs'
+  /// ½ k (|δ| - l)² and Laplacian damping ½ (b/h) |δ - δⁿ|², the anchors' ½ k |p - a|², and the
+  /// explicit forces' -f·p (over the free particles; up to a constant). *round_off: the size
+  /// of its rounding error.
+  double energy(double* round_off) const;
 
   LocalGlobalSettings settings_;
   MassSpringForces split_;
@@ -146,7 +148,7 @@ class LocalGlobal final : public Integrator {
   std::vector<AnchorTerm> anchors_;                       // this step's anchors (free particles)
   std::vector<std::pair<int, double>> factored_anchors_;  // (particle, k) in Q
   SpdSolver solver_;
-  SparseMatrix q_matrix_;  // Q, kept for the objective of accelerated iterations
+  Vector start_q_;  // qⁿ, for the energy of accelerated iterations
   AndersonAcceleration anderson_;
   Points<D> y_;             // pⁿ + h vⁿ, every particle
   Points<D> p_;             // the current iterate, every particle

@@ -1,5 +1,6 @@
 // The accelerated iterations of LocalGlobal (local_global.h): Anderson and Chebyshev.
 
+#include <cmath>
 #include <limits>
 
 #include "core/integrators/local_global.h"
@@ -24,19 +25,41 @@ void LocalGlobal<D>::set_free_positions(const Vector& u) {
 }
 
 template <int D>
-double LocalGlobal<D>::objective() const {
-  const Vector u = free_positions();
-  const auto U = map_points<D>(u);
-  const Points<D> QU = q_matrix_ * U;
-  return 0.5 * U.cwiseProduct(QU).sum() - U.cwiseProduct(rhs_).sum();
+double LocalGlobal<D>::energy(double* round_off) const {
+  const double h = model().integrator.dt;
+  const auto gradient = map_points<D>(explicit_gradient_);
+  double inertia = 0.0, potential = 0.0;
+  for (int f = 0; f < free_.num_particles(); ++f) {
+    const int p = free_.particles()[f];
+    inertia += model().mass[D * p] * (p_.row(p) - y_.row(p)).squaredNorm();
+    potential += gradient.row(p).dot(p_.row(p));
+  }
+  inertia /= 2.0 * h * h;
+  const auto start = map_points<D>(start_q_);
+  for (const Spring& s : springs_) {
+    const Vec<D> delta = (p_.row(s.i) - p_.row(s.j)).transpose();
+    const double stretch = delta.norm() - s.l0;
+    potential += 0.5 * s.k * stretch * stretch;
+    if (s.b != 0.0) {  // the Laplacian damping's ½ (b/h) |δ - δⁿ|²
+      const Vec<D> start_delta = (start.row(s.i) - start.row(s.j)).transpose();
+      potential += 0.5 * (s.b / h) * (delta - start_delta).squaredNorm();
+    }
+  }
+  for (const AnchorTerm& a : anchors_) {
+    potential += 0.5 * a.k * (p_.row(a.i) - a.target.template head<D>().transpose()).squaredNorm();
+  }
+  *round_off = 1e-14 * (inertia + std::abs(potential));
+  return inertia + potential;
 }
 
 /// Peng et al. 2018: the local/global map G (a local step, then the global solve) is a
 /// fixed-point iteration; Anderson acceleration extrapolates from its recent images, and an
-/// iterate is kept only when its local/global energy (evaluated with its local step, which
-/// the next global step needs anyway) is below the last accepted one. Otherwise the plain image
+/// iterate is kept only when its energy (the incremental potential local/global minimises,
+/// energy()) is below the last accepted one's. Otherwise the plain image
 /// of the last accepted iterate, whose energy is never higher, replaces it and the history
-/// restarts: the energy decreases monotonically, as with plain local/global. The last
+/// restarts: the energy decreases monotonically, as with plain local/global, up to the
+/// round-off of evaluating it (an increase within that is accepted: near convergence the
+/// energies of successive iterates differ by less than their round-off). The last
 /// iteration is not extrapolated, so the result is an image of G.
 template <int D>
 void LocalGlobal<D>::iterate_anderson() {
@@ -47,15 +70,16 @@ void LocalGlobal<D>::iterate_anderson() {
   for (int iteration = 1; iteration <= settings_.iterations; ++iteration) {
     rhs_ = constant_rhs_;
     add_spring_directions(rhs_);
-    double energy = objective();
-    if (iteration > 1 && !(energy < accepted)) {
+    double round_off = 0.0;
+    double value = energy(&round_off);
+    if (iteration > 1 && !(value < accepted + round_off)) {
       set_free_positions(fallback);
       anderson_.reset();
       rhs_ = constant_rhs_;
       add_spring_directions(rhs_);
-      energy = objective();
+      value = energy(&round_off);
     }
-    accepted = energy;
+    accepted = value;
     const Vector u = free_positions();
     last_change_ = global_solve(rhs_);
     last_iterations_ = iteration;
@@ -98,7 +122,7 @@ void LocalGlobal<D>::iterate_chebyshev() {
 #define FOSSSIM_LOCAL_GLOBAL_ACCELERATION(D)                       \
   template Vector LocalGlobal<D>::free_positions() const;          \
   template void LocalGlobal<D>::set_free_positions(const Vector&); \
-  template double LocalGlobal<D>::objective() const;               \
+  template double LocalGlobal<D>::energy(double*) const;           \
   template void LocalGlobal<D>::iterate_anderson();                \
   template void LocalGlobal<D>::iterate_chebyshev();
 FOSSSIM_LOCAL_GLOBAL_ACCELERATION(2)
