@@ -34,6 +34,7 @@ struct Variant {
 std::pair<State, State> moving_states() {
   Scene scene = cloth_3d(kClothSize, "newton");
   set_option(scene, "tolerance", 1e-12);
+  set_option(scene, "max-iterations", 1000);
   std::unique_ptr<Integrator> newton = make_integrator(scene.model);
   State state = scene.initial;
   State previous = state;
@@ -92,7 +93,7 @@ int run_accuracy_case() {
   // The reference: Newton to round-off, checked against an even tighter run.
   Scene reference_scene = cloth_3d(kClothSize, "newton");
   set_option(reference_scene, "tolerance", 1e-14);
-  set_option(reference_scene, "max-iterations", 200);
+  set_option(reference_scene, "max-iterations", 1000);
   const Vector exact = timed_step(reference_scene, warm_up, start, 1).first;
   set_option(reference_scene, "tolerance", 1e-15);
   const Vector tighter = timed_step(reference_scene, warm_up, start, 1).first;
