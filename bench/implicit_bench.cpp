@@ -202,6 +202,16 @@ std::vector<double> read_doubles(const std::string& path) {
   return values;
 }
 
+/// The largest difference between the doubles of two files written by cases.
+double largest_difference(const std::string& path_a, const std::string& path_b) {
+  const std::vector<double> a = read_doubles(path_a), b = read_doubles(path_b);
+  double difference = 0.0;
+  for (std::size_t k = 0; k < a.size() && k < b.size(); ++k) {
+    difference = std::max(difference, std::abs(a[k] - b[k]));
+  }
+  return difference;
+}
+
 std::string cell(const Measured& m) {
   char text[64];
   if (!m.ok) return "-";
@@ -307,11 +317,7 @@ void goals_table(bool quick) {
     const Measured ours =
         measure_steps("ball", 10, "linearly-implicit-euler", ball_steps, 1e9, ours_file);
     const Measured base = measure_steps("ball", 10, "levin", ball_steps, 1e9, base_file);
-    const std::vector<double> a = read_doubles(ours_file), b = read_doubles(base_file);
-    double deviation = 0.0;
-    for (std::size_t k = 0; k < a.size() && k < b.size(); ++k) {
-      deviation = std::max(deviation, std::abs(a[k] - b[k]));
-    }
+    const double deviation = largest_difference(ours_file, base_file);
     char notes[160];
     std::snprintf(notes, sizeof notes, "%d steps; positions agree to %.1e of the mesh size (2 m)",
                   ball_steps, deviation / 2.0);
@@ -328,11 +334,7 @@ void goals_table(bool quick) {
     const int steps = quick ? 20 : 100;
     const Measured ours = measure_steps("flag", 80, "local-global", steps, 1e9, ours_file);
     const Measured base = measure_steps("flag", 80, "student-lg", steps, 1e9, base_file);
-    const std::vector<double> a = read_doubles(ours_file), b = read_doubles(base_file);
-    double deviation = 0.0;
-    for (std::size_t k = 0; k < a.size() && k < b.size(); ++k) {
-      deviation = std::max(deviation, std::abs(a[k] - b[k]));
-    }
+    const double deviation = largest_difference(ours_file, base_file);
     char notes[160];
     std::snprintf(notes, sizeof notes, "%d steps; positions agree to %.1e m", steps + 1, deviation);
     row("flag 80x40, 50 local/global iterations vs SimplicialLLT", ours, base, notes);
