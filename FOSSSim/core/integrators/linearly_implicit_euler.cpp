@@ -36,6 +36,7 @@ constexpr std::array kOptions = {
 
 constinit const IntegratorMethod kLinearlyImplicitEulerMethod{
     .name = "linearly-implicit-euler",
+    .aliases = {},
     .summary = "one linear solve at the current state, fixed particles eliminated (CSC417 a2)",
     .options = kOptions,
     .properties = {.order = 1, .implicit = true, .energy = EnergyTrend::kDecays},

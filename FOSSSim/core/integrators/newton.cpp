@@ -81,6 +81,7 @@ constexpr std::array kOptions = {
 
 constinit const IntegratorMethod kNewtonMethod{
     .name = "newton",
+    .aliases = {},
     .summary =
         "implicit Euler solved to round-off by Newton's method with line searches, "
         "fixed particles eliminated (the reference for meshes)",
