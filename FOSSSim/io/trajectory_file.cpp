@@ -256,9 +256,10 @@ TrajectoryReader TrajectoryReader::open(const std::string& path, int dofs, int d
     for (std::int32_t c = 0; c < count; ++c) {
       std::int32_t type = -1;
       if (!read_int(file, type)) cut_short("its collisions");
-      if (type < 0 || type > 2) {
+      if (type < 0 || type > (dim == 3 ? 3 : 2)) {  // 3, particle-sphere, is 3D only
         fail(path + ": record " + record + " has a collision of unknown type " +
-             std::to_string(type) + " (expected 0, 1 or 2)");
+             std::to_string(type) +
+             (dim == 3 ? " (expected 0, 1, 2 or 3)" : " (expected 0, 1 or 2)"));
       }
       std::fseek(file, static_cast<long>(record_bytes - 4), SEEK_CUR);
     }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/collisions/proximity.h"
 #include "core/integrators/local_global.h"
 
 namespace fosssim {
@@ -48,6 +49,15 @@ double LocalGlobal<D>::energy(double* round_off) const {
   for (const AnchorTerm& a : anchors_) {
     potential += 0.5 * a.k * (p_.row(a.i) - a.target.template head<D>().transpose()).squaredNorm();
   }
+  if (penalty_ != nullptr) {  // obstacle contacts: ½ k δ² within reach
+    const double k = penalty_->stiffness();
+    const auto position = [this](int p) -> Vec<D> { return p_.row(p).transpose(); };
+    for (const ObstacleContact& c : contacts_) {
+      const Separation<D> s = separation_of<D>(model(), c.pair, position);
+      const double delta = s.distance - s.radii - penalty_->thickness();
+      if (delta < 0.0) potential += 0.5 * k * delta * delta;
+    }
+  }
   *round_off = 1e-14 * (inertia + std::abs(potential));
   return inertia + potential;
 }
@@ -70,6 +80,7 @@ void LocalGlobal<D>::iterate_anderson() {
   for (int iteration = 1; iteration <= settings_.iterations; ++iteration) {
     rhs_ = constant_rhs_;
     add_spring_directions(rhs_);
+    add_contact_targets(rhs_);
     double round_off = 0.0;
     double value = energy(&round_off);
     if (iteration > 1 && !(value < accepted + round_off)) {
@@ -77,6 +88,7 @@ void LocalGlobal<D>::iterate_anderson() {
       anderson_.reset();
       rhs_ = constant_rhs_;
       add_spring_directions(rhs_);
+      add_contact_targets(rhs_);
       value = energy(&round_off);
     }
     accepted = value;
@@ -106,6 +118,7 @@ void LocalGlobal<D>::iterate_chebyshev() {
     const Vector current = free_positions();
     rhs_ = constant_rhs_;
     add_spring_directions(rhs_);
+    add_contact_targets(rhs_);
     last_change_ = global_solve(rhs_);
     last_iterations_ = iteration;
     if (settings_.tolerance > 0.0 && last_change_ <= settings_.tolerance) break;
