@@ -4,7 +4,7 @@
 set -eu
 
 PACKAGES="cmake ninja-build g++ pkg-config
-  libeigen3-dev libtinyxml2-dev libcli11-dev nlohmann-json3-dev libsuitesparse-dev
+  libeigen3-dev libtinyxml2-dev libcli11-dev nlohmann-json3-dev libsuitesparse-dev libopenblas-dev
   libgtest-dev libbenchmark-dev python3
   libcairo2-dev libssl-dev freeglut3-dev ffmpeg xvfb xauth"
 
