@@ -1,12 +1,7 @@
 #include "io/text_lines.h"
 
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace fosssim {
 
@@ -15,21 +10,6 @@ bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
 }
 }  // namespace
-
-std::string read_text_file(const std::string& path) {
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored)) {
-    throw SceneError(path, 0, "", "is a directory, not a file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw SceneError(path, 0, "", std::string("cannot open the file: ") + std::strerror(errno));
-  }
-  std::ostringstream content;
-  content << in.rdbuf();
-  if (in.bad()) throw SceneError(path, 0, "", "cannot read the file");
-  return content.str();
-}
 
 std::vector<Word> split_words(std::string_view text, char comment) {
   std::vector<Word> words;

@@ -5,7 +5,6 @@
 #include <bit>
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
 #include <stdexcept>
 #include <vector>
 
@@ -124,26 +123,41 @@ std::string TrajectoryWriter::abandon() {
 
 // ---- TrajectoryReader -------------------------------------------------------------------------
 
-TrajectoryReader::TrajectoryReader(std::string path, std::FILE* file, int dofs, std::int64_t frames)
-    : path_(std::move(path)), file_(file), dofs_(dofs), num_frames_(frames) {}
+TrajectoryReader::TrajectoryReader(std::string path, RegularFile file, int dofs)
+    : path_(std::move(path)), file_(std::move(file)), dofs_(dofs) {
+  const std::int64_t frame_bytes = trajectory_frame_bytes(dofs);
+  if (frame_bytes == 0) {
+    throw Error(ErrorKind::kBadInput,
+                path_ + ": the scene has no particles, so its trajectory has nothing to read");
+  }
+  if (file_.size % frame_bytes != 0) {
+    throw Error(ErrorKind::kBadInput,
+                path_ + " has " + std::to_string(file_.size) +
+                    " bytes, not a whole number of frames of " + std::to_string(frame_bytes) +
+                    " bytes (" + std::to_string(dofs) +
+                    " positions and velocities); it was cut short or is for another scene");
+  }
+  num_frames_ = file_.size / frame_bytes;
+}
 
 TrajectoryReader TrajectoryReader::open(const std::string& path, int dofs) {
-  const auto fail = [](const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); };
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) fail(path + " is a directory, not a trajectory");
-  const auto size = std::filesystem::file_size(path, error);
-  if (error) fail("cannot read " + path + ": " + error.message());
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (file == nullptr) fail("cannot open " + path + ": " + system_reason());
-  const std::int64_t frame_bytes = trajectory_frame_bytes(dofs);
-  const auto bytes = static_cast<std::int64_t>(size);
-  if (frame_bytes == 0 || bytes % frame_bytes != 0) {
-    std::fclose(file);
-    fail(path + " has " + std::to_string(bytes) + " bytes, not a whole number of frames of " +
-         std::to_string(frame_bytes) + " bytes (" + std::to_string(dofs) +
-         " positions and velocities); it was cut short or is for another scene");
+  return TrajectoryReader(path, open_regular_file(path), dofs);
+}
+
+TrajectoryReader TrajectoryReader::from_bytes(std::string bytes, int dofs,
+                                              const std::string& name) {
+  auto held = std::make_shared<const std::string>(std::move(bytes));
+  RegularFile file;
+  file.size = static_cast<std::int64_t>(held->size());
+  // fmemopen of an empty buffer fails; a one-byte buffer read as empty stands in for it.
+  file.stream.reset(::fmemopen(const_cast<char*>(held->empty() ? "" : held->data()),
+                               held->empty() ? 1 : held->size(), "rb"));
+  if (file.stream == nullptr) {
+    throw Error(ErrorKind::kBadInput, "cannot read " + name + ": " + system_reason());
   }
-  return TrajectoryReader(path, file, dofs, bytes / frame_bytes);
+  TrajectoryReader reader(name, std::move(file), dofs);
+  reader.bytes_ = std::move(held);
+  return reader;
 }
 
 void TrajectoryReader::read_frame(std::int64_t k, Vector& q, Vector& v) {
@@ -151,9 +165,10 @@ void TrajectoryReader::read_frame(std::int64_t k, Vector& q, Vector& v) {
   v.resize(dofs_);
   const std::int64_t offset = k * trajectory_frame_bytes(dofs_);
   const auto count = static_cast<std::size_t>(dofs_);
-  if (std::fseek(file_.get(), static_cast<long>(offset), SEEK_SET) != 0 ||
-      std::fread(q.data(), sizeof(double), count, file_.get()) != count ||
-      std::fread(v.data(), sizeof(double), count, file_.get()) != count) {
+  std::FILE* file = file_.stream.get();
+  if (k < 0 || k >= num_frames_ || std::fseek(file, static_cast<long>(offset), SEEK_SET) != 0 ||
+      std::fread(q.data(), sizeof(double), count, file) != count ||
+      std::fread(v.data(), sizeof(double), count, file) != count) {
     throw Error(ErrorKind::kBadInput, "cannot read frame " + std::to_string(k) + " of " + path_);
   }
   to_little_endian(q.data(), count);

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/state.h"
+#include "io/input_files.h"
 #include "io/output_file.h"
 
 namespace fosssim {
@@ -52,8 +53,12 @@ class TrajectoryWriter {
 class TrajectoryReader {
  public:
   /// Opens a trajectory whose frames hold `dofs` positions and `dofs` velocities. Throws Error
-  /// (kBadInput) when the file is missing or its size is not a whole number of frames.
+  /// (kBadInput) when the file is missing, is not a regular file (a FIFO, a device: see
+  /// open_regular_file in io/input_files.h) or its size is not a whole number of frames.
   static TrajectoryReader open(const std::string& path, int dofs);
+  /// The same for a trajectory held in memory (fuzzers, tests); `name` stands for the file in
+  /// messages.
+  static TrajectoryReader from_bytes(std::string bytes, int dofs, const std::string& name);
 
   std::int64_t num_frames() const { return num_frames_; }
   int dofs() const { return dofs_; }
@@ -63,13 +68,11 @@ class TrajectoryReader {
   void read_frame(std::int64_t k, Vector& q, Vector& v);
 
  private:
-  TrajectoryReader(std::string path, std::FILE* file, int dofs, std::int64_t frames);
+  TrajectoryReader(std::string path, RegularFile file, int dofs);
 
-  struct FileCloser {
-    void operator()(std::FILE* f) const { std::fclose(f); }
-  };
   std::string path_;
-  std::unique_ptr<std::FILE, FileCloser> file_;
+  std::shared_ptr<const std::string> bytes_;  ///< what file_ reads, for from_bytes
+  RegularFile file_;
   int dofs_ = 0;
   std::int64_t num_frames_ = 0;
 };
