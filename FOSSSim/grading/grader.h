@@ -45,17 +45,23 @@ struct FirstDivergence {
   Vector previous_position, previous_velocity;    ///< the file's frame `step - 1`, the start
 };
 
+/// What grading found, in memory independent of the number of steps: the four criteria's
+/// values, the last step graded and the first divergence. Whoever needs every step's residuals
+/// (the oracle's diagnosis) takes them one by one from a StepGrader (grading/step_grader.h).
 struct GradeReport {
   GradingCriteria criteria;
-  std::int64_t steps = 0;
+  std::int64_t steps = 0;         ///< the steps to grade: the scene's num_steps()
+  std::int64_t steps_graded = 0;  ///< steps compared so far
   double accumulated_position = 0.0;
   double accumulated_velocity = 0.0;
   double max_position = 0.0;
   double max_velocity = 0.0;
-  std::vector<StepResidual> per_step;  ///< one entry per step, in order
+  std::optional<StepResidual> last_step;  ///< the residuals of the last step compared
   std::optional<FirstDivergence> first_divergence;
   /// Set when the reference integrator could not take a step from the file's state; the
-  /// comparison stops there and the grade is a failure.
+  /// comparison stops there and the grade is a failure. The step's residuals are undefined:
+  /// they count as NaN, so that every criterion fails with it (the printed report and the
+  /// residual file say so too).
   std::optional<std::string> reference_failure;
 
   bool accumulated_position_passed() const;

@@ -1,5 +1,7 @@
 #include "grading/step_grader.h"
 
+#include <limits>
+
 #include "core/step_error.h"
 #include "scripting/step_hooks.h"
 
@@ -10,7 +12,6 @@ StepGrader::StepGrader(const Scene& scene, TrajectoryReader& file, const Grading
   pipeline_.set_health_check(false);
   report_.criteria = criteria;
   report_.steps = scene.model.num_steps();
-  report_.per_step.reserve(static_cast<std::size_t>(report_.steps));
   file.read_frame(0, file_state_.q, file_state_.v);
 }
 
@@ -45,6 +46,12 @@ bool StepGrader::grade_next_step() {
     pipeline_.step(reference);
   } catch (const StepError& error) {
     report_.reference_failure = std::string("the reference integrator failed at ") + error.what();
+    constexpr double kUndefined = std::numeric_limits<double>::quiet_NaN();
+    StepResidual undefined;
+    undefined.step = k;
+    undefined.sum_position = undefined.sum_velocity = kUndefined;
+    undefined.max_position = undefined.max_velocity = kUndefined;
+    accumulate(undefined);
     return false;
   }
   Vector previous_q = std::move(file_state_.q), previous_v = std::move(file_state_.v);
@@ -97,13 +104,18 @@ void StepGrader::compare(const State& reference, const Vector& previous_q,
       report_.first_divergence = std::move(d);
     }
   }
+  accumulate(residual);
+  report_.steps_graded = residual.step;
+  report_.last_step = residual;
+}
+
+void StepGrader::accumulate(const StepResidual& residual) {
   report_.accumulated_position += residual.sum_position;
   report_.accumulated_velocity += residual.sum_velocity;
   if (replaces_maximum(residual.max_position, report_.max_position))
     report_.max_position = residual.max_position;
   if (replaces_maximum(residual.max_velocity, report_.max_velocity))
     report_.max_velocity = residual.max_velocity;
-  report_.per_step.push_back(residual);
 }
 
 }  // namespace fosssim

@@ -20,7 +20,8 @@ namespace fosssim {
 /// pipeline (core/step/step_pipeline.h: the integrator, then the stages a run has, such as the
 /// scene tag's hook) and compares with the file's frame k, for every particle, fixed ones
 /// included. Non-finite reference states are compared, not rejected.
-/// The report accumulates over the steps graded so far.
+/// The report accumulates over the steps graded so far; after each step, report().last_step
+/// holds that step's residuals. Memory does not grow with the number of steps.
 class StepGrader {
  public:
   /// Starts grading. `scene` and `file` must outlive the grader. Throws Error (kBadInput) when
@@ -35,9 +36,7 @@ class StepGrader {
   /// True when there is nothing left to grade.
   bool finished() const;
   /// Number of steps graded so far.
-  std::int64_t steps_graded() const {
-    return report_.per_step.empty() ? 0 : report_.per_step.back().step;
-  }
+  std::int64_t steps_graded() const { return report_.steps_graded; }
 
   /// The report over the steps graded so far.
   const GradeReport& report() const { return report_; }
@@ -51,6 +50,8 @@ class StepGrader {
  private:
   StepGrader(const Scene& scene, TrajectoryReader& file, const GradingCriteria& criteria);
   void compare(const State& reference, const Vector& previous_q, const Vector& previous_v);
+  /// Adds one step's residuals to the report's criteria.
+  void accumulate(const StepResidual& residual);
 
   const Scene* scene_;
   TrajectoryReader* file_;

@@ -9,6 +9,7 @@
 
 #include "child_process.h"
 #include "core/error.h"
+#include "core/limits.h"
 #include "core/scene_model.h"
 #include "core/text.h"
 #include "io/trajectory_file.h"
@@ -188,7 +189,7 @@ CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_
 }
 
 std::int64_t expected_trajectory_bytes(const SceneModel& model) {
-  return (model.num_steps() + 1) * trajectory_frame_bytes(model.num_dofs());
+  return saturating_product({model.num_steps() + 1, trajectory_frame_bytes(model.num_dofs())});
 }
 
 }  // namespace fosssim
