@@ -27,12 +27,29 @@ const Image& Frame::image() {
 
 namespace {
 
-/// -o: the trajectory file (docs/command-line.md, 'Trajectory files').
+/// -o: the trajectory file (docs/command-line.md, 'Trajectory files'), in the layout of the
+/// scene's collision method (docs/collisions.md): continuous-time and hybrid steps write their
+/// sync record, then their end-of-step record.
 class TrajectoryOutput final : public FrameOutput {
  public:
-  explicit TrajectoryOutput(TrajectoryWriter writer) : writer_(std::move(writer)) {}
+  TrajectoryOutput(TrajectoryWriter writer, TrajectoryLayout layout)
+      : writer_(std::move(writer)), layout_(layout) {}
   void write(Frame& frame) override {
-    writer_.write_frame(frame.state());
+    const State& state = frame.state();
+    const StepRecord* record = frame.record();
+    if (record == nullptr) {
+      writer_.write_record(layout_, state.q, state.v, {}, {});
+    } else {
+      if (layout_ == TrajectoryLayout::kCollisionsAndPolynomials) {
+        const SyncPoint sync =
+            record->sync.value_or(SyncPoint{state.q, state.v, record->polynomials.size()});
+        const std::vector<Polynomial> logged(
+            record->polynomials.begin(),
+            record->polynomials.begin() + static_cast<std::ptrdiff_t>(sync.polynomials_logged));
+        writer_.write_record(layout_, sync.q, sync.v, record->collisions, logged);
+      }
+      writer_.write_record(layout_, state.q, state.v, record->collisions, record->polynomials);
+    }
     ++frames_;
   }
   void commit() override { writer_.commit(); }
@@ -46,6 +63,7 @@ class TrajectoryOutput final : public FrameOutput {
 
  private:
   TrajectoryWriter writer_;
+  TrajectoryLayout layout_;
   std::int64_t frames_ = 0;
 };
 
@@ -188,8 +206,8 @@ int movie_stride(const Options& options, double dt) {
 FrameOutputs FrameOutputs::open(const Scene& scene, const Options& options) {
   FrameOutputs outputs;
   if (!options.output.empty()) {
-    outputs.outputs_.push_back(
-        std::make_unique<TrajectoryOutput>(TrajectoryWriter::open(options.output)));
+    outputs.outputs_.push_back(std::make_unique<TrajectoryOutput>(
+        TrajectoryWriter::open(options.output), trajectory_layout(scene.model)));
   }
   auto add_sequence = [&](const std::string& directory, PictureFormat format) {
     make_directory(directory);
@@ -209,8 +227,8 @@ FrameOutputs FrameOutputs::open(const Scene& scene, const Options& options) {
   return outputs;
 }
 
-void FrameOutputs::write(const State& state, const SceneView& view) {
-  Frame frame(state, view);
+void FrameOutputs::write(const State& state, const SceneView& view, const StepRecord* record) {
+  Frame frame(state, view, record);
   for (auto& output : outputs_) output->write(frame);
 }
 

@@ -8,6 +8,7 @@
 
 #include "app/options.h"
 #include "core/scene.h"
+#include "core/step/step_record.h"
 #include "pictures/image.h"
 #include "render/drawing.h"
 #include "render/scene_view.h"
@@ -18,15 +19,20 @@ namespace fosssim {
 /// outputs want it.
 class Frame {
  public:
-  /// `view` draws the state as the run's pictures show it.
-  Frame(const State& state, const SceneView& view) : state_(state), view_(view) {}
+  /// `view` draws the state as the run's pictures show it; `record` is what the step that
+  /// produced the state reported (null for the initial state).
+  Frame(const State& state, const SceneView& view, const StepRecord* record = nullptr)
+      : state_(state), view_(view), record_(record) {}
   const State& state() const { return state_; }
+  /// The step's collisions, polynomials and sync point; null for the initial state.
+  const StepRecord* record() const { return record_; }
   const Drawing& drawing();
   const Image& image();
 
  private:
   const State& state_;
   const SceneView& view_;
+  const StepRecord* record_;
   std::optional<Drawing> drawing_;
   std::optional<Image> image_;
 };
@@ -57,7 +63,9 @@ class FrameOutputs {
   static FrameOutputs open(const Scene& scene, const Options& options);
 
   bool empty() const { return outputs_.empty(); }
-  void write(const State& state, const SceneView& view);
+  /// Feeds every output the next state and the record of the step that produced it (null for
+  /// the initial state).
+  void write(const State& state, const SceneView& view, const StepRecord* record = nullptr);
   void commit();
   /// After commit(): what was written and where, one phrase per output ("the trajectory
   /// out.bin (101 frames)"), joined as a sentence; "" when there were no outputs.

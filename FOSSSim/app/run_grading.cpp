@@ -11,7 +11,7 @@
 namespace fosssim {
 
 int run_grading(const Scene& scene, const Options& options) {
-  TrajectoryReader file = TrajectoryReader::open(options.input, scene.model.num_dofs());
+  TrajectoryReader file = open_trajectory(options.input, scene.model);
   ProgressBar progress("grading", scene.model.num_steps(), !options.quiet && stderr_is_terminal());
   GradeReport report;
   try {

@@ -38,7 +38,7 @@ int run_headless(const Scene& scene, const Options& options) {
         }
         simulation.step();
         view.record(simulation.state());
-        outputs.write(simulation.state(), view);
+        outputs.write(simulation.state(), view, &simulation.last_record());
         progress.update(simulation.state().step);
       }
       progress.finish();

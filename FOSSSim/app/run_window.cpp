@@ -55,7 +55,7 @@ int run_simulation_window(const Scene& scene, const Options& options) {
 
   WindowEvents events;
   events.stepped = [&](const State& state, const SceneView& v) {
-    guarded([&] { outputs.write(state, v); });
+    guarded([&] { outputs.write(state, v, &stepper.simulation().last_record()); });
   };
   events.finished = [&] {
     guarded([&] {
@@ -93,7 +93,7 @@ int run_simulation_window(const Scene& scene, const Options& options) {
 /// Replays the -i trajectory in the window, ringing the particles where it disagrees with the
 /// reference; prints the course's report when the last step has been graded.
 int run_grading_window(const Scene& scene, const Options& options) {
-  TrajectoryReader file = TrajectoryReader::open(options.input, scene.model.num_dofs());
+  TrajectoryReader file = open_trajectory(options.input, scene.model);
   GradingStepper stepper = [&] {
     try {
       return GradingStepper(StepGrader::open(scene, file));

@@ -42,6 +42,9 @@ class Force {
   /// True when the force at rest, F(q, 0), is -dU/dq for the energy of add_energy: true for
   /// conservative forces and for damping that vanishes at zero velocity, false for vortices.
   virtual bool has_potential() const { return true; }
+  /// False when the force deliberately leaves its position Jacobian out of hessX, so that
+  /// implicit integrators use it in their right-hand side only (the course's penalty force).
+  virtual bool has_jacobian() const { return true; }
   /// False when hessX or hessV may be non-symmetric (damped springs, vortices).
   virtual bool has_symmetric_jacobians() const { return true; }
   /// A short label for messages, such as "springforce(edge 3)".

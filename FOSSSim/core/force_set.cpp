@@ -2,14 +2,20 @@
 
 #include <algorithm>
 
+#include "core/collisions/penalty_force.h"
+
 namespace fosssim {
 
 ForceSet::ForceSet(const SceneModel& model) : ForceSet(model, {}) {}
 
 ForceSet::ForceSet(const SceneModel& model, std::vector<const Force*> interaction)
     : model_(&model) {
-  forces_.reserve(model.forces.size() + interaction.size());
+  forces_.reserve(model.forces.size() + 1 + interaction.size());
   for (const auto& force : model.forces) forces_.push_back(force.get());
+  if (model.collisions.has_penalty_force()) {
+    contact_ = make_penalty_force(model);
+    forces_.push_back(contact_.get());
+  }
   forces_.insert(forces_.end(), interaction.begin(), interaction.end());
 }
 

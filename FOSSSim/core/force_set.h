@@ -1,6 +1,7 @@
 #pragma once
 // The forces one simulation sums: the scene model's own, then forces owned by whoever runs it.
 
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -10,11 +11,13 @@
 namespace fosssim {
 
 /// The forces an integrator sums, in order, with the model they act on: first the model's
-/// forces (in the summation order of the force registry), then interaction forces that the
-/// caller owns and hands to the simulation, such as the window's drag spring
-/// (core/forces/drag_spring_force.h). An interaction force may change its parameters between
-/// steps (grab, move, release) but not be added or removed; with none, results are exactly
-/// those of the model alone. Non-owning: the model and the forces must outlive the set.
+/// forces (in the summation order of the force registry), then the model's contact force when
+/// its collision method has one (the penalty force, core/collisions/penalty_force.h, made here
+/// from model.collisions and summed after every other force of the model, as the course does),
+/// then interaction forces that the caller owns and hands to the simulation, such as the
+/// window's drag spring (core/forces/drag_spring_force.h). An interaction force may change its
+/// parameters between steps (grab, move, release) but not be added or removed; with none, results
+/// are exactly those of the model alone. Non-owning: the model and the forces must outlive the set.
 class ForceSet {
  public:
   /// The model's own forces.
@@ -36,6 +39,7 @@ class ForceSet {
 
  private:
   const SceneModel* model_;
+  std::unique_ptr<Force> contact_;  // the model's penalty force, or null
   std::vector<const Force*> forces_;
 };
 

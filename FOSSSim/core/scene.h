@@ -49,13 +49,12 @@ struct Appearance {
   /// the mean colour of its corners).
   static constexpr Color kDefaultMeshColor{0.25, 0.5, 0.8};
   static constexpr Color kDefaultEdgeColor{0.0, 0.388, 0.388};
-  static constexpr double kDefaultParticleRadius = 0.1;
-  static constexpr double kDefaultEdgeRadius = 0.015;
+  static constexpr Color kDefaultHalfPlaneColor{0.0, 0.0, 0.0};
 
-  std::vector<double> particle_radius;
+  // Radii are physics: SceneModel::particle_radius and SceneModel::edge_radius.
   std::vector<Color> particle_color;
-  std::vector<double> edge_radius;
   std::vector<Color> edge_color;
+  std::vector<Color> half_plane_color;  ///< per half-plane, default black
   Color background{1.0, 1.0, 1.0};
   std::vector<ParticlePath> paths;
   std::optional<Viewport> viewport;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/collisions/collision_settings.h"
 #include "core/force.h"
 #include "core/integrators/integrator_registry.h"
 #include "core/types.h"
@@ -32,14 +33,23 @@ struct Edge {
   int j = 0;
 };
 
-/// The fixed part of a scene: particles' masses and fixed flags, topology, forces in the
-/// course's summation order (docs/scene-format.md), and how to step. Positions and velocities
-/// live in State.
+/// The fixed part of a scene: particles' masses, fixed flags and radii, topology, forces in the
+/// course's summation order (docs/scene-format.md), contact, and how to step. Positions and
+/// velocities live in State.
 struct SceneModel {
+  static constexpr double kDefaultParticleRadius = 0.1;
+  static constexpr double kDefaultEdgeRadius = 0.015;
+
   int dim = 2;              ///< 2 or 3
   Vector mass;              ///< per degree of freedom: [m0, m0, m1, m1, ...], size dim*n
   std::vector<bool> fixed;  ///< per particle; fixed particles receive no force
+  /// Per particle: the radius that collisions see and pictures draw.
+  std::vector<double> particle_radius;
   std::vector<Edge> edges;
+  /// Per edge: the radius of the capsule that collisions see and pictures draw.
+  std::vector<double> edge_radius;
+  std::vector<HalfPlane> half_planes;          ///< solid obstacles, numbered in file order
+  CollisionSettings collisions;                ///< how contact is handled (docs/collisions.md)
   std::vector<std::unique_ptr<Force>> forces;  ///< summed in this order
   IntegratorSettings integrator;
   double duration = 0.0;  ///< simulated seconds

@@ -1,5 +1,6 @@
 #include "grading/grader.h"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -33,7 +34,7 @@ bool GradeReport::max_velocity_passed() const {
 }
 bool GradeReport::passed() const {
   return !reference_failure && accumulated_position_passed() && accumulated_velocity_passed() &&
-         max_position_passed() && max_velocity_passed();
+         max_position_passed() && max_velocity_passed() && (!collisions || collisions->passed());
 }
 
 GradeReport grade_trajectory(const Scene& scene, TrajectoryReader& file,
@@ -46,8 +47,17 @@ GradeReport grade_trajectory(const Scene& scene, TrajectoryReader& file,
 }
 
 void print_grade_report(std::ostream& out, const GradeReport& report) {
+  if (report.collisions) {
+    for (const std::string& line : report.collisions->lines) out << line << "\n";
+    if (report.collisions->lines_dropped > 0) {
+      out << "  (" << report.collisions->lines_dropped << " more lines not kept)\n";
+    }
+  }
   for (const Criterion& c : criteria_of(report)) {
     out << c.name << ": " << c.value << "   " << (c.passed ? "Passed." : "Failed.") << "\n";
+  }
+  if (report.collisions) {
+    out << "Collisions Passed: " << (report.collisions->passed() ? "Yes." : "No.") << "\n";
   }
   out << "Overall success: " << (report.passed() ? "Passed." : "Failed.") << std::endl;
 }
@@ -73,6 +83,18 @@ std::string describe_failure(const GradeReport& report, int dim) {
     return s.str();
   };
   if (report.reference_failure) out << *report.reference_failure << "\n";
+  if (report.collisions && !report.collisions->passed()) {
+    const CollisionGrade& c = *report.collisions;
+    out << "Collisions failed from step " << c.first_failing_step << ": " << c.missed << " missed, "
+        << c.superfluous << " superfluous, " << c.wrong_normal << " with a wrong normal; "
+        << c.polynomial_failures << " step(s) with wrong polynomials; " << c.sync_failures
+        << " sync record(s) differing from FOSSSim's (largest residual " << c.max_sync_residual
+        << ")\n";
+    const std::size_t shown = std::min<std::size_t>(c.lines.size(), 10);
+    for (std::size_t k = 0; k < shown; ++k) out << c.lines[k] << "\n";
+    const std::int64_t more = static_cast<std::int64_t>(c.lines.size() - shown) + c.lines_dropped;
+    if (more > 0) out << "  (" << more << " more lines)\n";
+  }
   if (const auto& d = report.first_divergence) {
     out << "First divergence at step " << d->step << ", particle " << d->particle
         << ": position residual " << d->position_residual << ", velocity residual "
@@ -83,7 +105,7 @@ std::string describe_failure(const GradeReport& report, int dim) {
         << "  v = " << vec(d->reference_velocity) << "\n"
         << "  file frame " << d->step << ":           x = " << vec(d->file_position)
         << "  v = " << vec(d->file_velocity) << "\n";
-  } else if (!report.reference_failure) {
+  } else if (!report.accumulated_position_passed() || !report.accumulated_velocity_passed()) {
     out << "No single step exceeds the maximum limit, but the accumulated residual does.\n";
   }
   return out.str();

@@ -45,6 +45,30 @@ struct FirstDivergence {
   Vector previous_position, previous_velocity;    ///< the file's frame `step - 1`, the start
 };
 
+/// The comparison of a step's collisions, polynomials and sync record (docs/collisions.md,
+/// 'Grading'), for trajectories whose layout has them.
+struct CollisionGrade {
+  /// At most this many lines are kept, so that grading's memory does not grow with the number
+  /// of steps; the others are counted in lines_dropped.
+  static constexpr std::size_t kMaxLines = 10000;
+  /// The course's report lines, in the order found: "  Missed collision: Particle 0 - Particle 1
+  /// with normal = 0.4 0", "Wrong number of polynomials!", and FOSSSim's own sync-record lines.
+  std::vector<std::string> lines;
+  std::int64_t lines_dropped = 0;  ///< lines found after the first kMaxLines
+  std::int64_t missed = 0;
+  std::int64_t superfluous = 0;
+  std::int64_t wrong_normal = 0;
+  std::int64_t polynomial_failures = 0;  ///< steps whose polynomial log is wrong
+  std::int64_t sync_failures = 0;        ///< steps whose sync record differs from FOSSSim's
+  double max_sync_residual = 0.0;       ///< max over steps and particles of ‖Δx‖ and ‖Δv‖
+  std::int64_t first_failing_step = 0;  ///< 0 when every step passed
+
+  bool passed() const {
+    return missed == 0 && superfluous == 0 && wrong_normal == 0 && polynomial_failures == 0 &&
+           sync_failures == 0;
+  }
+};
+
 /// What grading found, in memory independent of the number of steps: the four criteria's
 /// values, the last step graded and the first divergence. Whoever needs every step's residuals
 /// (the oracle's diagnosis) takes them one by one from a StepGrader (grading/step_grader.h).
@@ -63,6 +87,9 @@ struct GradeReport {
   /// they count as NaN, so that every criterion fails with it (the printed report and the
   /// residual file say so too).
   std::optional<std::string> reference_failure;
+  /// Set when the trajectory's layout records collisions (collision types simple,
+  /// continuous-time and hybrid); it must pass too.
+  std::optional<CollisionGrade> collisions;
 
   bool accumulated_position_passed() const;
   bool accumulated_velocity_passed() const;
@@ -102,8 +129,9 @@ GradeReport grade_trajectory(const Scene& scene, TrajectoryReader& file,
                              const GradingCriteria& criteria = {},
                              const GradingProgress& progress = {});
 
-/// Prints the course's report lines: four "<criterion>: <value>   Passed." lines, then
-/// "Overall success: Passed." or "Failed.".
+/// Prints the course's report lines: the collision report's lines (if any), four
+/// "<criterion>: <value>   Passed." lines, "Collisions Passed: Yes." or "No." for trajectories
+/// with collisions, then "Overall success: Passed." or "Failed.".
 void print_grade_report(std::ostream& out, const GradeReport& report);
 
 /// Writes residual.txt: one "<1|0>   <value>" line per criterion, in the report's order. The file

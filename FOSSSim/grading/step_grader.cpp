@@ -3,6 +3,8 @@
 #include <limits>
 
 #include "core/step_error.h"
+#include "core/text.h"
+#include "grading/collision_grading.h"
 #include "scripting/step_hooks.h"
 
 namespace fosssim {
@@ -12,6 +14,7 @@ StepGrader::StepGrader(const Scene& scene, TrajectoryReader& file, const Grading
   pipeline_.set_health_check(false);
   report_.criteria = criteria;
   report_.steps = scene.model.num_steps();
+  if (file.layout() != TrajectoryLayout::kFrames) report_.collisions.emplace();
   file.read_frame(0, file_state_.q, file_state_.v);
 }
 
@@ -43,7 +46,7 @@ bool StepGrader::grade_next_step() {
   reference.step = k - 1;
   reference.time = static_cast<double>(k - 1) * model.integrator.dt;
   try {
-    pipeline_.step(reference);
+    pipeline_.step(reference, &record_);
   } catch (const StepError& error) {
     report_.reference_failure = std::string("the reference integrator failed at ") + error.what();
     constexpr double kUndefined = std::numeric_limits<double>::quiet_NaN();
@@ -55,11 +58,51 @@ bool StepGrader::grade_next_step() {
     return false;
   }
   Vector previous_q = std::move(file_state_.q), previous_v = std::move(file_state_.v);
+  // The step's sync record precedes its end-of-step record: reading in file order keeps the
+  // reader's walk through the records one step long (io/trajectory_file.h).
+  if (report_.collisions && file_->has_sync_records()) file_->read_sync_record(k, sync_record_);
   file_->read_frame(k, file_state_.q, file_state_.v);
   file_state_.step = k;
   file_state_.time = reference.time;
   compare(reference, previous_q, previous_v);
+  if (report_.collisions) compare_records(k);
   return true;
+}
+
+void StepGrader::compare_records(std::int64_t step) {
+  CollisionGrade& grade = *report_.collisions;
+  const bool passed_before = grade.passed();
+  TrajectoryRecord written;
+  file_->read_record(step, written);
+  compare_collisions(record_.collisions, written.collisions, grade);
+  if (file_->layout() == TrajectoryLayout::kCollisionsAndPolynomials) {
+    if (!compare_polynomials(record_.polynomials, written.polynomials, grade.lines)) {
+      ++grade.polynomial_failures;
+    }
+    const TrajectoryRecord& sync = sync_record_;
+    const int dim = scene_->model.dim;
+    const Vector& q = record_.sync ? record_.sync->q : file_state_.q;
+    const Vector& v = record_.sync ? record_.sync->v : file_state_.v;
+    double worst = 0.0;
+    for (int p = 0; p < scene_->model.num_particles(); ++p) {
+      for (double r : {(sync.q.segment(dim * p, dim) - q.segment(dim * p, dim)).norm(),
+                       (sync.v.segment(dim * p, dim) - v.segment(dim * p, dim)).norm()}) {
+        if (replaces_maximum(r, worst)) worst = r;
+      }
+    }
+    if (replaces_maximum(worst, grade.max_sync_residual)) grade.max_sync_residual = worst;
+    if (!below_limit(worst, report_.criteria.maximum_limit)) {
+      ++grade.sync_failures;
+      grade.lines.push_back("  Sync record of step " + std::to_string(step) +
+                            " differs from FOSSSim's by " + to_text(worst));
+    }
+  }
+  if (passed_before && !grade.passed()) grade.first_failing_step = step;
+  if (grade.lines.size() > CollisionGrade::kMaxLines) {
+    grade.lines_dropped +=
+        static_cast<std::int64_t>(grade.lines.size() - CollisionGrade::kMaxLines);
+    grade.lines.resize(CollisionGrade::kMaxLines);
+  }
 }
 
 void StepGrader::compare(const State& reference, const Vector& previous_q,

@@ -20,6 +20,10 @@ namespace fosssim {
 /// pipeline (core/step/step_pipeline.h: the integrator, then the stages a run has, such as the
 /// scene tag's hook) and compares with the file's frame k, for every particle, fixed ones
 /// included. Non-finite reference states are compared, not rejected.
+/// Trajectories whose layout records collisions (docs/collisions.md) are also compared step by
+/// step on their collisions (as sets, normals to 1e-9), their polynomial logs (up to a positive
+/// factor) and their sync records, against FOSSSim's own sync state (FOSSSim's addition: the
+/// course's grader adopts the file's sync record instead).
 /// The report accumulates over the steps graded so far; after each step, report().last_step
 /// holds that step's residuals. Memory does not grow with the number of steps.
 class StepGrader {
@@ -52,10 +56,13 @@ class StepGrader {
   void compare(const State& reference, const Vector& previous_q, const Vector& previous_v);
   /// Adds one step's residuals to the report's criteria.
   void accumulate(const StepResidual& residual);
+  void compare_records(std::int64_t step);
 
   const Scene* scene_;
   TrajectoryReader* file_;
   StepPipeline pipeline_;
+  StepRecord record_;             // what the reference step reported
+  TrajectoryRecord sync_record_;  // the file's sync record of the step being graded
   GradeReport report_;
   State file_state_;
   std::vector<double> position_residuals_, velocity_residuals_;

@@ -134,12 +134,15 @@ Color ElementReader::color() {
   return c;
 }
 
+std::string ElementReader::warning(const std::string& text) const {
+  return file_ + ":" + std::to_string(line()) + ": warning: " + location() + ": " + text;
+}
+
 std::vector<std::string> ElementReader::unknown_attribute_warnings() const {
   std::vector<std::string> warnings;
   for (const auto* a = element_.FirstAttribute(); a != nullptr; a = a->Next()) {
     if (asked_.count(a->Name()) == 0) {
-      warnings.push_back(file_ + ":" + std::to_string(line()) + ": warning: " + location() +
-                         ": unknown attribute \"" + a->Name() + "\" ignored");
+      warnings.push_back(warning(std::string("unknown attribute \"") + a->Name() + "\" ignored"));
     }
   }
   return warnings;

@@ -45,6 +45,8 @@ class ElementReader final : public ForceParameters {
   /// True when the element has this attribute.
   bool has(const char* name) const;
 
+  /// A warning about this element, located like errors: "file:line: warning: <element> k: text".
+  std::string warning(const std::string& text) const;
   /// Warnings for attributes that no accessor asked for.
   std::vector<std::string> unknown_attribute_warnings() const;
   int line() const;

@@ -26,16 +26,19 @@ int line_of(std::string_view text, std::size_t offset) {
 
 class JsonSceneParser;
 
-/// The integrator options a JSON scene may set, as its top-level keys. Only "iterations" is
-/// one today; the others are fixed by the format (JsonSceneDefaults).
+/// The integrator options a JSON scene may set, as its top-level keys: "iterations" and
+/// "start"; the others are fixed by the format (JsonSceneDefaults).
 class KeyOptions final : public OptionSource {
  public:
   KeyOptions(JsonSceneParser& parser, const json& root) : parser_(parser), root_(root) {}
   bool has(std::string_view name) override {
-    return name == "iterations" && root_.contains(std::string(name));
+    return (name == "iterations" || name == "start") && root_.contains(std::string(name));
   }
   double number(std::string_view name) override;
-  std::string text(std::string_view name) override { return root_.at(std::string(name)).dump(); }
+  std::string text(std::string_view name) override {
+    const json& value = root_.at(std::string(name));
+    return value.is_string() ? value.get<std::string>() : value.dump();
+  }
   [[noreturn]] void fail(std::string_view name, const std::string& problem) override;
 
  private:
@@ -52,7 +55,7 @@ class JsonSceneParser {
       fail("the file must hold a JSON object such as {\"obj\": \"cloth.obj\", \"k\": 1000}");
     for (const auto& [key, value] : root.items()) {
       if (key != "obj" && key != "k" && key != "b" && key != "m" && key != "h" &&
-          key != "iterations" && key != "duration") {
+          key != "iterations" && key != "start" && key != "duration") {
         scene_.warnings.push_back(name_ + ": warning: unknown key \"" + key + "\" ignored");
       }
     }
@@ -65,6 +68,7 @@ class JsonSceneParser {
     model.integrator.use(integrator_method("local-global"));
     model.integrator.dt = positive(root, "h", JsonSceneDefaults::kTimeStep);
     model.integrator.options.set("iterations", JsonSceneDefaults::kIterations);
+    model.integrator.options.set("start", JsonSceneDefaults::kStart);
     model.integrator.options.set("pins", "penalty");
     model.integrator.options.set("penalty", JsonSceneDefaults::kPenalty);
     KeyOptions options(*this, root);
@@ -74,8 +78,9 @@ class JsonSceneParser {
     const Mesh mesh = read_mesh(root);
     MeshMaterial material;
     material.k = non_negative(root, "k", -1.0);
-    material.mass = root.contains("m") ? MassRule{MassRule::kUniform, positive(root, "m", 0.0)}
-                                       : MassRule{MassRule::kArea, JsonSceneDefaults::kAreaDensity};
+    material.mass = root.contains("m")
+                        ? MassRule{MassRule::kUniform, positive(root, "m", 0.0)}
+                        : MassRule{MassRule::kVoronoi, JsonSceneDefaults::kAreaDensity};
     std::unique_ptr<Force> springs;
     try {
       springs = append_mesh(scene_, mesh, material, pinned(root, mesh.num_vertices()), "obj mesh");

@@ -18,6 +18,8 @@ struct JsonSceneDefaults {
   static constexpr double kPenalty = 1e10;         ///< w of the pins' w·CᵀC, N/m
   static constexpr double kAreaDensity = 1.0;      ///< kg/m², for masses from areas
   static constexpr double kDuration = 10.0;        ///< s; the assignment ran until closed
+  /// Each step's iterations start at the current positions pⁿ, as the assignment's do.
+  static constexpr std::string_view kStart = "current";
 };
 
 /// Reads a JSON scene of the fast mass-springs assignment:
@@ -25,13 +27,15 @@ struct JsonSceneDefaults {
 /// obj: the OBJ mesh (relative to the JSON file), whose faces and "f i j" lines give the
 /// springs (rest lengths: the initial lengths); k: every spring's stiffness (N/m); b: the
 /// pinned vertices, 1-based (optional, default none); m: every vertex's mass (optional;
-/// without it each vertex gets a third of the area of its triangles at 1 kg/m²). The scene
-/// is 3D, runs the local/global integrator with the assignment's defaults (JsonSceneDefaults:
-/// h = 1/30 s, 50 iterations, pins by penalty w = 1e10) and applies a force of -9.8 N along y
-/// to every vertex (a constant force, not m·g, as in the assignment). Optional keys of ours:
-/// "h", "iterations", "duration". Other keys become warnings. Errors (SceneError) name the
-/// file (and, for malformed JSON, the line) and the problem. The files are read through
-/// `files` (io/input_files.h), and Scene::files lists them.
+/// without it the masses are the mixed Voronoi areas of the faces, fanned into triangles, at
+/// 1 kg/m²: MassRule::kVoronoi, libigl's default mass matrix, which the assignment uses). The
+/// scene is 3D, runs the local/global integrator with the assignment's defaults
+/// (JsonSceneDefaults: h = 1/30 s, 50 iterations starting at the current positions, pins by
+/// penalty w = 1e10) and applies a force of -9.8 N along y to every vertex, pinned ones
+/// included (a constant force, not m·g, as in the assignment). Optional keys of ours: "h",
+/// "iterations", "start" (the local/global option), "duration". Other keys become warnings.
+/// Errors (SceneError) name the file (and, for malformed JSON, the line) and the problem. The
+/// files are read through `files` (io/input_files.h), and Scene::files lists them.
 Scene load_json_scene_file(const std::string& path, InputFiles& files);
 /// The same with the default limits.
 Scene load_json_scene_file(const std::string& path);

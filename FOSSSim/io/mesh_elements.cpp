@@ -108,11 +108,13 @@ MassRule read_mass_rule(ElementReader& r) {
   const std::string kind = r.has("mass") ? r.text("mass") : "uniform";
   if (kind == "uniform") return {MassRule::kUniform, r.positive("m")};
   if (kind == "total") return {MassRule::kTotal, r.positive("total")};
-  if (kind == "area") return {MassRule::kArea, r.positive("density")};
+  // "area" is the older name of "barycentric".
+  if (kind == "barycentric" || kind == "area") return {MassRule::kArea, r.positive("density")};
+  if (kind == "voronoi") return {MassRule::kVoronoi, r.positive("density")};
   if (kind == "volume") return {MassRule::kVolume, r.positive("density")};
   r.fail("mass",
-         "must be \"uniform\" (with m), \"total\" (with total), \"area\" or \"volume\" (with "
-         "density), found \"" +
+         "must be \"uniform\" (with m), \"total\" (with total), \"barycentric\" (or \"area\"), "
+         "\"voronoi\" or \"volume\" (with density), found \"" +
              kind + "\"");
 }
 

@@ -10,6 +10,7 @@
 
 #include "core/force_registry.h"
 #include "core/integrators/integrator_registry.h"
+#include "io/collision_elements.h"
 #include "io/element_reader.h"
 #include "io/json_scene_reader.h"
 #include "io/mesh_elements.h"
@@ -34,7 +35,7 @@ bool is_known_element(std::string_view name) {
   for (const char* known : kOtherElements) {
     if (name == known) return true;
   }
-  return find_force_kind(name) != nullptr || is_mesh_element(name);
+  return find_force_kind(name) != nullptr || is_mesh_element(name) || is_collision_element(name);
 }
 
 /// The element tinyxml2 names in its error text ("... XMLElement name=particle"), as "<particle>".
@@ -95,7 +96,10 @@ class AttributeOptions final : public OptionSource {
 /// Turns a parsed document into a Scene, throwing SceneError on the first problem.
 class SceneParser {
  public:
-  SceneParser(const std::string& file, InputFiles& files) : file_(file), files_(files) {}
+  SceneParser(const std::string& file, InputFiles& files, std::vector<std::string> warnings)
+      : file_(file), files_(files) {
+    scene_.warnings = std::move(warnings);
+  }
 
   Scene parse(const XMLElement& root) {
     scene_.source = file_;
@@ -105,6 +109,7 @@ class SceneParser {
     read_particles();
     read_edges();
     mesh_forces_ = read_mesh_elements(root, scene_, file_, files_);
+    read_collision_elements(root, scene_, file_);
     read_forces();
     read_appearance();
     return std::move(scene_);
@@ -258,7 +263,7 @@ class SceneParser {
     model.fixed.assign(n, false);
     scene_.initial.q.resize(dim * n);
     scene_.initial.v.resize(dim * n);
-    scene_.appearance.particle_radius.assign(n, Appearance::kDefaultParticleRadius);
+    model.particle_radius.assign(n, SceneModel::kDefaultParticleRadius);
     scene_.appearance.particle_color.assign(n, Appearance::kDefaultParticleColor);
     scene_.particle_tags.assign(n, "");
     for (int p = 0; p < n; ++p) {
@@ -269,8 +274,7 @@ class SceneParser {
         scene_.initial.v[dim * p + c] = r.number(kVelocityNames[c]);
       }
       model.fixed[p] = r.flag("fixed");
-      scene_.appearance.particle_radius[p] =
-          r.non_negative_or("radius", Appearance::kDefaultParticleRadius);
+      model.particle_radius[p] = r.non_negative_or("radius", SceneModel::kDefaultParticleRadius);
       scene_.particle_tags[p] = r.text_or_empty("tag");
       keep_warnings(r);
     }
@@ -284,8 +288,8 @@ class SceneParser {
       const int j = r.particle_index("j");
       if (i == j) r.fail("j", "must differ from i (both are " + std::to_string(i) + ")");
       scene_.model.edges.push_back({i, j});
-      scene_.appearance.edge_radius.push_back(
-          r.non_negative_or("radius", Appearance::kDefaultEdgeRadius));
+      scene_.model.edge_radius.push_back(
+          r.non_negative_or("radius", SceneModel::kDefaultEdgeRadius));
       scene_.appearance.edge_color.push_back(Appearance::kDefaultEdgeColor);
       keep_warnings(r);
     }
@@ -347,8 +351,10 @@ Scene load_scene_text(std::string_view text, const std::string& name, InputFiles
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
     throw SceneError(name, 0, "", "the file is empty (expected a <scene> element)");
   }
+  std::vector<std::string> warnings;
+  const std::string fixed = separate_run_together_attributes(text, name, warnings);
   tinyxml2::XMLDocument doc;
-  if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
+  if (doc.Parse(fixed.data(), fixed.size()) != tinyxml2::XML_SUCCESS) {
     throw xml_syntax_error(name, doc);
   }
   const XMLElement* root = doc.RootElement();
@@ -357,7 +363,7 @@ Scene load_scene_text(std::string_view text, const std::string& name, InputFiles
     throw SceneError(name, second->GetLineNum(), std::string("<") + second->Name() + ">",
                      "a second top-level element; a scene file holds one <scene>");
   }
-  Scene scene = SceneParser(name, files).parse(*root);
+  Scene scene = SceneParser(name, files, std::move(warnings)).parse(*root);
   scene.files = files.paths();
   return scene;
 }

@@ -122,9 +122,13 @@ GeneratedMesh generate_cloth(int nx, int ny, double width, double height, bool h
       }
     }
   }
-  std::vector<int> top_row(nx);
+  std::vector<int> top_row(nx), left_column(ny);
   for (int c = 0; c < nx; ++c) top_row[c] = id(0, c);
-  out.pin_sets = {{"corners", {id(0, 0), id(0, nx - 1)}}, {"top-row", top_row}, {"none", {}}};
+  for (int r = 0; r < ny; ++r) left_column[r] = id(r, 0);
+  out.pin_sets = {{"corners", {id(0, 0), id(0, nx - 1)}},
+                  {"top-row", top_row},
+                  {"left-column", left_column},
+                  {"none", {}}};
   out.default_pins = "corners";
   return out;
 }

@@ -33,7 +33,8 @@ struct GeneratedMesh {
 /// r at z = r·height/(ny - 1). Vertex (r, c) is r·nx + c. Faces are the grid's quads (so
 /// springs are the structural sides and both shear diagonals); with bend, segments join every
 /// vertex to the one two steps along each grid direction. Pin sets: "corners" (the two ends of
-/// row 0, the default), "top-row" (all of row 0), "none".
+/// row 0, the default), "top-row" (all of row 0), "left-column" (all of column 0: a flag on
+/// its pole), "none".
 GeneratedMesh generate_cloth(int nx, int ny, double width, double height, bool horizontal,
                              bool bend, std::int64_t max_vertices = Limits{}.max_particles);
 

@@ -95,6 +95,36 @@ double compute_triangle_area(const Mesh& mesh, const std::array<int, 3>& triangl
   return 0.5 * (mesh.vertices[triangle[1]] - a).cross(mesh.vertices[triangle[2]] - a).norm();
 }
 
+std::array<double, 3> compute_voronoi_corner_areas(const Mesh& mesh,
+                                                   const std::array<int, 3>& triangle) {
+  const double area = compute_triangle_area(mesh, triangle);
+  if (area == 0.0) return {0.0, 0.0, 0.0};  // no area to share, and maybe no angles
+  std::array<double, 3> length{}, cosine{}, weight{};
+  for (int c = 0; c < 3; ++c) {
+    length[c] =
+        (mesh.vertices[triangle[(c + 1) % 3]] - mesh.vertices[triangle[(c + 2) % 3]]).norm();
+  }
+  for (int c = 0; c < 3; ++c) {
+    const double a = length[(c + 1) % 3];
+    const double b = length[(c + 2) % 3];
+    cosine[c] = (a * a + b * b - length[c] * length[c]) / (2.0 * a * b);
+  }
+  for (int o = 0; o < 3; ++o) {
+    if (cosine[o] < 0.0) {  // obtuse at o: the circumcentre lies outside the triangle
+      std::array<double, 3> shares;
+      shares.fill(0.25 * area);
+      shares[o] = 0.5 * area;
+      return shares;
+    }
+  }
+  for (int c = 0; c < 3; ++c) weight[c] = cosine[c] * length[c];
+  const double sum = weight[0] + weight[1] + weight[2];
+  std::array<double, 3> part{}, shares{};
+  for (int c = 0; c < 3; ++c) part[c] = area * weight[c] / sum;
+  for (int c = 0; c < 3; ++c) shares[c] = 0.5 * (part[(c + 1) % 3] + part[(c + 2) % 3]);
+  return shares;
+}
+
 std::vector<double> compute_vertex_masses(const Mesh& mesh, const MassRule& rule) {
   const auto fail = [](const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); };
   const int n = mesh.num_vertices();
@@ -115,6 +145,14 @@ std::vector<double> compute_vertex_masses(const Mesh& mesh, const MassRule& rule
       }
       break;
     }
+    case MassRule::kVoronoi: {
+      if (mesh.faces.empty()) fail("masses from areas need faces, and the mesh has none");
+      for (const auto& triangle : compute_face_triangles(mesh)) {
+        const std::array<double, 3> shares = compute_voronoi_corner_areas(mesh, triangle);
+        for (int c = 0; c < 3; ++c) mass[triangle[c]] += rule.value * shares[c];
+      }
+      break;
+    }
     case MassRule::kVolume: {
       if (mesh.tets.empty()) fail("masses from volumes need tets, and the mesh has none");
       for (const auto& tet : mesh.tets) {
@@ -127,7 +165,7 @@ std::vector<double> compute_vertex_masses(const Mesh& mesh, const MassRule& rule
   for (int v = 0; v < n; ++v) {
     if (!(mass[v] > 0.0)) {
       fail("vertex " + std::to_string(v) + " (0-based) gets no mass: it lies on no " +
-           (rule.kind == MassRule::kArea ? "face of positive area" : "tet of positive volume") +
+           (rule.kind == MassRule::kVolume ? "tet of positive volume" : "face of positive area") +
            "; give masses per vertex instead");
     }
   }

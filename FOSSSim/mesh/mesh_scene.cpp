@@ -73,11 +73,11 @@ std::unique_ptr<Force> append_mesh(Scene& scene, const Mesh& mesh, const MeshMat
   // The mean spring length sets the drawn sizes.
   const double length = springs.empty() ? 0.0 : total_length / static_cast<double>(springs.size());
   Appearance& look = scene.appearance;
-  look.particle_radius.resize(total, kParticleRadiusPerLength * length);
+  model.particle_radius.resize(total, kParticleRadiusPerLength * length);
   look.particle_color.resize(total, Appearance::kDefaultMeshColor);
   for (const SpringTerm& s : springs) {
     model.edges.push_back({s.i, s.j});
-    look.edge_radius.push_back(kEdgeRadiusPerLength * length);
+    model.edge_radius.push_back(kEdgeRadiusPerLength * length);
     look.edge_color.push_back(Appearance::kDefaultEdgeColor);
   }
   auto add_triangles = [&](const std::vector<std::array<int, 3>>& triangles) {

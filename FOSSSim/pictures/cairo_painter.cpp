@@ -149,6 +149,15 @@ void paint_drawing(cairo_t* cr, const Drawing& drawing) {
 
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  for (const Region& region : drawing.regions) {
+    cairo_set_source_rgb(cr, region.color.r, region.color.g, region.color.b);
+    cairo_move_to(cr, region.corners[0].x, region.corners[0].y);
+    for (std::size_t k = 1; k < region.corners.size(); ++k) {
+      cairo_line_to(cr, region.corners[k].x, region.corners[k].y);
+    }
+    cairo_close_path(cr);
+    cairo_fill(cr);
+  }
   for (const Polyline& line : drawing.paths) paint_polyline(cr, line);
   for (const Shape& shape : drawing.shapes) {
     std::visit([cr](const auto& s) { paint_shape(cr, s); }, shape);

@@ -36,6 +36,43 @@ Color text_color_for(const Color& background) {
   return luminance > 0.5 ? Color{0.0, 0.0, 0.0} : Color{1.0, 1.0, 1.0};
 }
 
+namespace {
+
+/// The part of the picture [0, width] × [0, height] on the solid side of each half-plane, in its
+/// colour. The mapping is a similarity, so the side of a pixel follows from the pixel images of
+/// the half-plane's point and normal.
+void add_half_planes(const Scene& scene, const PixelMapping& mapping, Drawing& drawing) {
+  const auto& planes = scene.model.half_planes;
+  for (std::size_t h = 0; h < planes.size(); ++h) {
+    const HalfPlane& plane = planes[h];
+    const Point2 p = mapping.to_pixel(plane.point[0], plane.point[1]);
+    const Point2 q =
+        mapping.to_pixel(plane.point[0] + plane.normal[0], plane.point[1] + plane.normal[1]);
+    const double nx = q.x - p.x, ny = q.y - p.y;
+    if (nx == 0.0 && ny == 0.0) continue;
+    const auto side = [&](const Point2& u) { return (u.x - p.x) * nx + (u.y - p.y) * ny; };
+    const double w = drawing.width, hgt = drawing.height;
+    const Point2 rectangle[4] = {{0.0, 0.0}, {w, 0.0}, {w, hgt}, {0.0, hgt}};
+    Region region;
+    region.color = h < scene.appearance.half_plane_color.size()
+                       ? scene.appearance.half_plane_color[h]
+                       : Appearance::kDefaultHalfPlaneColor;
+    for (int k = 0; k < 4; ++k) {  // clip the picture's rectangle to side ≤ 0
+      const Point2& a = rectangle[k];
+      const Point2& b = rectangle[(k + 1) % 4];
+      const double sa = side(a), sb = side(b);
+      if (sa <= 0.0) region.corners.push_back(a);
+      if ((sa < 0.0 && sb > 0.0) || (sa > 0.0 && sb < 0.0)) {
+        const double t = sa / (sa - sb);
+        region.corners.push_back({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)});
+      }
+    }
+    if (region.corners.size() >= 3) drawing.regions.push_back(std::move(region));
+  }
+}
+
+}  // namespace
+
 Drawing compose_drawing(const Scene& scene, const State& state, const PathHistory& paths,
                         const Camera& camera, int width, int height, const Overlay& overlay) {
   const Appearance& look = scene.appearance;
@@ -49,6 +86,7 @@ Drawing compose_drawing(const Scene& scene, const State& state, const PathHistor
   drawing.background = look.background;
   drawing.text_color = text_color_for(look.background);
 
+  add_half_planes(scene, mapping, drawing);
   for (const Trail& trail : paths.trails()) {
     if (trail.points.size() < 2) continue;
     Polyline line;
@@ -62,14 +100,14 @@ Drawing compose_drawing(const Scene& scene, const State& state, const PathHistor
   drawing.edges.reserve(edges.size());
   for (std::size_t e = 0; e < edges.size(); ++e) {
     drawing.edges.push_back({position(state, dim, mapping, edges[e].i),
-                             position(state, dim, mapping, edges[e].j), look.edge_radius[e] * ppu,
-                             look.edge_color[e]});
+                             position(state, dim, mapping, edges[e].j),
+                             scene.model.edge_radius[e] * ppu, look.edge_color[e]});
   }
   const int n = scene.model.num_particles();
   drawing.particles.reserve(n);
   for (int p = 0; p < n; ++p) {
-    drawing.particles.push_back(
-        {position(state, dim, mapping, p), look.particle_radius[p] * ppu, look.particle_color[p]});
+    drawing.particles.push_back({position(state, dim, mapping, p),
+                                 scene.model.particle_radius[p] * ppu, look.particle_color[p]});
   }
   for (const ParticleMark& mark : overlay.marks) {
     const Disc& disc = drawing.particles.at(mark.particle);

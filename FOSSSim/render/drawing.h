@@ -51,16 +51,23 @@ struct Triangle {
   Color outline_color;
 };
 
+/// A filled convex polygon: the part of a half-plane inside a 2D picture.
+struct Region {
+  std::vector<Point2> corners;
+  Color color;
+};
+
 /// One shape of a 3D picture.
 using Shape = std::variant<Triangle, Capsule, Disc, Ring>;
 
-/// One picture, painted in this order (docs/viewing.md): background, paths, the 3D shapes,
+/// One picture, painted in this order (docs/viewing.md): background, regions, paths, the 3D shapes,
 /// edges, particles, marks, guides, then the text lines at the top-left corner. 2D pictures
 /// have no shapes; 3D pictures have only shapes, depth-sorted, instead of paths, edges and
 /// particles.
 struct Drawing {
   int width = 512, height = 512;  ///< pixels
   Color background{1.0, 1.0, 1.0};
+  std::vector<Region> regions;  ///< 2D: the half-planes, in their colours
   std::vector<Polyline> paths;
   std::vector<Shape> shapes;  ///< 3D: farthest first
   std::vector<Capsule> edges;

@@ -110,7 +110,7 @@ void add_edges(const Scene3DView& view, const SceneParts3D& parts, DepthSortedSh
     const ProjectedPoint &a = view.seen[edges[e].i], &b = view.seen[edges[e].j];
     if (!a.visible || !b.visible) continue;
     const double depth = 0.5 * (a.depth + b.depth);
-    const double radius = look.edge_radius[e];
+    const double radius = view.scene.model.edge_radius[e];
     const double pixels =
         std::max(radius * view.projection.pixels_per_unit(depth), kMinCapsulePixels);
     shapes.add(depth - radius, Capsule{a.pixel, b.pixel, pixels, look.edge_color[e]});
@@ -123,7 +123,7 @@ void add_particles(const Scene3DView& view, const SceneParts3D& parts, const Col
   auto add = [&](int p, bool pin) {
     const ProjectedPoint& seen = view.seen[p];
     if (!seen.visible) return;
-    const double radius = look.particle_radius[p];
+    const double radius = view.scene.model.particle_radius[p];
     const double pixels = radius * view.projection.pixels_per_unit(seen.depth);
     const double depth = seen.depth - radius;
     if (pin) {
@@ -153,12 +153,11 @@ void add_trails(const Scene3DView& view, const PathHistory& paths, DepthSortedSh
 }
 
 void add_overlay(const Scene3DView& view, const Overlay& overlay, Drawing& drawing) {
-  const Appearance& look = view.scene.appearance;
   for (const ParticleMark& mark : overlay.marks) {
     const ProjectedPoint& seen = view.seen.at(mark.particle);
     if (!seen.visible) continue;
-    const double pixels =
-        look.particle_radius[mark.particle] * view.projection.pixels_per_unit(seen.depth);
+    const double pixels = view.scene.model.particle_radius[mark.particle] *
+                          view.projection.pixels_per_unit(seen.depth);
     drawing.marks.push_back({seen.pixel, pixels + kMarkGap, kMarkWidth, mark.color});
   }
   if (overlay.drag) {

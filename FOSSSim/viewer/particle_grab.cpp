@@ -32,7 +32,7 @@ double drag_stiffness(const SceneModel& model, int particle) {
 }
 
 ParticleGrab::ParticleGrab(const Scene& scene) : model_(scene.model), spring_(scene.model.dim) {
-  const auto& radii = scene.appearance.particle_radius;
+  const auto& radii = scene.model.particle_radius;
   if (!radii.empty()) largest_radius_ = *std::max_element(radii.begin(), radii.end());
 }
 

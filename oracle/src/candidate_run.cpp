@@ -98,7 +98,7 @@ std::optional<Verdict> classify_ending(const ChildOutcome& outcome,
 
 /// The verdict for a trajectory file of the wrong size, or nothing when it has the right size.
 std::optional<Verdict> classify_file(const std::string& path, std::int64_t expected_bytes,
-                                     std::string& reason) {
+                                     bool exact, std::string& reason) {
   std::error_code error;
   if (!fs::exists(path, error)) {
     reason = "the candidate exited with status 0 but wrote no trajectory file";
@@ -119,10 +119,11 @@ std::optional<Verdict> classify_file(const std::string& path, std::int64_t expec
   }
   if (bytes < expected_bytes) {
     reason = "short trajectory: " + std::to_string(bytes) + " bytes, but the scene needs " +
-             std::to_string(expected_bytes) + " (steps + 1 frames)";
+             (exact ? "" : "at least ") + std::to_string(expected_bytes) +
+             (exact ? " (steps + 1 frames)" : " (steps + 1 records without collisions)");
     return Verdict::kShort;
   }
-  if (bytes > expected_bytes) {
+  if (exact && bytes > expected_bytes) {
     reason = "oversized trajectory: " + std::to_string(bytes) + " bytes, but the scene needs " +
              std::to_string(expected_bytes) + " (steps + 1 frames); not read";
     return Verdict::kOversized;
@@ -154,7 +155,7 @@ WorkFolder::~WorkFolder() {
 }
 
 CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_bytes,
-                           const CandidateRunOptions& options, const WorkFolder& work) {
+                           const CandidateRunOptions& options, const WorkFolder& work, bool exact) {
   CandidateRun run;
   run.trajectory_path = work.path() + "/out.bin";
   const std::int64_t limit = write_limit(expected_bytes);
@@ -175,12 +176,13 @@ CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_
   run.stderr_tail = last_lines(printable_text(outcome.stderr_tail), 20);
   run.problem = classify_ending(outcome, options, limit, run.reason);
   if (!run.problem) {
-    run.problem = classify_file(run.trajectory_path, expected_bytes, run.reason);
+    run.problem = classify_file(run.trajectory_path, expected_bytes, exact, run.reason);
   } else if (*run.problem == Verdict::kExitStatus || *run.problem == Verdict::kCrashed) {
     // A writer killed by its file-size limit inside a script shows as the script's exit status
     // or crash; the oversized file is the better reason.
     std::string file_reason;
-    if (classify_file(run.trajectory_path, expected_bytes, file_reason) == Verdict::kOversized) {
+    if (classify_file(run.trajectory_path, expected_bytes, exact, file_reason) ==
+        Verdict::kOversized) {
       run.problem = Verdict::kOversized;
       run.reason = file_reason + " (and " + run.reason.substr(std::string("the ").size()) + ")";
     }
@@ -189,7 +191,21 @@ CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_
 }
 
 std::int64_t expected_trajectory_bytes(const SceneModel& model) {
-  return saturating_product({model.num_steps() + 1, trajectory_frame_bytes(model.num_dofs())});
+  const std::int64_t frames = model.num_steps() + 1;
+  const std::int64_t frame = trajectory_frame_bytes(model.num_dofs());
+  switch (trajectory_layout(model)) {
+    case TrajectoryLayout::kFrames:
+      break;
+    case TrajectoryLayout::kCollisions:
+      return saturating_product({frames, frame + 4});
+    case TrajectoryLayout::kCollisionsAndPolynomials:  // sync and end record per step
+      return saturating_product({saturating_product({2, frames}) - 1, frame + 8});
+  }
+  return saturating_product({frames, frame});
+}
+
+bool trajectory_size_is_exact(const SceneModel& model) {
+  return trajectory_layout(model) == TrajectoryLayout::kFrames;
 }
 
 }  // namespace fosssim

@@ -50,13 +50,22 @@ struct CandidateRun {
 };
 
 /// The size of a complete trajectory of `model`: num_steps() + 1 frames (the initial state and
-/// one frame per step), what run_candidate is told to expect.
+/// one frame per step), what run_candidate is told to expect. For layouts with collision
+/// records (docs/collisions.md) the size depends on what collided: this is then the smallest
+/// possible size (no collisions, no polynomials), and trajectory_size_is_exact is false.
 std::int64_t expected_trajectory_bytes(const SceneModel& model);
+
+/// True when every complete trajectory of `model` has exactly expected_trajectory_bytes bytes
+/// (layouts without collision records).
+bool trajectory_size_is_exact(const SceneModel& model);
 
 /// Runs `options.candidate -s <scene_path> -d 0 -o <work>/out.bin` in `work`, with the timeout,
 /// a per-file size limit and a watch on the folder's size (both well above `expected_bytes`, so
-/// a runaway writer is stopped early), then checks the file's size against `expected_bytes`.
+/// a runaway writer is stopped early), then checks the file's size against `expected_bytes`:
+/// exactly, or (`exact` false: layouts with collision records) as a lower bound, leaving the
+/// rest to the reader, which checks the records' structure.
 CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_bytes,
-                           const CandidateRunOptions& options, const WorkFolder& work);
+                           const CandidateRunOptions& options, const WorkFolder& work,
+                           bool exact = true);
 
 }  // namespace fosssim

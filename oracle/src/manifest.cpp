@@ -44,7 +44,8 @@ ManifestEntry compute_entry(const SceneEntry& scene, const CandidateRunOptions& 
   const std::int64_t expected = expected_trajectory_bytes(model);
   try {
     WorkFolder work(work_dir);
-    const CandidateRun run = run_candidate(scene.path, expected, options, work);
+    const CandidateRun run =
+        run_candidate(scene.path, expected, options, work, trajectory_size_is_exact(model));
     if (run.problem) {
       entry.status = verdict_id(*run.problem);
       if (*run.problem == Verdict::kExitStatus)
@@ -55,7 +56,7 @@ ManifestEntry compute_entry(const SceneEntry& scene, const CandidateRunOptions& 
     // empty digest must never pass for "ok".
     std::optional<TrajectoryReader> file;
     try {
-      file.emplace(TrajectoryReader::open(run.trajectory_path, model.num_dofs()));
+      file.emplace(open_trajectory(run.trajectory_path, model));
     } catch (const Error&) {
     }
     const std::string digest = file ? sha256_file_hex(run.trajectory_path) : "";
@@ -64,7 +65,7 @@ ManifestEntry compute_entry(const SceneEntry& scene, const CandidateRunOptions& 
       return entry;
     }
     entry.frames = file->num_frames();
-    entry.bytes = expected;
+    entry.bytes = static_cast<std::int64_t>(std::filesystem::file_size(run.trajectory_path));
     entry.sha256 = digest;
     Vector q, v;
     file->read_frame(entry.frames - 1, q, v);

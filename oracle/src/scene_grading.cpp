@@ -79,7 +79,7 @@ std::optional<GradeReport> grade_file(const Scene& scene, const std::string& pat
   const int dim = scene.model.dim;
   std::optional<TrajectoryReader> file;
   try {
-    file.emplace(TrajectoryReader::open(path, scene.model.num_dofs()));
+    file.emplace(open_trajectory(path, scene.model));
   } catch (const Error& error) {
     result.verdict = Verdict::kNoOutput;
     result.reason = error.what();
@@ -127,6 +127,15 @@ std::string failure_reason(const GradeReport& report) {
     if (c.passed) continue;
     reason += (reason.empty() ? "" : ", ") + std::string(c.name) + " " + to_text(c.value) +
               " (limit " + to_text(c.limit) + ")";
+  }
+  if (report.collisions && !report.collisions->passed()) {
+    const CollisionGrade& c = *report.collisions;
+    reason += (reason.empty() ? "" : ", ") + std::string("Collisions from step ") +
+              std::to_string(c.first_failing_step) + " (" + std::to_string(c.missed) + " missed, " +
+              std::to_string(c.superfluous) + " superfluous, " + std::to_string(c.wrong_normal) +
+              " wrong normals, " + std::to_string(c.polynomial_failures) +
+              " steps with wrong polynomials, " + std::to_string(c.sync_failures) +
+              " wrong sync records)";
   }
   if (const auto& d = report.first_divergence) {
     reason += "; first divergence at step " + std::to_string(d->step) + ", particle " +
@@ -179,7 +188,8 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
   try {
     WorkFolder work(options.work_dir);
     if (options.keep_work) work.keep();
-    const CandidateRun run = run_candidate(entry.path, expected_bytes, options.run, work);
+    const CandidateRun run = run_candidate(entry.path, expected_bytes, options.run, work,
+                                           trajectory_size_is_exact(model));
     result.run_seconds = run.seconds;
     result.stderr_tail = run.stderr_tail;
     if (run.problem) {

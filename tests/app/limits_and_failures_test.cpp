@@ -25,13 +25,13 @@
 #include <vector>
 
 #include "core/integrators/integrator_registry.h"
-#include "run_program.h"
+#include "support/run_program.h"
 
 namespace fosssim {
 namespace {
 
 namespace fs = std::filesystem;
-using testing_support::ProgramResult;
+using fosssim::testing::ProgramResult;
 
 constexpr const char* kSpringScene = R"(<scene>
   <duration time="1.0"/>
@@ -51,12 +51,12 @@ constexpr const char* kClothScene = R"(<scene dim="3">
 
 constexpr const char* kCloth = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
 
-class LimitsAndFailures : public testing::Test {
+class LimitsAndFailures : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
            ("fosssim_limits_" +
-            std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     write("spring.xml", kSpringScene);
@@ -76,8 +76,8 @@ class LimitsAndFailures : public testing::Test {
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
   ProgramResult fosssim(std::vector<std::string> args) {
-    args.insert(args.begin(), FOSSSIM_BINARY);
-    return testing_support::run_program(args, dir_.string());
+    args.insert(args.begin(), fosssim::testing::fosssim_program());
+    return fosssim::testing::run_program(args, dir_.string());
   }
 
   /// Every file under the test's folder, relative, with its bytes.
@@ -97,7 +97,7 @@ class LimitsAndFailures : public testing::Test {
     const ProgramResult r = fosssim(args);
     std::string command;
     for (const std::string& a : args) command += a + " ";
-    EXPECT_EQ(r.exit_code, 2) << command << "\n" << r.err;
+    EXPECT_EQ(r.status, 2) << command << "\n" << r.err;
     EXPECT_NE(r.err.find(expected), std::string::npos) << command << "\n" << r.err;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
     EXPECT_EQ(snapshot(), before) << command;
@@ -158,7 +158,7 @@ TEST_F(LimitsAndFailures, NoOutputIsWrittenOverAnInputOnTheWay) {
 }
 
 TEST_F(LimitsAndFailures, GradingNeverReplacesTheTrajectoryOrTheScene) {
-  ASSERT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "-o", "run.bin"}).exit_code, 0);
+  ASSERT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "-o", "run.bin"}).status, 0);
   expect_refused({"-s", "spring.xml", "-d", "0", "-i", "run.bin", "--residual-file", "run.bin"},
                  "--residual-file run.bin is the trajectory to grade (-i) run.bin");
   expect_refused({"-s", "spring.xml", "-d", "0", "-i", "run.bin", "--residual-file", "spring.xml"},
@@ -208,7 +208,7 @@ TEST_F(LimitsAndFailures, StepCountsThatOverflowAreRefusedNotRunAsZeroSteps) {
 TEST_F(LimitsAndFailures, EveryLimitCanBeRaisedOrLowered) {
   expect_refused({"-s", "spring.xml", "-d", "0", "--max-steps", "99"},
                  "takes 100 steps, more than the limit of 99 steps (raise it with --max-steps N)");
-  EXPECT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "-q", "--max-steps", "100"}).exit_code, 0);
+  EXPECT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "-q", "--max-steps", "100"}).status, 0);
   expect_refused({"-s", "spring.xml", "-d", "0", "--max-particles", "1"},
                  "the scene declares 2 particles, more than the limit of 1 particles");
   write("box.xml", R"(<scene dim="3"><duration time="0.01"/>
@@ -220,9 +220,9 @@ TEST_F(LimitsAndFailures, EveryLimitCanBeRaisedOrLowered) {
   expect_refused({"-s", "big.xml", "-d", "0", "--max-file-size", "1"},
                  "big.xml: error: the file is more than the limit of 1 MiB (raise it with "
                  "--max-file-size N)");
-  EXPECT_EQ(fosssim({"-s", "big.xml", "-d", "0", "-q", "--max-file-size", "3"}).exit_code, 0);
+  EXPECT_EQ(fosssim({"-s", "big.xml", "-d", "0", "-q", "--max-file-size", "3"}).status, 0);
   for (const char* bad : {"0", "-1", "abc"}) {
-    EXPECT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "--max-steps", bad}).exit_code, 2) << bad;
+    EXPECT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "--max-steps", bad}).status, 2) << bad;
   }
 }
 
@@ -237,7 +237,7 @@ TEST_F(LimitsAndFailures, OnlyRegularFilesAreRead) {
 <clothmesh file="/dev/zero" k="1" m="1"/></scene>)");
   expect_refused({"-s", "zero.xml", "-d", "0"},
                  "/dev/zero: error: is a device, not a regular file (the mesh of zero.xml:3)");
-  ASSERT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "-o", "run.bin"}).exit_code, 0);
+  ASSERT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "-o", "run.bin"}).status, 0);
   expect_refused({"-s", "spring.xml", "-d", "0", "-i", "fifo.xml"},
                  "fifo.xml: error: is a FIFO (named pipe), not a regular file");
 }
@@ -245,11 +245,11 @@ TEST_F(LimitsAndFailures, OnlyRegularFilesAreRead) {
 // Zeros make the springs' lengths zero: the reference cannot take a step. The printed report
 // and residual.txt must say the same, line by line.
 TEST_F(LimitsAndFailures, TheResidualFileAgreesWithTheReportForAnAllZeroTrajectory) {
-  ASSERT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "-o", "run.bin"}).exit_code, 0);
+  ASSERT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "-o", "run.bin"}).status, 0);
   const auto bytes = fs::file_size(dir_ / "run.bin");
   write("zero.bin", std::string(bytes, '\0'));
   const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "-i", "zero.bin"});
-  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.status, 1) << r.err;
   const std::string residuals = read("residual.txt");
   std::istringstream printed(r.out), written(residuals);
   std::string line, entry;
@@ -274,7 +274,7 @@ TEST_F(LimitsAndFailures, ScenesWithoutFreeParticlesRunUnderEveryIntegrator) {
 <integrator type=")" + name +
                            R"(" dt="0.01"/></scene>)");
     ProgramResult r = fosssim({"-s", "empty.xml", "-d", "0", "-q", "-o", "empty.bin"});
-    EXPECT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    EXPECT_EQ(r.status, 0) << name << ": " << r.err;
     write("fixed.xml", R"(<scene dim=")" + dim + R"("><duration time="0.05"/>
 <integrator type=")" + name +
                            R"(" dt="0.01"/>
@@ -284,7 +284,7 @@ TEST_F(LimitsAndFailures, ScenesWithoutFreeParticlesRunUnderEveryIntegrator) {
                            z + R"(/>
 <edge i="0" j="1"/><springforce edge="0" k="1" l0="1"/></scene>)");
     r = fosssim({"-s", "fixed.xml", "-d", "0", "-q", "-o", "fixed.bin"});
-    EXPECT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    EXPECT_EQ(r.status, 0) << name << ": " << r.err;
     EXPECT_EQ(fs::file_size(dir_ / "fixed.bin"), 6u * 2 * 2 * std::stoul(dim) * 8) << name;
   }
 }

@@ -16,7 +16,11 @@
 
 #include "core/forces/constant_force.h"
 #include "core/forces/vortex_force.h"
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/dense.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {
@@ -28,14 +32,7 @@ FOSSSIM_TEST_SUITE_IN_2D_AND_3D(ForceEvaluationTest);
 template <int D>
 TestScene symmetric_scene(unsigned seed) {
   Random random(seed);
-  TestScene scene(D, "implicit-euler", 0.05);
-  for (int p = 0; p < 4; ++p) {
-    scene.add_particle(random.uniform(0.5, 2.0), random.uniform_vector(D, -1.0, 1.0),
-                       random.uniform_vector(D, -1.0, 1.0), p == 1);
-  }
-  scene.add_spring(0, 1, 5.0, 0.3);
-  scene.add_spring(1, 2, 2.0, 1.5);
-  scene.add_spring(2, 3, 7.0, 0.0);
+  TestScene scene = random_spring_chain(D, random);
   scene.add_simple_gravity(random.uniform_vector(D, -10.0, 10.0));
   scene.add_gravitation(0, 3, 0.8);
   scene.add_force(std::make_unique<ConstantForce<D>>(Vec<D>(random.uniform_vector(D, -1.0, 1.0))));
@@ -49,7 +46,7 @@ TYPED_TEST(ForceEvaluationTest, SymmetricJacobiansClaimHoldsForTheAssembledMatri
     const TestScene scene = symmetric_scene<D>(seed);
     const ForceSet forces(scene.model);
     ASSERT_TRUE(forces.has_symmetric_jacobians());
-    const auto& [q, v, step, time] = scene.state;
+    const auto& [q, v, step, time] = scene.initial;
     const Eigen::MatrixXd hx = dense(compute_hessian_x(forces, q, v));
     const Eigen::MatrixXd hv = dense(compute_hessian_v(forces, q, v));
     EXPECT_GT(hx.norm(), 0.0);
@@ -70,7 +67,7 @@ TYPED_TEST(ForceEvaluationTest, DampedSpringsAndVorticesMakeHessXNonSymmetric) {
     }
     const ForceSet forces(scene.model);
     EXPECT_FALSE(forces.has_symmetric_jacobians());
-    const Eigen::MatrixXd hx = dense(compute_hessian_x(forces, scene.state.q, scene.state.v));
+    const Eigen::MatrixXd hx = dense(compute_hessian_x(forces, scene.initial.q, scene.initial.v));
     EXPECT_GT(asymmetry(hx), 1e-3) << (variant == 0 ? "damped spring" : "vortex");
   }
 }
@@ -79,8 +76,8 @@ TYPED_TEST(ForceEvaluationTest, SumsOverForcesAndEnergies) {
   constexpr int D = TypeParam::value;
   const TestScene scene = symmetric_scene<D>(86);
   const auto& model = scene.model;
-  const Vector& q = scene.state.q;
-  const Vector& v = scene.state.v;
+  const Vector& q = scene.initial.q;
+  const Vector& v = scene.initial.v;
   Vector gradient = Vector::Zero(q.size());
   double potential = 0.0;
   for (const auto& force : model.forces) {

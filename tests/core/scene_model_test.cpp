@@ -12,7 +12,8 @@
 #include "core/force_set.h"
 #include "core/forces/drag_spring_force.h"
 #include "core/forces/vortex_force.h"
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/scene_builder.h"
 
 namespace fosssim::testing {
 namespace {

@@ -16,7 +16,9 @@
 #include "core/step/simulation.h"
 #include "grading/step_grader.h"
 #include "io/scene_loader.h"
+#include "support/scratch_folder.h"
 #include "support/thrown.h"
+#include "support/trajectories.h"
 
 namespace fosssim {
 namespace {
@@ -39,29 +41,12 @@ constexpr const char* kScene = R"(<scene>
   <dragdamping b="0.05"/>
 </scene>)";
 
-class Grader : public testing::Test {
+class Grader : public ::testing::Test {
  protected:
   void SetUp() override {
     scene_ = std::make_unique<Scene>(load_scene_text(kScene, "grader.xml"));
-    dir_ = fs::temp_directory_path() /
-           ("fosssim_grader_" +
-            std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    file_ = (dir_ / "run.bin").string();
-    write_trajectory(*scene_, file_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  static void write_trajectory(const Scene& scene, const std::string& path) {
-    auto writer = TrajectoryWriter::open(path);
-    Simulation simulation(scene.model, scene.initial);
-    writer.write_frame(simulation.state());
-    while (!simulation.finished()) {
-      simulation.step();
-      writer.write_frame(simulation.state());
-    }
-    writer.commit();
+    file_ = folder_ / "run.bin";
+    testing::write_simulated_trajectory(*scene_, file_);
   }
 
   /// Adds delta to one double of the file: frame k, particle p, coordinate c, of q or v.
@@ -83,7 +68,7 @@ class Grader : public testing::Test {
   }
 
   std::unique_ptr<Scene> scene_;
-  fs::path dir_;
+  testing::ScratchFolder folder_;
   std::string file_;
 };
 
@@ -116,7 +101,9 @@ TEST_F(Grader, FailsAPositionPerturbedBy1e9AtExactlyThatStepAndParticle) {
   for (std::int64_t k = 1; k <= 17; ++k) {
     ASSERT_TRUE(grader.grade_next_step());
     ASSERT_EQ(grader.report().last_step->step, k);
-    if (k < 17) EXPECT_EQ(grader.report().last_step->max_position, 0.0) << k;
+    if (k < 17) {
+      EXPECT_EQ(grader.report().last_step->max_position, 0.0) << k;
+    }
   }
   EXPECT_EQ(grader.report().last_step->max_position_particle, 2);
 }
@@ -209,7 +196,7 @@ TEST_F(Grader, AStepTheReferenceCannotTakeFailsEveryCriterionInTheReportAndTheRe
             "Maximum Position Residual: nan   Failed.\n"
             "Maximum Velocity Residual: nan   Failed.\n"
             "Overall success: Failed.\n");
-  const std::string residuals = (dir_ / "residual.txt").string();
+  const std::string residuals = folder_ / "residual.txt";
   write_residual_file(residuals, report);
   std::ifstream in(residuals);
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}),
@@ -250,13 +237,11 @@ TEST(GradeReport, WritesTheResidualFile) {
   GradeReport report;
   report.accumulated_position = 2.5e-7;
   report.max_position = 0.5;
-  const auto path = fs::temp_directory_path() / "fosssim_residual_test.txt";
-  write_residual_file(path.string(), report);
-  std::ifstream in(path);
-  const std::string content{std::istreambuf_iterator<char>(in), {}};
-  fs::remove(path);
-  EXPECT_EQ(content, "1   2.5e-07\n1   0\n0   0.5\n1   0\n");
-  EXPECT_FALSE(fs::exists(path.string() + ".partial"));
+  const testing::ScratchFolder folder;
+  const std::string path = folder / "residual.txt";
+  write_residual_file(path, report);
+  EXPECT_EQ(testing::read_file(path), "1   2.5e-07\n1   0\n0   0.5\n1   0\n");
+  EXPECT_FALSE(fs::exists(path + ".partial"));
 }
 
 }  // namespace

@@ -4,10 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 
 #include "core/integrators/integrator_registry.h"
 #include "io/scene_loader.h"
+#include "support/scratch_folder.h"
 #include "support/thrown.h"
 
 namespace fosssim {
@@ -37,7 +37,7 @@ struct Case {
   const char* message;
 };
 
-class MalformedScene : public testing::TestWithParam<Case> {};
+class MalformedScene : public ::testing::TestWithParam<Case> {};
 
 TEST_P(MalformedScene, NamesFileLineElementAndProblem) {
   const Case& c = GetParam();
@@ -121,19 +121,22 @@ const Case kCases[] = {
      "bad.xml:3: error: <viewport>: attribute \"size\" must be positive, found 0"},
 };
 
-INSTANTIATE_TEST_SUITE_P(SceneLoader, MalformedScene, testing::ValuesIn(kCases),
-                         [](const testing::TestParamInfo<Case>& info) { return info.param.name; });
+INSTANTIATE_TEST_SUITE_P(SceneLoader, MalformedScene, ::testing::ValuesIn(kCases),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           return info.param.name;
+                         });
 
 TEST(SceneLoaderErrors, UnknownIntegratorListsEveryTypeOfTheRegistry) {
   const std::string error =
       error_of("<scene>\n<duration time=\"1\"/>\n<integrator type=\"rk4\" dt=\"0.1\"/>\n</scene>");
-  EXPECT_EQ(
-      error,
+  // The course's four first, with their aliases; then FOSSSim's own, whatever the registry holds.
+  const std::string start =
       "bad.xml:3: error: <integrator>: attribute \"type\" names an unknown integrator \"rk4\" "
       "(expected one of explicit-euler, symplectic-euler (or forward-backward-euler, "
       "semi-implicit-euler), linearized-implicit-euler (or linearized-implicit), "
-      "implicit-euler (or implicit), local-global (or fast-mass-springs), "
-      "linearly-implicit-euler)");
+      "implicit-euler (or implicit), ";
+  EXPECT_EQ(error.substr(0, start.size()), start);
+  EXPECT_EQ(error.back(), ')');
   for (const IntegratorMethod* method : integrator_methods()) {
     EXPECT_NE(error.find(std::string(method->name)), std::string::npos) << method->name;
   }
@@ -208,11 +211,10 @@ TEST(SceneLoaderErrors, MissingFileAndDirectory) {
 }
 
 TEST(SceneLoaderErrors, EmptyFileOnDisk) {
-  const auto path = std::filesystem::temp_directory_path() / "fosssim_empty_scene.xml";
-  std::ofstream(path).close();
-  const SceneError error = thrown_by<SceneError>([&] { load_scene_file(path.string()); });
-  std::filesystem::remove(path);
-  EXPECT_EQ(error.file(), path.string());
+  const testing::ScratchFolder folder;
+  const std::string path = folder.write("empty.xml", "");
+  const SceneError error = thrown_by<SceneError>([&] { load_scene_file(path); });
+  EXPECT_EQ(error.file(), path);
   EXPECT_EQ(error.line(), 0);
   EXPECT_EQ(error.problem(), "the file is empty (expected a <scene> element)");
 }

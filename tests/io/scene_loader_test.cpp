@@ -36,8 +36,8 @@ TEST(SceneLoader, ReadsParticlesEdgesAndSettings) {
   ASSERT_EQ(model.edges.size(), 1u);
   EXPECT_EQ(model.edges[0].i, 0);
   EXPECT_EQ(model.edges[0].j, 1);
-  EXPECT_EQ(scene.appearance.particle_radius, (std::vector<double>{0.25, 0.1}));
-  EXPECT_EQ(scene.appearance.edge_radius, (std::vector<double>{0.05}));
+  EXPECT_EQ(scene.model.particle_radius, (std::vector<double>{0.25, 0.1}));
+  EXPECT_EQ(scene.model.edge_radius, (std::vector<double>{0.05}));
   EXPECT_EQ(scene.max_sim_frequency, 250.0);
   EXPECT_EQ(scene.description, "two particles");
   EXPECT_EQ(scene.tag, "ParticleFountain");
@@ -53,8 +53,8 @@ TEST(SceneLoader, AppliesDocumentedDefaults) {
     <edge i="0" j="1"/>
   </scene>)");
   EXPECT_EQ(scene.max_sim_frequency, 100.0);
-  EXPECT_EQ(scene.appearance.particle_radius[0], 0.1);
-  EXPECT_EQ(scene.appearance.edge_radius[0], 0.015);
+  EXPECT_EQ(scene.model.particle_radius[0], 0.1);
+  EXPECT_EQ(scene.model.edge_radius[0], 0.015);
   EXPECT_EQ(scene.appearance.particle_color[1], (Color{0.651, 0.294, 0.0}));
   EXPECT_EQ(scene.appearance.edge_color[0], (Color{0.0, 0.388, 0.388}));
   EXPECT_EQ(scene.appearance.background, (Color{1.0, 1.0, 1.0}));

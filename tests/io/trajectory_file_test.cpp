@@ -8,8 +8,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 
+#include "support/scratch_folder.h"
 #include "support/thrown.h"
 
 namespace fosssim {
@@ -17,17 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class TrajectoryFile : public testing::Test {
+class TrajectoryFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("fosssim_traj_" +
-            std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string path(const std::string& name) const { return folder_ / name; }
 
   static State state(double base) {
     State s;
@@ -35,12 +27,8 @@ class TrajectoryFile : public testing::Test {
     s.v = (Vector(4) << -base, 0.5, 1e-300, -0.0).finished();
     return s;
   }
-  static std::string bytes_of(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-  }
 
-  fs::path dir_;
+  testing::ScratchFolder folder_;
 };
 
 TEST_F(TrajectoryFile, FrameIsPositionsThenVelocitiesAsLittleEndianDoubles) {
@@ -50,7 +38,7 @@ TEST_F(TrajectoryFile, FrameIsPositionsThenVelocitiesAsLittleEndianDoubles) {
   s.v = (Vector(2) << -1.0, 0.5).finished();
   writer.write_frame(s);
   writer.commit();
-  const std::string bytes = bytes_of(path("t.bin"));
+  const std::string bytes = testing::read_file(path("t.bin"));
   const unsigned char expected[] = {
       0, 0, 0, 0, 0, 0, 0xf0, 0x3f,  // 1.0
       0, 0, 0, 0, 0, 0, 0x00, 0x40,  // 2.0
@@ -93,7 +81,7 @@ TEST_F(TrajectoryFile, UnfinishedRunKeepsFramesAsIncompleteAndLeavesEarlierFileA
     writer.write_frame(state(1));
     writer.write_frame(state(2));
   }  // destroyed without commit, as when a run fails
-  EXPECT_EQ(bytes_of(path("t.bin")), "an earlier complete run");
+  EXPECT_EQ(testing::read_file(path("t.bin")), "an earlier complete run");
   EXPECT_FALSE(fs::exists(path("t.bin.partial")));
   EXPECT_EQ(fs::file_size(path("t.bin.incomplete")), 2u * 8 * sizeof(double));
 }
@@ -126,6 +114,63 @@ TEST_F(TrajectoryFile, ReaderRejectsCutShortFiles) {
 TEST_F(TrajectoryFile, ReaderRejectsMissingFile) {
   const Error error = thrown_by([&] { TrajectoryReader::open(path("missing.bin"), 4); });
   EXPECT_NE(std::string(error.what()).find("missing.bin"), std::string::npos);
+}
+
+TEST_F(TrajectoryFile, CollisionRecordsAndPolynomialsRoundTripInTheCoursesLayout) {
+  const CollisionRecord hit{CollisionKind::kParticleEdge, 1, 0, Eigen::Vector2d(0.25, -0.5), 0.75};
+  const std::vector<Polynomial> polys = {Polynomial::as_written({1.0, -2.0, 0.5}),
+                                         Polynomial::as_written({})};
+  {
+    TrajectoryWriter writer = TrajectoryWriter::open(path("c.bin"));
+    const State s0 = state(0), s1 = state(1), s2 = state(2);
+    const auto layout = TrajectoryLayout::kCollisionsAndPolynomials;
+    writer.write_record(layout, s0.q, s0.v, {}, {});
+    writer.write_record(layout, s1.q, s1.v, {hit}, {polys[0]});  // sync record of step 1
+    writer.write_record(layout, s2.q, s2.v, {hit}, polys);       // end of step 1
+    writer.commit();
+  }
+  // 3 frames of 64 bytes; counts; one 36-byte collision per step record; polynomials.
+  EXPECT_EQ(fs::file_size(path("c.bin")), 3 * 64 + 3 * 8 + 2 * 36 + (4 + 24) + (4 + 24 + 4));
+  const std::string bytes = testing::read_file(path("c.bin"));
+  std::int32_t type = -1;
+  std::memcpy(&type, bytes.data() + 64 + 8 + 64 + 4, 4);  // first record after record 0
+  EXPECT_EQ(type, 1);
+  TrajectoryReader reader =
+      TrajectoryReader::open(path("c.bin"), 4, 2, TrajectoryLayout::kCollisionsAndPolynomials);
+  EXPECT_EQ(reader.num_frames(), 2);
+  TrajectoryRecord end, sync;
+  reader.read_record(1, end);
+  reader.read_sync_record(1, sync);
+  EXPECT_EQ(end.q, state(2).q);
+  EXPECT_EQ(sync.q, state(1).q);
+  ASSERT_EQ(end.collisions.size(), 1u);
+  EXPECT_TRUE(end.collisions[0].same_pair(hit));
+  EXPECT_EQ(end.collisions[0].normal, hit.normal);
+  EXPECT_EQ(end.collisions[0].time, 0.75);
+  EXPECT_EQ(end.polynomials, polys);
+  EXPECT_EQ(sync.polynomials.size(), 1u);
+  Vector q, v;
+  reader.read_frame(1, q, v);
+  EXPECT_EQ(q, state(2).q);
+}
+
+TEST_F(TrajectoryFile, AFileCutInsideACollisionRecordIsNamed) {
+  {
+    TrajectoryWriter writer = TrajectoryWriter::open(path("c.bin"));
+    const State s = state(0);
+    const CollisionRecord hit{CollisionKind::kParticleParticle, 0, 1, Eigen::Vector2d(1, 0), 0.0};
+    writer.write_record(TrajectoryLayout::kCollisions, s.q, s.v, {}, {});
+    writer.write_record(TrajectoryLayout::kCollisions, s.q, s.v, {hit}, {});
+    writer.commit();
+  }
+  fs::resize_file(path("c.bin"), fs::file_size(path("c.bin")) - 10);
+  const Error error = thrown_by(
+      [&] { TrajectoryReader::open(path("c.bin"), 4, 2, TrajectoryLayout::kCollisions); });
+  EXPECT_EQ(error.kind(), ErrorKind::kBadInput);
+  EXPECT_NE(
+      std::string(error.what()).find("record 1 claims 1 collisions, more than the file holds"),
+      std::string::npos)
+      << error.what();
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "pictures/cairo_painter.h"
-#include "pictures/pixel_counts.h"
+#include "support/pixel_counts.h"
 #include "test_support.h"
 
 namespace fosssim {

@@ -59,6 +59,22 @@ TEST(GradeScene, FossSimPassesEveryTestSceneWithZeroResiduals) {
   EXPECT_TRUE(std::filesystem::is_empty(work.path()));
 }
 
+TEST(GradeScene, CollisionScenesAreGradedOnTheirCollisionRecordsToo) {
+  TemporaryFolder work;
+  const SceneEntry scene{"collisions/ball_pair_simple.xml",
+                         testing::kData + "/collisions/ball_pair_simple.xml", false};
+  const SceneResult own = grade_scene(scene, options_for(testing::kFossSim, work));
+  EXPECT_EQ(own.verdict, Verdict::kPassed) << own.reason;
+  // A candidate that misses the collision: its file has the right layout but no records.
+  testing::set_env("FOSSSIM", testing::kFossSim);
+  const SceneResult thin =
+      grade_scene(scene, options_for(testing::candidate("thin_balls_candidate.sh"), work));
+  EXPECT_EQ(thin.verdict, Verdict::kFailed);
+  EXPECT_TRUE(contains(thin.reason, "Collisions from step 1 (1 missed")) << thin.reason;
+  EXPECT_TRUE(contains(thin.details, "  Missed collision: Particle 0 - Particle 1 with normal"))
+      << thin.details;
+}
+
 TEST(GradeScene, PerturbedCandidateFailsAtExactlyThePerturbedStepAndParticle) {
   TemporaryFolder work, diagnosis;
   testing::use_perturbing_candidate(17, 2, 1, "1e-9");  // frame 17, particle 2, position y

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "app_render/program_runner.h"
-#include "render/tiny_scene.h"
+#include "support/scratch_folder.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {

@@ -8,9 +8,9 @@
 #include <limits>
 #include <utility>
 
-#include "app_render/program_runner.h"
 #include "pictures/cairo_painter.h"
-#include "pictures/pixel_counts.h"
+#include "support/pixel_counts.h"
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 
-#include "app_render/program_runner.h"
 #include "pictures/cairo_painter.h"
-#include "pictures/pixel_counts.h"
+#include "support/pixel_counts.h"
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {

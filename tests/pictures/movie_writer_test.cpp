@@ -5,10 +5,11 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "app_render/program_runner.h"
 #include "pictures/cairo_painter.h"
-#include "render/tiny_scene.h"
+#include "support/run_program.h"
+#include "support/scratch_folder.h"
 #include "support/thrown.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {

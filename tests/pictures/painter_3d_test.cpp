@@ -4,10 +4,11 @@
 #include <gtest/gtest.h>
 #include <tinyxml2.h>
 
-#include "app_render/program_runner.h"
 #include "pictures/cairo_painter.h"
 #include "render/drawing_3d.h"
-#include "render/tiny_scene_3d.h"
+#include "support/scene_builder.h"
+#include "support/scratch_folder.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {
@@ -24,7 +25,7 @@ Scene triangle_scene() {
   scene.appearance.triangles = {{0, 1, 2}};
   scene.appearance.particle_color = {
       {0.2, 0.4, 0.8}, {0.2, 0.4, 0.8}, {0.2, 0.4, 0.8}, {1, 0, 0}, {0, 1, 0}};
-  scene.appearance.particle_radius = {0.05, 0.05, 0.05, 0.1, 0.1};
+  scene.model.particle_radius = {0.05, 0.05, 0.05, 0.1, 0.1};
   return scene;
 }
 

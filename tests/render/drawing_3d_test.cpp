@@ -7,12 +7,12 @@
 #include "io/scene_loader.h"
 #include "render/scene_view.h"
 #include "render/shading.h"
-#include "render/tiny_scene_3d.h"
+#include "support/scene_builder.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {
 
-using testing::add_edge;
 using testing::front_camera;
 using testing::particles_at;
 
@@ -76,24 +76,24 @@ TEST(ComposeDrawing3D, OutlinesOnlyCoarseSurfaces) {
 }
 
 TEST(ComposeDrawing3D, LeavesOutShapesBehindTheEye) {
-  Scene scene = particles_at({{0, 0, 0}, {0, 0, 7}, {1, 0, 7}, {0, 1, 7}});
+  testing::TestScene scene = particles_at({{0, 0, 0}, {0, 0, 7}, {1, 0, 7}, {0, 1, 7}});
   scene.appearance.triangles = {{1, 2, 3}};
-  add_edge(scene, 0, 1);
+  scene.add_edge(0, 1, 0.02);
   const Drawing d = draw(scene, front_camera());
   ASSERT_EQ(d.shapes.size(), 1u);
   EXPECT_TRUE(std::holds_alternative<Disc>(d.shapes[0]));
 }
 
 TEST(SceneParts3D, SurfacesStandForTheirMeshesAndPinsAreMarked) {
-  auto scene = load_scene_text(R"(<scene dim="3">
+  testing::TestScene scene(load_scene_text(R"(<scene dim="3">
     <duration time="1"/><integrator type="local-global" dt="0.01"/>
     <particle m="1" px="0" py="3" pz="0" vx="0" vy="0" vz="0" fixed="1"/>
     <particle m="1" px="0" py="2" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
     <edge i="0" j="1"/>
     <generate type="tetbox" nx="2" ny="2" nz="2" pin="bottom" k="10" m="0.1"/>
   </scene>)",
-                               "parts.xml");
-  add_edge(scene, 1, 2);  // from a loose particle to the box's first vertex
+                                           "parts.xml"));
+  scene.add_edge(1, 2, 0.02);  // from a loose particle to the box's first vertex
   ASSERT_EQ(scene.appearance.interior_particles.size(), 1u);  // the box's centre
   const SceneParts3D parts = compute_scene_parts_3d(scene);
   EXPECT_EQ(parts.particles, (std::vector<int>{0, 1}));
@@ -112,7 +112,7 @@ TEST(ComposeDrawing3D, RingsFixedParticlesAndDrawsPinsAsDots) {
   Scene scene = particles_at({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, -1, 0}});
   scene.appearance.triangles = {{0, 1, 2}};
   scene.model.fixed = {true, false, false, true};
-  scene.appearance.particle_radius[3] = 1e-4;  // tiny: drawn at kPinMinPixels
+  scene.model.particle_radius[3] = 1e-4;  // tiny: drawn at kPinMinPixels
   const Drawing d = draw(scene, front_camera());
   int rings = 0, dots = 0;
   for (const Shape& shape : d.shapes) {

@@ -4,7 +4,7 @@
 
 #include "io/scene_loader.h"
 #include "render/scene_view.h"
-#include "render/tiny_scene.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {
@@ -85,6 +85,29 @@ TEST(ComposeDrawing, ProjectsThreeDimensionalScenesOntoXY) {
   ASSERT_EQ(d.particles.size(), 1u);
   EXPECT_DOUBLE_EQ(d.particles[0].center.x, 256.0 + 64.0);
   EXPECT_DOUBLE_EQ(d.particles[0].center.y, 256.0 - 128.0);
+}
+
+TEST(ComposeDrawing, FillsTheSolidSideOfEachHalfPlaneInItsColour) {
+  // y ≤ -0.5 (normal of length 2) in blue; the x ≥ 0.5 side of a normal (-1, 0) in default
+  // black; and one with a zero normal, which is not drawn. 256 pixels per unit, y down.
+  Scene scene = load_scene_text(R"(<scene>
+    <duration time="0.1"/><integrator type="explicit-euler" dt="0.1"/>
+    <particle m="1" px="0" py="0" vx="0" vy="0" fixed="0"/>
+    <halfplane px="0" py="-0.5" nx="0" ny="2"/>
+    <halfplane px="0.5" py="0" nx="-1" ny="0"/>
+    <halfplane px="0" py="0" nx="0" ny="0"/>
+    <halfplanecolor i="0" r="0" g="0" b="1"/>
+  </scene>)",
+                                "planes.xml");
+  const Drawing d =
+      compose_drawing(scene, scene.initial, PathHistory(scene), Camera{0, 0, 1}, 512, 512);
+  ASSERT_EQ(d.regions.size(), 2u);
+  EXPECT_EQ(d.regions[0].color, (Color{0, 0, 1}));
+  EXPECT_EQ(d.regions[1].color, (Color{0, 0, 0}));
+  // The floor covers pixel rows 384..512, the wall columns 384..512.
+  for (const Point2& c : d.regions[0].corners) EXPECT_GE(c.y, 384.0 - 1e-9);
+  for (const Point2& c : d.regions[1].corners) EXPECT_GE(c.x, 384.0 - 1e-9);
+  EXPECT_EQ(d.regions[0].corners.size(), 4u);
 }
 
 TEST(FormatTime, ShowsEnoughDecimalsForTheTimeStep) {

@@ -49,7 +49,8 @@ TEST(HashedUniform, LooksUniform) {
 /// Applies the fountain as the step pipeline would at the end of `state`'s step.
 void apply(ParticleFountain& fountain, const SceneModel& model, State& state) {
   const State start = state;
-  fountain.apply(StepContext{model, start, model.integrator.dt}, state);
+  StepRecord record;
+  fountain.apply(StepContext{model, start, model.integrator.dt, record}, state);
 }
 
 TEST(ParticleFountain, TeleportsTaggedParticlesBelowTheFloorToTheOriginGoingUp) {

@@ -2,12 +2,12 @@
 
 #include <gtest/gtest.h>
 
-#include "app_render/program_runner.h"
 #include "core/step/simulation.h"
 #include "grading/grader.h"
 #include "io/scene_loader.h"
 #include "io/trajectory_file.h"
 #include "scripting/particle_fountain.h"
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "render/tiny_scene.h"
-#include "render/tiny_scene_3d.h"
+#include "support/scene_builder.h"
+#include "support/tiny_scenes.h"
 
 namespace fosssim {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "render/tiny_scene.h"
-#include "render/tiny_scene_3d.h"
+#include "support/scene_builder.h"
+#include "support/tiny_scenes.h"
 #include "viewer/particle_grab.h"
 
 namespace fosssim {

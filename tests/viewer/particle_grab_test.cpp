@@ -6,9 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <numbers>
+#include <string>
+#include <string_view>
 
+#include "core/step/simulation.h"
 #include "io/scene_loader.h"
-#include "render/tiny_scene_3d.h"
+#include "support/scene_builder.h"
+#include "support/tiny_scenes.h"
 #include "viewer/particle_grab.h"
 #include "viewer/stepper.h"
 
@@ -142,6 +146,54 @@ TEST(ParticleGrab, PullsTheVertexToTheCursorInAHeadlessRun) {
     EXPECT_LT(pulled, 0.1) << integrator;  // within a tenth of the way
     EXPECT_GT(left, 0.9) << integrator;
   }
+}
+
+TEST(DragSpring, TheSuggestedStiffnessIsMassOverHSquared) {
+  Scene scene = testing::cloth(3, 10.0, "implicit-euler", 0.01);
+  EXPECT_DOUBLE_EQ(suggest_drag_stiffness(scene.model, 4), (0.1 / 9) / (0.01 * 0.01));
+}
+
+/// Runs `steps` steps of the scene, with a particle grabbed from step `grab_at` on, and
+/// returns its final distance to the target.
+double drag_distance(std::string_view kind, bool installed_but_idle) {
+  Scene scene = testing::cloth(5, 50.0, kind, 0.01);
+  DragSpringForce drag(3);
+  StepAdditions additions;
+  additions.interaction_forces = {&drag};
+  Simulation simulation(scene.model, scene.initial, std::move(additions));
+  const int particle = 22;  // in the middle of the far row
+  const Eigen::Vector3d target(0.0, 0.3, 0.5);
+  for (int step = 0; step < 200; ++step) {
+    if (step == 20 && !installed_but_idle) {
+      drag.grab(particle, target, 10.0 * suggest_drag_stiffness(scene.model, particle));
+    }
+    simulation.step();
+  }
+  return (simulation.state().q.segment<3>(3 * particle) - target).norm();
+}
+
+TEST(DragSpring, PullsAGrabbedClothVertexToTheMouseWithEveryImplicitIntegrator) {
+  for (std::string_view kind :
+       {"implicit-euler", "linearized-implicit-euler", "linearly-implicit-euler", "local-global"}) {
+    const double grabbed = drag_distance(kind, false);
+    const double idle = drag_distance(kind, true);
+    EXPECT_LT(grabbed, 0.05) << std::string(kind);
+    EXPECT_GT(idle, 0.3) << std::string(kind);
+  }
+}
+
+TEST(DragSpring, AnIdleDragSpringChangesNothing) {
+  Scene plain = testing::cloth(4, 20.0, "implicit-euler", 0.01);
+  DragSpringForce drag(3);
+  StepAdditions additions;
+  additions.interaction_forces = {&drag};
+  Simulation a(plain.model, plain.initial), b(plain.model, plain.initial, std::move(additions));
+  for (int step = 0; step < 10; ++step) {
+    a.step();
+    b.step();
+  }
+  EXPECT_EQ(a.state().q, b.state().q);
+  EXPECT_EQ(a.state().v, b.state().v);
 }
 
 }  // namespace

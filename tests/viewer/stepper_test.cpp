@@ -5,10 +5,10 @@
 #include <cmath>
 #include <limits>
 
-#include "app_render/program_runner.h"
 #include "core/step_error.h"
 #include "io/scene_loader.h"
 #include "io/trajectory_file.h"
+#include "support/scratch_folder.h"
 
 namespace fosssim {
 namespace {

@@ -7,13 +7,13 @@
 #include <filesystem>
 #include <set>
 
-#include "app_render/program_runner.h"
 #include "io/scene_loader.h"
 #include "io/trajectory_file.h"
 #include "pictures/cairo_painter.h"
-#include "render/tiny_scene.h"
-#include "render/tiny_scene_3d.h"
-#include "viewer/xvfb_server.h"
+#include "support/run_program.h"
+#include "support/scratch_folder.h"
+#include "support/tiny_scenes.h"
+#include "support/xvfb_server.h"
 
 namespace fosssim {
 namespace {
@@ -82,8 +82,8 @@ TEST_F(WindowTest, ShowsA3DSceneExactlyAsTheHeadlessPictures) {
   EXPECT_EQ(shot.pixels, read_png(folder_ / "pngs/frame_00017.png").pixels);
   // The window's run, with its idle drag spring, steps exactly as the headless one: its 18
   // frames (kept as .incomplete, since the screenshot closed the window) are the same bytes.
-  const std::string kept = testing::read_text(folder_ / "window.bin.incomplete");
-  const std::string full = testing::read_text(folder_ / "headless.bin");
+  const std::string kept = testing::read_file(folder_ / "window.bin.incomplete");
+  const std::string full = testing::read_file(folder_ / "headless.bin");
   ASSERT_EQ(kept.size(), 18u * 2u * 36u * 3u * 8u);
   EXPECT_EQ(kept, full.substr(0, kept.size()));
   EXPECT_NE(shot.pixels, read_png(folder_ / "pngs/frame_00016.png").pixels);

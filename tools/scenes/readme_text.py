@@ -76,7 +76,7 @@ def paragraph(text):
 
 def assets_readme(milestone, names):
     counts = {}
-    for path, _, _ in milestone:
+    for path, _, _ in milestone:  # the Theme 1 suites; the t2m* READMEs list their own
         folder = path.split("/")[1]
         counts[folder] = counts.get(folder, 0) + 1
     parts = [
@@ -88,7 +88,9 @@ def assets_readme(milestone, names):
         "- `t1m2/`: symplectic Euler (`symplectic-euler`, files `symplectic_*`) and linearized\n"
         "  implicit Euler (`linearized-implicit-euler`, files `linearized_*`).\n"
         "- `t1m3/`: implicit Euler with Newton's method (`implicit-euler`).\n"
-        "  `t1m3/system_multiple_pendulum.xml` is the README's default scene.\n",
+        "  `t1m3/system_multiple_pendulum.xml` is the README's default scene.\n"
+        "- `t2m1/`, `t2m2/`, `t2m3/`: the collision suites of Theme 2 (simple and penalty;\n"
+        "  continuous-time and hybrid; the contest's timing scenes), each with its own README.\n",
         paragraph("Every folder holds the same physical set-ups, in the categories inertia, "
                   "simplegravity, springs, springdamping, newtoniangravity, drag, accuracy and "
                   "system, once per integrator; only the time step (explicit Euler needs smaller "
@@ -123,5 +125,52 @@ def extra_readme(extra, names):
         EDITING,
         f"## The scenes ({len(extra)})\n",
         table(rows(extra, names, "extracreditassets/")),
+    ]
+    return "\n".join(parts)
+
+
+COLLISION_INTROS = {
+    "t2m1": ("# Collision suite t2m1: simple impulses and penalty forces\n",
+             "Theme 2, first milestone: discrete detection with impulses (`<collision "
+             "type=\"simple\">`) and penalty forces (`type=\"penalty\"`), in the course's test "
+             "categories: coefficient of restitution (`cor`), fixed particles (`fixed`), "
+             "half-planes (`halfplane`), penalty forces (`penalty`), particle-edge "
+             "(`particleedge`) and particle-particle (`particleparticle`) collisions. Every "
+             "set-up is here once per integrator; file names are "
+             "`<integrator>_<category>_<what>.xml`. `implicit_penalty_stiff_exact_jacobian.xml` "
+             "uses FOSSSim's own `penalty-jacobian=\"exact\"` (docs/collisions.md): stiff contact "
+             "that implicit Euler keeps stable only with the penalty force's Jacobian. -o writes "
+             "each frame with its collision records; -i also compares them."),
+    "t2m2": ("# Collision suite t2m2: continuous-time and hybrid handling\n",
+             "Theme 2, second milestone: continuous-time detection (`type=\"continuous-time\"`: "
+             "fast particles that discrete detection lets through walls and each other) and "
+             "hybrid handling (`type=\"hybrid\"`: penalty forces, Jacobi passes of swept "
+             "impulses, then rigid impact zones, with `maxiters` 0, 1 and the default 10). Every "
+             "set-up is here once per integrator; file names are "
+             "`<integrator>_<category>_<what>.xml`. -o writes, per step, the sync record and the "
+             "end-of-step record with their collisions and polynomial logs; -i compares them "
+             "all."),
+    "t2m3": ("# Collision suite t2m3: the contest's timing scenes\n",
+             "Theme 2, third milestone: the class of the course's contest scenes, balls (and "
+             "ribbons) in a box of four fixed corners joined by edges of radius 0.5, penalty "
+             "forces with thickness 0, forward-backward Euler, h = 0.005, 20 steps, with "
+             "`<collisiondetection type=\"contest\">` (FOSSSim's pair detection serves it; the "
+             "same scene with `allpairs` has the same trajectory). The course's own timing scene "
+             "has 15,000 balls; these are small enough to grade with all pairs in seconds."),
+}
+
+
+def collision_readme(folder, entries, names):
+    title, intro = COLLISION_INTROS[folder]
+    example = next(path for path, _, _ in entries)
+    parts = [
+        title,
+        paragraph(intro),
+        paragraph("How each method works, what is course-compatible and what is FOSSSim's own, "
+                  "and the file layouts are in docs/collisions.md."),
+        HOW_TO_RUN.format(example=example, folder=f"assets/{folder}"),
+        EDITING.replace("milestone_scenes.py", "collision_scenes.py"),
+        f"## The scenes ({len(entries)})\n",
+        table(rows(entries, names, f"assets/{folder}/")),
     ]
     return "\n".join(parts)

@@ -10,7 +10,7 @@ import math
 import sys
 import xml.etree.ElementTree as ET
 
-from trajectory import point, read_frames
+from trajectory import layout_of_scene, point, read_records
 
 
 def f(element, name, default=None):
@@ -68,7 +68,12 @@ class SceneData:
 
 def summarise(scene_path, trajectory_path):
     scene = SceneData(scene_path)
-    frames = read_frames(trajectory_path, len(scene.mass))
+    with open(scene_path) as f:
+        layout = layout_of_scene(f.read())
+    records = read_records(trajectory_path, len(scene.mass), layout=layout)
+    if layout == "polynomials":  # keep the end-of-step records, not the sync records
+        records = records[::2]
+    frames = [(r["q"], r["v"]) for r in records]
     energies = [scene.energy(q, v) for q, v in frames]
     pairs = [(i, j) for i, j, _ in scene.newtonian] + scene.vortex
     return {

@@ -95,6 +95,9 @@ class Scene:
     particle_colors: dict = field(default_factory=dict)
     edge_colors: dict = field(default_factory=dict)
     paths: list = field(default_factory=list)  # (i, duration, color)
+    half_planes: list = field(default_factory=list)  # (px, py, nx, ny, color or None)
+    collision: dict = None  # attributes of <collision>, "type" first
+    detection: str = ""  # type of <collisiondetection>, or none
 
     # --- building -------------------------------------------------------------------------
     def particle(self, m, x, y, vx=0.0, vy=0.0, fixed=False, radius=0.05, color=None):
@@ -122,6 +125,15 @@ class Scene:
         e = self.edge(i, j, radius, color)
         self.springs.append((e, k, l0, b))
         return e
+
+    def half_plane(self, px, py, nx, ny, color=None):
+        """Adds a half-plane (solid where (x - p)·n ≤ 0) and returns its index."""
+        self.half_planes.append((px, py, nx, ny, color))
+        return len(self.half_planes) - 1
+
+    def collide(self, kind, **parameters):
+        """Sets the <collision> element: its type and parameters (COR, k, thickness, ...)."""
+        self.collision = {"type": kind, **parameters}
 
     def distance(self, i, j):
         a, b = self.particles[i], self.particles[j]
@@ -173,6 +185,17 @@ class Scene:
             line("dragdamping", b=number(b))
         for i, j, kbs, kvc in self.vortex:
             line("vortexforce", i=i, j=j, kbs=number(kbs), kvc=number(kvc))
+        for px, py, nx, ny, _ in self.half_planes:
+            line("halfplane", px=number(px), py=number(py), nx=number(nx), ny=number(ny))
+        for i, (_, _, _, _, color) in enumerate(self.half_planes):
+            if color is not None:
+                r, g, b = color
+                line("halfplanecolor", i=i, r=number(r), g=number(g), b=number(b))
+        if self.collision:
+            line("collision", **{k: (v if isinstance(v, str) else number(v))
+                                 for k, v in self.collision.items()})
+        if self.detection:
+            line("collisiondetection", type=self.detection)
         for i, (r, g, b) in sorted(self.particle_colors.items()):
             line("particlecolor", i=i, r=number(r), g=number(g), b=number(b))
         for i, (r, g, b) in sorted(self.edge_colors.items()):

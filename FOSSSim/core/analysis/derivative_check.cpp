@@ -6,6 +6,8 @@
 #include <limits>
 #include <random>
 
+#include "core/force_set.h"
+
 namespace fosssim {
 
 namespace {
@@ -178,7 +180,9 @@ std::vector<DerivativeCheck> check_force_derivatives(const Force& force, const V
   const std::vector<Vector> directions = check_directions(static_cast<int>(q.size()), options);
   std::vector<DerivativeCheck> checks;
   if (force.has_potential()) checks.push_back(check_gradient(force, q, mass, directions, options));
-  checks.push_back(check_hessian(force, Derivative::kHessianX, q, v, mass, directions, options));
+  if (force.has_jacobian()) {
+    checks.push_back(check_hessian(force, Derivative::kHessianX, q, v, mass, directions, options));
+  }
   checks.push_back(check_hessian(force, Derivative::kHessianV, q, v, mass, directions, options));
   return checks;
 }
@@ -187,7 +191,7 @@ std::vector<DerivativeCheck> check_model_derivatives(const SceneModel& model, co
                                                      const Vector& v,
                                                      const DerivativeCheckOptions& options) {
   std::vector<DerivativeCheck> checks;
-  for (const auto& force : model.forces) {
+  for (const Force* force : ForceSet(model)) {
     auto force_checks = check_force_derivatives(*force, q, v, model.mass, options);
     checks.insert(checks.end(), force_checks.begin(), force_checks.end());
   }

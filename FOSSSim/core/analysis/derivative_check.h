@@ -49,12 +49,12 @@ struct DerivativeCheck {
 /// with the analytic derivative applied to the steps actually taken between the rounded points
 /// x ± εu, so short distances far from the origin are checked as accurately as near it. The
 /// gradient is checked against the energy at v = 0, and only for forces with a potential
-/// (Force::has_potential).
+/// (Force::has_potential); hessX only for forces that have one (Force::has_jacobian).
 std::vector<DerivativeCheck> check_force_derivatives(const Force& force, const Vector& q,
                                                      const Vector& v, const Vector& mass,
                                                      const DerivativeCheckOptions& options);
 
-/// Runs check_force_derivatives for every force of the model.
+/// Runs check_force_derivatives for every force of the model, its contact force included.
 std::vector<DerivativeCheck> check_model_derivatives(const SceneModel& model, const Vector& q,
                                                      const Vector& v,
                                                      const DerivativeCheckOptions& options);

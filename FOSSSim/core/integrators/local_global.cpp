@@ -50,7 +50,11 @@ void LocalGlobal<D>::advance(State& state) {
   }
   auto q = map_points<D>(state.q);
   auto v = map_points<D>(state.v);
-  p_ = q + h * v;  // y = pⁿ + h vⁿ: the start, and where fixed particles go
+  y_ = q + h * v;  // where the old velocity carries every particle; eliminated ones go there
+  p_ = y_;
+  if (settings_.start == IterationStart::kCurrent) {
+    for (int p : free_.particles()) p_.row(p) = q.row(p);
+  }
   assemble_constant_rhs(state);
   last_iterations_ = 0;
   for (int iteration = 1; iteration <= settings_.iterations; ++iteration) {
@@ -139,8 +143,8 @@ void LocalGlobal<D>::assemble_constant_rhs(const State& state) {
   constant_rhs_.resize(n, D);
   for (int f = 0; f < n; ++f) {
     const int p = free_.particles()[f];
-    constant_rhs_.row(f) = (model.mass[D * p] / (h * h)) * p_.row(p);
-    if (!model.fixed[p]) constant_rhs_.row(f) -= gradient.row(p);
+    // Every unknown particle receives the forces, penalty-pinned ones included.
+    constant_rhs_.row(f) = (model.mass[D * p] / (h * h)) * y_.row(p) - gradient.row(p);
   }
   for (const Spring& s : springs_) {
     if (s.b != 0.0) {  // Laplacian damping: (b/h) a aᵀ pⁿ
@@ -149,8 +153,8 @@ void LocalGlobal<D>::assemble_constant_rhs(const State& state) {
       if (s.fj >= 0) constant_rhs_.row(s.fj) -= lagged.transpose();
     }
     const double w = s.k + s.b / h;  // an eliminated end's known position moves to the right
-    if (s.fj < 0) constant_rhs_.row(s.fi) += w * p_.row(s.j);
-    if (s.fi < 0) constant_rhs_.row(s.fj) += w * p_.row(s.i);
+    if (s.fj < 0) constant_rhs_.row(s.fi) += w * y_.row(s.j);
+    if (s.fi < 0) constant_rhs_.row(s.fj) += w * y_.row(s.i);
   }
   for (const AnchorTerm& a : anchors_) {
     constant_rhs_.row(free_.of_particle(a.i)) += a.k * a.target.head<D>().transpose();
@@ -188,6 +192,7 @@ template class LocalGlobal<3>;
 
 namespace {
 constexpr std::array<std::string_view, 1> kAliases = {"fast-mass-springs"};
+constexpr std::array<std::string_view, 2> kStarts = {"inertial", "current"};
 constexpr std::array<std::string_view, 2> kPins = {"elimination", "penalty"};
 constexpr std::array<std::string_view, 3> kSolvers = {"auto", "dense", "sparse"};
 constexpr LocalGlobalSettings kDefaults;
@@ -196,6 +201,9 @@ constexpr std::array kOptions = {
                         "local/global iterations per step (at most, with a tolerance)"),
     OptionSpec::number("tolerance", kDefaults.tolerance, 0.0, /*excluded=*/false,
                        "stop iterating once no coordinate moves more than this (m); 0: never"),
+    OptionSpec::choice("start", kStarts,
+                       "where each step's iterations begin: at pⁿ + h vⁿ (inertial) or at the "
+                       "current positions pⁿ (current, as in the fast mass-springs assignment)"),
     OptionSpec::choice("pins", kPins,
                        "fixed particles: removed from the system (exact), or held by penalty "
                        "springs as in Liu et al. 2013"),
@@ -217,6 +225,8 @@ LocalGlobalSettings local_global_settings(const OptionValues& options) {
   LocalGlobalSettings settings;
   settings.iterations = options.integer("iterations");
   settings.tolerance = options.number("tolerance");
+  settings.start =
+      options.choice("start") == "current" ? IterationStart::kCurrent : IterationStart::kInertial;
   settings.pins =
       options.choice("pins") == "penalty" ? PinMethod::kPenalty : PinMethod::kElimination;
   settings.penalty_weight = options.number("penalty");

@@ -25,12 +25,19 @@ enum class LinearSolverChoice {
   kSparse,  ///< sparse Cholesky (Eigen::SimplicialLLT), factored once and reused
 };
 
+/// Where each step's local/global iterations begin.
+enum class IterationStart {
+  kInertial,  ///< at y = pⁿ + h vⁿ, where the old velocity carries the particles
+  kCurrent,   ///< at the current positions pⁿ (the fast mass-springs assignment's choice)
+};
+
 /// Settings of the local/global solver (options of the "local-global" registry entry).
 struct LocalGlobalSettings {
   /// kAuto solves systems of at most this many free particles densely.
   static constexpr int kDenseLimit = 64;
   int iterations = 10;     ///< local/global iterations per step (the most, with a tolerance)
   double tolerance = 0.0;  ///< stop once no coordinate moved more than this (m); 0: never
+  IterationStart start = IterationStart::kInertial;
   PinMethod pins = PinMethod::kElimination;
   double penalty_weight = 1e10;  ///< w of the penalty pins, N/m
   LinearSolverChoice solver = LinearSolverChoice::kAuto;
@@ -47,9 +54,11 @@ struct LocalGlobalSettings {
 /// step, the linear solve  Q p = M y/h² + Aᵀ K d + f_ext  with the constant matrix Q of
 /// assemble_local_global_matrix (core/systems/local_global_system.h). Q is shared by the x, y
 /// and z columns and factored in precompute (dense LLT for tiny systems, sparse Cholesky
-/// otherwise); every iteration is one sweep down and up its factor for all columns. Then
-/// vⁿ⁺¹ = (pⁿ⁺¹ - pⁿ)/h. With enough iterations the result is implicit Euler's (the Newton
-/// solution of ImplicitEuler) for undamped springs.
+/// otherwise); every iteration is one sweep down and up its factor for all columns. The
+/// iterations start at y or, with IterationStart::kCurrent, at pⁿ; with few iterations the
+/// start shapes the result. Then vⁿ⁺¹ = (pⁿ⁺¹ - pⁿ)/h. With enough iterations the result is
+/// implicit Euler's (the Newton solution of ImplicitEuler) for undamped springs, from either
+/// start.
 ///
 /// What else the solver takes implicitly, all of it keeping Q constant (sort_mass_spring_forces
 /// says which forces are which):
@@ -60,12 +69,14 @@ struct LocalGlobalSettings {
 ///   diagonal; Q is refactored (numerically only) when the set of anchored particles or their
 ///   stiffnesses change, and a moving target only changes the right side;
 /// - fixed particles, either eliminated (their rows and columns removed from Q; they move
-///   with their own velocity, exactly) or held by penalty springs of stiffness w to their
-///   anchors (Liu et al.'s w·CᵀC): the positions they have at this integrator's first step,
-///   moved on with their velocity at that step.
+///   with their own velocity, exactly, and receive no force) or held by penalty springs of
+///   stiffness w to their anchors (Liu et al.'s w·CᵀC): the positions they have at this
+///   integrator's first step, moved on with their velocity at that step. A penalty-pinned
+///   particle is otherwise an ordinary particle, as in Liu et al. and the fast mass-springs
+///   assignment: it receives every force, and the penalty holds it within about |f|/w.
 /// Every other force (gravity, constant forces, drag, vortices, Newtonian gravity) is
 /// evaluated once per step at (pⁿ, vⁿ) and held constant as f_ext: exact for gravity and
-/// constant forces, explicit for the rest. Fixed particles receive no force.
+/// constant forces, explicit for the rest.
 template <int D>
 class LocalGlobal final : public Integrator {
  public:
@@ -114,6 +125,7 @@ class LocalGlobal final : public Integrator {
   std::vector<AnchorTerm> anchors_;                       // this step's anchors (free particles)
   std::vector<std::pair<int, double>> factored_anchors_;  // (particle, k) in Q
   SpdSolver solver_;
+  Points<D> y_;             // pⁿ + h vⁿ, every particle
   Points<D> p_;             // the current iterate, every particle
   Points<D> d_;             // spring directions times rest lengths, kept between iterations
   Points<D> constant_rhs_;  // the right side without the springs' directions
@@ -125,7 +137,7 @@ class LocalGlobal final : public Integrator {
 };
 
 /// Registry entry: "local-global", also "fast-mass-springs". Options: iterations, tolerance,
-/// pins, penalty, solver.
+/// start, pins, penalty, solver.
 extern const IntegratorMethod kLocalGlobalMethod;
 
 /// The settings the options of kLocalGlobalMethod hold.

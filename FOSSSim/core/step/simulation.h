@@ -24,6 +24,8 @@ class Simulation {
   const SceneModel& model() const { return pipeline_.model(); }
   const Integrator& integrator() const { return pipeline_.integrator(); }
   const State& state() const { return state_; }
+  /// What the last step reported besides its state: collisions, polynomials, sync point.
+  const StepRecord& last_record() const { return pipeline_.last_record(); }
 
  private:
   StepPipeline pipeline_;

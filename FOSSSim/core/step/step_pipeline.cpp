@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <sstream>
 
+#include "core/collisions/collision_stages.h"
 #include "core/step_error.h"
 
 namespace fosssim {
 
 StepPipeline::StepPipeline(const SceneModel& model, StepAdditions additions)
     : model_(&model), integrator_(make_integrator(model, std::move(additions.interaction_forces))) {
+  if (auto collisions = make_collision_stage(model)) {
+    add_stage(StagePhase::kResponse, std::move(collisions));
+  }
   for (auto& [phase, stage] : additions.stages) add_stage(phase, std::move(stage));
 }
 
@@ -19,13 +23,15 @@ void StepPipeline::add_stage(StagePhase phase, std::unique_ptr<StepStage> stage)
   stages_.insert(after, {phase, std::move(stage)});
 }
 
-void StepPipeline::step(State& state) {
+void StepPipeline::step(State& state, StepRecord* record) {
+  StepRecord& out = record != nullptr ? *record : own_record_;
+  out.clear();
   if (stages_.empty()) {
     integrator_->step(state);
   } else {
     const State start = state;
     integrator_->step(state);
-    const StepContext context{*model_, start, model_->integrator.dt};
+    const StepContext context{*model_, start, model_->integrator.dt, out};
     for (auto& [phase, stage] : stages_) stage->apply(context, state);
   }
   if (check_health_) check_state_is_finite(*model_, state);

@@ -8,6 +8,7 @@
 #include "core/integrators/integrator.h"
 #include "core/scene_model.h"
 #include "core/state.h"
+#include "core/step/step_record.h"
 #include "core/step/step_stage.h"
 
 namespace fosssim {
@@ -32,8 +33,9 @@ struct StepAdditions {
 /// through the same pipeline, so both do exactly the same thing.
 class StepPipeline {
  public:
-  /// Makes and precomputes the model's integrator (make_integrator); `model` must outlive the
-  /// pipeline, and so must the interaction forces of `additions`.
+  /// Makes and precomputes the model's integrator (make_integrator) and adds the model's
+  /// collision handling, if it has a response stage (core/collisions/collision_stages.h);
+  /// `model` must outlive the pipeline, and so must the interaction forces of `additions`.
   explicit StepPipeline(const SceneModel& model, StepAdditions additions = {});
 
   /// Adds a stage; it runs after those of earlier phases and those added before it.
@@ -42,7 +44,11 @@ class StepPipeline {
   void set_health_check(bool on) { check_health_ = on; }
 
   /// Takes one step of `state`. Throws StepError when a stage or the health check fails.
-  void step(State& state);
+  /// `record` (cleared first) receives what the stages report about the step; without one the
+  /// pipeline uses a record of its own (last_record()).
+  void step(State& state, StepRecord* record = nullptr);
+  /// The record of the last step taken without a record of the caller's.
+  const StepRecord& last_record() const { return own_record_; }
 
   const SceneModel& model() const { return *model_; }
   const Integrator& integrator() const { return *integrator_; }
@@ -52,6 +58,7 @@ class StepPipeline {
   std::unique_ptr<Integrator> integrator_;
   std::vector<std::pair<StagePhase, std::unique_ptr<StepStage>>> stages_;  // sorted by phase
   bool check_health_ = true;
+  StepRecord own_record_;
 };
 
 /// Throws StepError naming the first particle whose position or velocity is NaN or infinite.

@@ -3,6 +3,7 @@
 
 #include "core/scene_model.h"
 #include "core/state.h"
+#include "core/step/step_record.h"
 
 namespace fosssim {
 
@@ -20,6 +21,9 @@ struct StepContext {
   /// The state the step started from: qⁿ, vⁿ, and the step number and time of step n.
   const State& start;
   double h;  ///< the time step, s
+  /// What the step reports besides its end state (collisions, polynomials, sync point);
+  /// cleared before the integrator runs, appended to by the stages.
+  StepRecord& record;
 };
 
 /// One stage of a step (core/step/step_pipeline.h). A stage must be a function of what it is

@@ -24,7 +24,11 @@
 
 #include "core/forces/spring_force.h"
 #include "core/forces/vortex_force.h"
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/finite_differences.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {
@@ -193,7 +197,7 @@ TEST(DerivativeCheckModel, ChecksEveryForceOfAModel) {
   scene.add_spring(0, 1, 2.0, 0.5, 0.1);
   scene.add_gravitation(0, 1, 0.7);
   scene.add_force(std::make_unique<VortexForce<2>>(0, 1, 1.0, 0.5, rotation_2d()));
-  const auto checks = check_model_derivatives(scene.model, scene.state.q, scene.state.v, {});
+  const auto checks = check_model_derivatives(scene.model, scene.initial.q, scene.initial.v, {});
   ASSERT_EQ(checks.size(), 3u + 3u + 2u);  // the vortex has no potential: no gradient check
   EXPECT_EQ(checks[0].force, "springforce(0, 1)");
   EXPECT_EQ(checks[3].force, "gravitationalforce(0, 1)");

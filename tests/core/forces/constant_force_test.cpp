@@ -8,7 +8,10 @@
 
 #include <gtest/gtest.h>
 
-#include "test_support.h"
+#include "support/dense.h"
+#include "support/finite_differences.h"
+#include "support/random.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {

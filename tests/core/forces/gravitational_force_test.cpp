@@ -14,7 +14,10 @@
 #include <gtest/gtest.h>
 
 #include "core/text.h"
-#include "test_support.h"
+#include "support/dense.h"
+#include "support/finite_differences.h"
+#include "support/random.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {

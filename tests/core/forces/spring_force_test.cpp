@@ -5,8 +5,8 @@
 //   worked out by hand;
 // - derivatives by finite differences: gradE against U (at v = 0), hessX = -dF/dq and
 //   hessV = -dF/dv against central differences of gradE, with the library's checker and with the
-//   full-matrix check of test_support.h, on random configurations (several seeds, b = 0 and
-//   b > 0) and on nasty ones: springs of length 1e-4..1e-6 (compressed with l0 = 1, stretched
+//   full-matrix check of support/finite_differences.h, on random configurations (several seeds, b =
+//   0 and b > 0) and on nasty ones: springs of length 1e-4..1e-6 (compressed with l0 = 1, stretched
 //   with l0 = l/2, zero rest length), ordinary compressed and stretched springs, damping with
 //   relative velocity parallel to the spring and zero relative velocity;
 // - zero rest length with exactly coincident ends: F = k d = 0 and hessX = k I (pair pattern)
@@ -21,7 +21,10 @@
 #include <cmath>
 
 #include "core/text.h"
-#include "test_support.h"
+#include "support/dense.h"
+#include "support/finite_differences.h"
+#include "support/random.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {

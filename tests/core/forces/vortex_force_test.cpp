@@ -20,7 +20,12 @@
 
 #include "core/scene_model.h"
 #include "core/text.h"
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/dense.h"
+#include "support/finite_differences.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {

@@ -10,7 +10,8 @@
 //   over θ below. The relative oscillation stays under that bound (+10% for the O(h²) part),
 //   equally in the first and the last period: every method declared kBounded is held to it.
 //   Explicit Euler's energy (every kGrows method's), sampled each time the planet crosses the
-//   perihelion direction, rises at every crossing, far beyond the bound.
+//   perihelion direction, rises at every crossing; for a first-order method, far beyond the
+//   bound.
 // - Every kDecays method dissipates on undamped springs: for a quadratic potential ½ qᵀK q
 //   (zero-rest-length springs, a fixed anchor) backward Euler gives
 //   E' - E = -½ ΔvᵀMΔv - ½ ΔqᵀKΔq < 0 at every step, and implicit, linearized implicit and
@@ -32,7 +33,10 @@
 
 #include "core/analysis/energy.h"
 #include "core/forces/vortex_force.h"
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {
@@ -40,7 +44,7 @@ namespace {
 FOSSSIM_TEST_SUITE_IN_2D_AND_3D(ConservationTest);
 
 double total_energy(const TestScene& scene) {
-  return compute_energies(scene.model, scene.state).total();
+  return compute_energies(scene.model, scene.initial).total();
 }
 
 /// A planet of mass m = 1 at perihelion r_p = a(1 - e) of an orbit with a = 1, e = 0.5 around a
@@ -82,7 +86,7 @@ void expect_bounded_kepler_energy(std::string_view method, double h) {
   for (int k = 0; k < kPeriods; ++k) {
     double in_period = 0.0;
     for (int i = 0; i < kPerPeriod; ++i) {
-      integrator->step(scene.state);
+      integrator->step(scene.initial);
       in_period = std::max(in_period, std::abs(total_energy(scene) - e0) / 0.5);
     }
     if (k == 0) first = in_period;
@@ -98,7 +102,8 @@ void expect_bounded_kepler_energy(std::string_view method, double h) {
 }
 
 /// A method whose energy grows: sampled each time the planet crosses the perihelion
-/// direction, it rises at every crossing, far beyond the symplectic bound.
+/// direction, it rises at every crossing (for a first-order method, far beyond the symplectic
+/// bound).
 template <int D>
 void expect_growing_kepler_energy(std::string_view method, double h) {
   TestScene scene = kepler<D>(method, h);
@@ -108,8 +113,8 @@ void expect_growing_kepler_energy(std::string_view method, double h) {
   const Vector e1 = plane_axes<D>().first, e2 = plane_axes<D>().second;
   double previous_y = 0.0;
   for (int i = 0; i < kPeriods * kPerPeriod; ++i) {
-    integrator->step(scene.state);
-    const Vector x = scene.state.q.tail(D);
+    integrator->step(scene.initial);
+    const Vector x = scene.initial.q.tail(D);
     const double y = x.dot(e2);
     if (previous_y < 0.0 && y >= 0.0 && x.dot(e1) > 0.0) {
       at_perihelion_direction.push_back(total_energy(scene));
@@ -122,9 +127,14 @@ void expect_growing_kepler_energy(std::string_view method, double h) {
         << method << ", revolution " << k;
   }
   const double drift = (at_perihelion_direction.back() - e0) / 0.5;
-  std::printf("%dD Kepler, %s: energy up by %.3f of |E| over %zu revolutions\n", D,
+  std::printf("%dD Kepler, %s: energy up by %.3e of |E| over %zu revolutions\n", D,
               std::string(method).c_str(), drift, at_perihelion_direction.size());
-  EXPECT_GT(drift, 100.0 * kepler_energy_bound(h)) << method;
+  EXPECT_GT(drift, 0.0) << method;
+  // A first-order method gains O(h) per revolution, so after 100 it is far beyond the
+  // symplectic method's O(h) oscillation; higher orders gain less and are only held to rising.
+  if (integrator_method(method).properties.order == 1) {
+    EXPECT_GT(drift, 100.0 * kepler_energy_bound(h)) << method;
+  }
 }
 
 TYPED_TEST(ConservationTest, KeplerEnergyIsBoundedOrGrowsAsEachMethodDeclares) {
@@ -163,7 +173,7 @@ void expect_monotone_dissipation(TestScene scene, int steps, const char* what) {
   const double start = total_energy(scene);
   double previous = start;
   for (int s = 0; s < steps; ++s) {
-    integrator->step(scene.state);
+    integrator->step(scene.initial);
     const double energy = total_energy(scene);
     EXPECT_LT(energy, previous) << what << ", step " << s + 1;
     previous = energy;
@@ -221,26 +231,26 @@ TYPED_TEST(ConservationTest, PairForcesConserveMomentumWithEveryMethod) {
   for (const IntegratorMethod* method : all_integrators()) {
     const std::string_view kind = method->name;
     TestScene scene = pair_forces_only<D>(kind);
-    const Vector start = linear_momentum(scene.model, scene.state.v);
+    const Vector start = linear_momentum(scene.model, scene.initial.v);
     double scale = 0.0;  // max m|v|: the size of the terms that cancel
     auto integrator = make_integrator(scene.model);
     for (int s = 0; s < 300; ++s) {
-      integrator->step(scene.state);
+      integrator->step(scene.initial);
       for (const auto& [i, j] : {std::pair{0, 1}, std::pair{3, 4}, std::pair{4, 0}}) {
-        const Vector d = scene.state.q.segment(D * j, D) - scene.state.q.segment(D * i, D);
+        const Vector d = scene.initial.q.segment(D * j, D) - scene.initial.q.segment(D * i, D);
         ASSERT_GT(d.norm(), 0.1) << std::string(kind) << ", step " << s;
       }
       for (int p = 0; p < 5; ++p) {
-        scale = std::max(scale, scene.model.mass[D * p] * scene.state.v.segment(D * p, D).norm());
+        scale = std::max(scale, scene.model.mass[D * p] * scene.initial.v.segment(D * p, D).norm());
       }
     }
-    const double drift = (linear_momentum(scene.model, scene.state.v) - start).norm();
+    const double drift = (linear_momentum(scene.model, scene.initial.v) - start).norm();
     // Velocities that are position differences carry ε Σ m|q| / h of round-off per step.
     double bound = 1e-13 * scale;
     if (method->properties.velocity_from_positions) {
       double mq = 0.0;
       for (int p = 0; p < 5; ++p) {
-        mq += scene.model.mass[D * p] * scene.state.q.segment(D * p, D).norm();
+        mq += scene.model.mass[D * p] * scene.initial.q.segment(D * p, D).norm();
       }
       bound += 300 * std::numeric_limits<double>::epsilon() * mq / scene.model.integrator.dt;
     }

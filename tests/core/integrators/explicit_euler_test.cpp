@@ -12,7 +12,9 @@
 
 #include <gtest/gtest.h>
 
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/scene_builder.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {
@@ -24,7 +26,7 @@ TYPED_TEST(ExplicitEulerTest, ParticleUnderGravityMovesWithTheOldVelocity) {
   const double h = 0.1;
   const FallingParticle p(D, 101);
   const TestScene scene = p.scene("explicit-euler", h);
-  const State next = run_steps(scene.model, scene.state, 1);
+  const State next = run_steps(scene.model, scene.initial, 1);
   expect_close(next.q, p.x + h * p.w, 1e-15, "position");
   expect_close(next.v, p.w + h * p.g, 1e-15, "velocity");
   EXPECT_EQ(next.step, 1);
@@ -36,7 +38,7 @@ TYPED_TEST(ExplicitEulerTest, SpringFromAMovingFixedParticle) {
   const double h = 0.05;
   const AnchoredSpring s(D, 102, 1.5, 40.0, 0.7, 0.9, 0.3);
   const TestScene scene = s.scene("explicit-euler", h);
-  const State next = run_steps(scene.model, scene.state, 1);
+  const State next = run_steps(scene.model, scene.initial, 1);
   const Vector force = spring_force_on_j(s.a, s.x, s.u, s.w, s.k, s.l0, s.b) - s.c * s.w;
   s.expect_step(next, h, s.x + h * s.w, s.w + (h / s.m) * force, 1e-14);
 }

@@ -7,7 +7,7 @@
 //   (x, w), plus drag c: the result satisfies the backward Euler equations
 //   m (v' - w) = h F(q', v'), q' = q + h v' (F written out from docs/forces.md in the test) to
 //   round-off, and the fixed particle moves to a + h u with velocity u;
-// - linear systems (zero-rest-length spring + drag): the closed forms of test_support.h to
+// - linear systems (zero-rest-length spring + drag): the closed forms of support/closed_forms.h to
 //   1e-14, in 2 Newton iterations (the first is exact, the second confirms);
 // - stiff springs, k = 1e6..1e8 with h = 0.1 and 0.01 (h²k/m up to 1e6): the state stays
 //   finite and Newton converges within the cap, in few iterations (bounds justified below);
@@ -31,7 +31,10 @@
 #include "core/forces/vortex_force.h"
 #include "core/step/simulation.h"
 #include "core/step_error.h"
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {
@@ -61,7 +64,7 @@ TYPED_TEST(ImplicitEulerTest, ParticleUnderGravity) {
   const double h = 0.1;
   const FallingParticle p(D, 131);
   const TestScene scene = p.scene(kKind, h);
-  const auto [next, iterations] = step_once(scene.model, scene.state);
+  const auto [next, iterations] = step_once(scene.model, scene.initial);
   expect_close(next.v, p.w + h * p.g, 1e-15, "velocity");
   expect_close(next.q, p.x + h * p.w + h * h * p.g, 1e-15, "position");
   EXPECT_EQ(iterations, 2);
@@ -73,7 +76,7 @@ TYPED_TEST(ImplicitEulerTest, DampedSpringStepSolvesTheBackwardEulerEquations) {
   for (unsigned seed = 132; seed <= 135; ++seed) {
     const AnchoredSpring s(D, seed, 1.5, 300.0, 0.7, 2.5, 0.3);
     const TestScene scene = s.scene(kKind, h);
-    const auto [next, iterations] = step_once(scene.model, scene.state);
+    const auto [next, iterations] = step_once(scene.model, scene.initial);
     const Vector v1 = next.v.tail(D);
     s.expect_step(next, h, s.x + h * v1, v1, 1e-15);  // fixed particle; q' = q + h v'
     const Vector force =
@@ -91,7 +94,7 @@ TYPED_TEST(ImplicitEulerTest, LinearSystemsStepInClosedFormInTwoIterations) {
   const auto r = [&] { return random.uniform_vector(D, -1.0, 1.0); };
   const LinearAnchoredSystem anchored{0.2, 1.3, 150.0, 0.7, r(), r(), r(), r()};
   TestScene scene = anchored.scene(kKind);
-  auto [next, iterations] = step_once(scene.model, scene.state);
+  auto [next, iterations] = step_once(scene.model, scene.initial);
   State expected = anchored.backward_euler_step();
   expect_close(next.q, expected.q, 1e-14, "anchored: positions");
   expect_close(next.v, expected.v, 1e-14, "anchored: velocities");
@@ -99,7 +102,7 @@ TYPED_TEST(ImplicitEulerTest, LinearSystemsStepInClosedFormInTwoIterations) {
 
   const LinearPairSystem pair{0.2, 0.8, 90.0, 0.4, r(), r(), r(), r()};
   scene = pair.scene(kKind);
-  std::tie(next, iterations) = step_once(scene.model, scene.state);
+  std::tie(next, iterations) = step_once(scene.model, scene.initial);
   expected = pair.backward_euler_step();
   expect_close(next.q, expected.q, 1e-14, "pair: positions");
   expect_close(next.v, expected.v, 1e-14, "pair: velocities");
@@ -136,8 +139,8 @@ TYPED_TEST(ImplicitEulerTest, NewtonConvergesOnStiffSpringsWithLargeSteps) {
       int most = 0, total = 0;
       const int steps = 40;
       for (int s = 0; s < steps; ++s) {
-        ASSERT_NO_THROW(integrator->step(scene.state)) << "k = " << k << ", h = " << h;
-        ASSERT_TRUE(scene.state.q.allFinite() && scene.state.v.allFinite());
+        ASSERT_NO_THROW(integrator->step(scene.initial)) << "k = " << k << ", h = " << h;
+        ASSERT_TRUE(scene.initial.q.allFinite() && scene.initial.v.allFinite());
         most = std::max(most, integrator->last_iterations());
         total += integrator->last_iterations();
       }
@@ -230,7 +233,7 @@ TYPED_TEST(ImplicitEulerTest, PlainNewtonStepsReportNoFallback) {
   constexpr int D = TypeParam::value;
   TestScene scene = stiff_chain<D>(1e6, 0.01, 6);
   const auto integrator = implicit_euler(scene.model);
-  for (int s = 0; s < 20; ++s) integrator->step(scene.state);
+  for (int s = 0; s < 20; ++s) integrator->step(scene.initial);
   EXPECT_EQ(integrator->line_search_steps(), 0);
   EXPECT_TRUE(integrator->notes().empty());
 }
@@ -239,12 +242,12 @@ TYPED_TEST(ImplicitEulerTest, ImpossibleSettingsRaiseStepErrorNamingTheStep) {
   constexpr int D = TypeParam::value;
   TestScene scene = stiff_chain<D>(1e3, 0.01, 3);
   const auto integrator = implicit_euler(scene.model);
-  integrator->step(scene.state);
-  integrator->step(scene.state);
+  integrator->step(scene.initial);
+  integrator->step(scene.initial);
   ImplicitEuler impossible(NewtonSettings{1e-30, 1});
   impossible.precompute(scene.model);
   try {
-    impossible.step(scene.state);
+    impossible.step(scene.initial);
     FAIL() << "expected StepError";
   } catch (const StepError& error) {
     EXPECT_EQ(error.step(), 3);
@@ -257,7 +260,7 @@ TYPED_TEST(ImplicitEulerTest, ImpossibleSettingsRaiseStepErrorNamingTheStep) {
   TestScene fresh = stiff_chain<D>(1e3, 0.01, 3);
   fresh.model.integrator.options.set("newton-tolerance", 1e-30);
   fresh.model.integrator.options.set("newton-max-iterations", 1);
-  Simulation simulation(fresh.model, fresh.state);
+  Simulation simulation(fresh.model, fresh.initial);
   try {
     simulation.step();
     FAIL() << "expected StepError";

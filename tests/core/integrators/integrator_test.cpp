@@ -26,7 +26,10 @@
 #include "core/integrators/linearly_implicit_euler.h"
 #include "core/integrators/local_global.h"
 #include "core/integrators/symplectic_euler.h"
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {
@@ -62,7 +65,7 @@ TEST(MakeIntegrator, AnIntegratorIsBoundToOneModelAndStepsOnlyItsStates) {
   TestScene scene(2, "explicit-euler");
   scene.add_particle(1.0, vec({0.0, 0.0}), vec({1.0, 0.0}));
   ExplicitEuler unbound;
-  State state = scene.state;
+  State state = scene.initial;
   EXPECT_THROW(unbound.step(state), std::logic_error) << "step before precompute";
   const auto integrator = make_integrator(scene.model);
   EXPECT_THROW(integrator->precompute(scene.model), std::logic_error) << "bound twice";
@@ -125,14 +128,15 @@ TYPED_TEST(IntegratorTest, FixedParticlesGetNoForceAndMoveInAStraightLine) {
     scene.add_spring(1, 2, 30.0, 0.8);
     scene.add_simple_gravity(random.uniform_vector(D, -10.0, 10.0));
     scene.add_drag(0.3);
-    const State end = run_steps(scene.model, scene.state, 100);
+    const State end = run_steps(scene.model, scene.initial, 100);
     EXPECT_EQ(end.step, 100);
     EXPECT_DOUBLE_EQ(end.time, 100 * h);
     EXPECT_EQ(Vector(end.v.head(D)), u);
     expect_close(end.q.head(D), start + 100 * h * u, 1e-13, "moving fixed particle");
     EXPECT_EQ(Vector(end.q.tail(D)), anchor);
     EXPECT_TRUE(end.v.tail(D).isZero(0.0));
-    EXPECT_GT((end.q.segment(D, D) - scene.state.q.segment(D, D)).norm(), 1e-3) << "free one moved";
+    EXPECT_GT((end.q.segment(D, D) - scene.initial.q.segment(D, D)).norm(), 1e-3)
+        << "free one moved";
   }
 }
 

@@ -14,8 +14,8 @@
 //   (m + h c) I + h² (k [P + ((l-l0)/l)(I - P)] + (b/l)[n dvᵀ + (n·dv) I](I - P)) + h b P
 //   written out from docs/forces.md and solved densely in the test (the non-symmetric, LU path).
 // - Linear systems (zero-rest-length spring + drag), where the method is backward Euler and
-//   the step has the closed forms of test_support.h: to 1e-14, with a moving fixed particle and
-//   with two free particles.
+//   the step has the closed forms of support/closed_forms.h: to 1e-14, with a moving fixed particle
+//   and with two free particles.
 
 #include "core/integrators/linearized_implicit_euler.h"
 
@@ -23,7 +23,10 @@
 
 #include <Eigen/Dense>
 
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {
@@ -37,7 +40,7 @@ TYPED_TEST(LinearizedImplicitEulerTest, ParticleUnderGravity) {
   const double h = 0.1;
   const FallingParticle p(D, 121);
   const TestScene scene = p.scene(kKind, h);
-  const State next = run_steps(scene.model, scene.state, 1);
+  const State next = run_steps(scene.model, scene.initial, 1);
   expect_close(next.v, p.w + h * p.g, 1e-15, "velocity");
   expect_close(next.q, p.x + h * p.w + h * h * p.g, 1e-15, "position");
 }
@@ -55,7 +58,8 @@ TYPED_TEST(LinearizedImplicitEulerTest, UndampedSpringFromAMovingFixedParticle) 
     const Vector dv = along * n / (s.m + h * s.c + h * h * s.k) +
                       (rhs - along * n) / (s.m + h * s.c + h * h * s.k * (l - s.l0) / l);
     const TestScene scene = s.scene(kKind, h);
-    s.expect_step(run_steps(scene.model, scene.state, 1), h, s.x + h * (s.w + dv), s.w + dv, 1e-14);
+    s.expect_step(run_steps(scene.model, scene.initial, 1), h, s.x + h * (s.w + dv), s.w + dv,
+                  1e-14);
   }
 }
 
@@ -76,7 +80,8 @@ TYPED_TEST(LinearizedImplicitEulerTest, DampedSpringFromAMovingFixedParticle) {
     const Vector rhs = h * (-s.k * (l - s.l0) * n - s.b * n.dot(rel) * n - s.c * s.w);
     const Vector dv = A.partialPivLu().solve(rhs);
     const TestScene scene = s.scene(kKind, h);
-    s.expect_step(run_steps(scene.model, scene.state, 1), h, s.x + h * (s.w + dv), s.w + dv, 1e-14);
+    s.expect_step(run_steps(scene.model, scene.initial, 1), h, s.x + h * (s.w + dv), s.w + dv,
+                  1e-14);
   }
 }
 
@@ -86,14 +91,14 @@ TYPED_TEST(LinearizedImplicitEulerTest, LinearSystemsStepInClosedForm) {
   const auto r = [&] { return random.uniform_vector(D, -1.0, 1.0); };
   const LinearAnchoredSystem anchored{0.2, 1.3, 150.0, 0.7, r(), r(), r(), r()};
   TestScene scene = anchored.scene(kKind);
-  State next = run_steps(scene.model, scene.state, 1);
+  State next = run_steps(scene.model, scene.initial, 1);
   State expected = anchored.backward_euler_step();
   expect_close(next.q, expected.q, 1e-14, "anchored: positions");
   expect_close(next.v, expected.v, 1e-14, "anchored: velocities");
 
   const LinearPairSystem pair{0.2, 0.8, 90.0, 0.4, r(), r(), r(), r()};
   scene = pair.scene(kKind);
-  next = run_steps(scene.model, scene.state, 1);
+  next = run_steps(scene.model, scene.initial, 1);
   expected = pair.backward_euler_step();
   expect_close(next.q, expected.q, 1e-14, "pair: positions");
   expect_close(next.v, expected.v, 1e-14, "pair: velocities");

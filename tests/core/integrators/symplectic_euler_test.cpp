@@ -15,7 +15,9 @@
 
 #include <gtest/gtest.h>
 
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/scene_builder.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {
@@ -27,7 +29,7 @@ TYPED_TEST(SymplecticEulerTest, ParticleUnderGravityMovesWithTheNewVelocity) {
   const double h = 0.1;
   const FallingParticle p(D, 111);
   const TestScene scene = p.scene("symplectic-euler", h);
-  const State next = run_steps(scene.model, scene.state, 1);
+  const State next = run_steps(scene.model, scene.initial, 1);
   expect_close(next.q, p.x + h * p.w + h * h * p.g, 1e-15, "position");
   expect_close(next.v, p.w + h * p.g, 1e-15, "velocity");
   EXPECT_EQ(next.step, 1);
@@ -39,7 +41,7 @@ TYPED_TEST(SymplecticEulerTest, SpringFromAMovingFixedParticle) {
   const double h = 0.05;
   const AnchoredSpring s(D, 112, 1.5, 40.0, 0.7, 0.9, 0.3);
   const TestScene scene = s.scene("symplectic-euler", h);
-  const State next = run_steps(scene.model, scene.state, 1);
+  const State next = run_steps(scene.model, scene.initial, 1);
   const Vector force = spring_force_on_j(s.a, s.x, s.u, s.w, s.k, s.l0, s.b) - s.c * s.w;
   const Vector velocity = s.w + (h / s.m) * force;
   s.expect_step(next, h, s.x + h * velocity, velocity, 1e-14);

@@ -22,7 +22,9 @@
 
 #include "core/force_evaluation.h"
 #include "core/systems/step_matrix.h"
-#include "test_support.h"
+#include "support/dense.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
 
 namespace fosssim::testing {
 namespace {
@@ -52,13 +54,13 @@ SparseMatrix chain_step_matrix(int n, double l0_factor, double b, double h, unsi
   }
   for (int p = 1; p < n; ++p) {
     const double l =
-        (scene.state.q.segment(D * p, D) - scene.state.q.segment(D * (p - 1), D)).norm();
+        (scene.initial.q.segment(D * p, D) - scene.initial.q.segment(D * (p - 1), D)).norm();
     scene.add_spring(p - 1, p, 100.0, l0_factor * l, b);
   }
   if (gravity) scene.add_gravitation(0, n - 1, 50.0);
   const ForceSet forces(scene.model);
   StepMatrix matrix(forces, FixedParticleRule::kIdentityRows);
-  return matrix.assemble(scene.state.q, scene.state.v, h);
+  return matrix.assemble(scene.initial.q, scene.initial.v, h);
 }
 
 TEST(StepSolver, SymmetricPositiveDefiniteSystemUsesLDLT) {

@@ -24,7 +24,10 @@
 #include "core/forces/constant_force.h"
 #include "core/forces/vortex_force.h"
 #include "core/step_error.h"
-#include "test_support.h"
+#include "support/closed_forms.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {
@@ -34,7 +37,7 @@ TEST(SimulationHealthCheck, BlowUpIsReportedAtTheStepThatProducesIt) {
   scene.add_particle(1.0, vec({0.0, 0.0}), vec({0.0, 0.0}), /*fixed=*/true);
   scene.add_particle(1.0, vec({1.2, 0.1}), vec({0.0, 0.0}));
   scene.add_spring(0, 1, 1e8, 1.0);
-  Simulation simulation(scene.model, scene.state);
+  Simulation simulation(scene.model, scene.initial);
   std::int64_t returned_steps = 0;
   try {
     for (; returned_steps < 10000; ++returned_steps) {
@@ -115,14 +118,14 @@ TEST(SimulationDeterminism, TwoRunsGiveIdenticalBytesWithEveryIntegrator) {
     SCOPED_TRACE(std::string(kind));
     const TestScene scene = busy_scene(kind);
     ASSERT_EQ(scene.model.num_steps(), 200);
-    Simulation first(scene.model, scene.state), second(scene.model, scene.state);
+    Simulation first(scene.model, scene.initial), second(scene.model, scene.initial);
     while (!first.finished()) first.step();
     while (!second.finished()) second.step();
     const State& a = first.state();
     const State& b = second.state();
     EXPECT_EQ(a.step, 200);
     EXPECT_EQ(a.time, 200 * 0.005);
-    EXPECT_NE((a.q - scene.state.q).norm(), 0.0) << "the scene moved";
+    EXPECT_NE((a.q - scene.initial.q).norm(), 0.0) << "the scene moved";
     ASSERT_EQ(a.q.size(), b.q.size());
     EXPECT_EQ(std::memcmp(a.q.data(), b.q.data(), sizeof(double) * a.q.size()), 0);
     EXPECT_EQ(std::memcmp(a.v.data(), b.v.data(), sizeof(double) * a.v.size()), 0);

@@ -20,7 +20,8 @@
 
 #include "core/forces/drag_spring_force.h"
 #include "core/step_error.h"
-#include "test_support.h"
+#include "support/scene_builder.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {
@@ -57,7 +58,7 @@ TEST(StepPipeline, StagesRunAfterTheIntegratorByPhaseThenInOrderAdded) {
   pipeline.add_stage(StagePhase::kResponse, std::make_unique<RecordingStage>("response1", log));
   pipeline.add_stage(StagePhase::kConstraint, std::make_unique<RecordingStage>("constraint", log));
   pipeline.add_stage(StagePhase::kResponse, std::make_unique<RecordingStage>("response2", log));
-  State state = scene.state;
+  State state = scene.initial;
   pipeline.step(state);
   const std::vector<std::string> expected = {"response1 0->1 moved", "response2 0->1 moved",
                                              "constraint 0->1 moved", "script 0->1 moved"};
@@ -71,10 +72,10 @@ TEST(StepPipeline, TheHealthCheckCatchesWhatAStageSpoilsUnlessTurnedOff) {
   additions.stages.emplace_back(StagePhase::kScript,
                                 std::make_unique<RecordingStage>("spoiler", log, true));
   StepPipeline pipeline(scene.model, std::move(additions));
-  State state = scene.state;
+  State state = scene.initial;
   EXPECT_THROW(pipeline.step(state), StepError);
   pipeline.set_health_check(false);
-  state = scene.state;
+  state = scene.initial;
   EXPECT_NO_THROW(pipeline.step(state));
   EXPECT_TRUE(std::isnan(state.v[0]));
 }
@@ -102,14 +103,14 @@ TEST(StepPipeline, AnInteractionForceActsAsTheSameForceInTheModelWould) {
     additions.interaction_forces = {&pull};
     StepPipeline with_model_force(in_model.model);
     StepPipeline with_interaction(outside.model, std::move(additions));
-    State a = in_model.state, b = outside.state;
+    State a = in_model.initial, b = outside.initial;
     for (int s = 0; s < 20; ++s) {
       with_model_force.step(a);
       with_interaction.step(b);
     }
     EXPECT_EQ(std::memcmp(a.q.data(), b.q.data(), sizeof(double) * a.q.size()), 0);
     EXPECT_EQ(std::memcmp(a.v.data(), b.v.data(), sizeof(double) * a.v.size()), 0);
-    EXPECT_GT((b.q.segment(6, 3) - outside.state.q.segment(6, 3)).norm(), 1e-3);
+    EXPECT_GT((b.q.segment(6, 3) - outside.initial.q.segment(6, 3)).norm(), 1e-3);
   }
 }
 

@@ -14,7 +14,9 @@
 
 #include <gtest/gtest.h>
 
-#include "test_support.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {
@@ -42,10 +44,10 @@ TYPED_TEST(BackwardEulerTest, TheResidualVanishesAtImplicitEulersStep) {
   constexpr int D = TypeParam::value;
   const TestScene scene = chain<D>(0.05);
   const ForceSet forces(scene.model);
-  const BackwardEulerStep problem{forces, scene.state, 0.05};
-  State next = scene.state;
+  const BackwardEulerStep problem{forces, scene.initial, 0.05};
+  State next = scene.initial;
   make_integrator(scene.model)->step(next);
-  const Vector dv = next.v - scene.state.v;
+  const Vector dv = next.v - scene.initial.v;
   const Vector r = problem.residual(dv);
   const Vector r0 = problem.residual(Vector::Zero(dv.size()));
   EXPECT_LE(r.norm(), 1e-8 * r0.norm()) << "Newton stops at a correction below 1e-9";
@@ -56,7 +58,7 @@ TYPED_TEST(BackwardEulerTest, MinusTheResidualIsTheGradientOfTheIncrementalPoten
   constexpr int D = TypeParam::value;
   const TestScene scene = chain<D>(0.05);
   const ForceSet forces(scene.model);
-  const BackwardEulerStep problem{forces, scene.state, 0.05};
+  const BackwardEulerStep problem{forces, scene.initial, 0.05};
   Random random(302);
   const Vector dv = random.uniform_vector(scene.model.num_dofs(), -0.5, 0.5);
   const Vector gradient = -problem.residual(dv);
@@ -76,7 +78,7 @@ TYPED_TEST(BackwardEulerTest, LineSearchesDecreaseTheirMerit) {
   constexpr int D = TypeParam::value;
   const TestScene scene = chain<D>(0.2);  // a large step: the full Newton step may overshoot
   const ForceSet forces(scene.model);
-  const BackwardEulerStep problem{forces, scene.state, 0.2};
+  const BackwardEulerStep problem{forces, scene.initial, 0.2};
   const Vector dv = Vector::Zero(scene.model.num_dofs());
   const Vector r = problem.residual(dv);
   const double phi = problem.incremental_potential(dv);

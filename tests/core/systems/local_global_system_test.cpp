@@ -14,7 +14,8 @@
 
 #include "core/forces/simple_gravity_force.h"
 #include "core/forces/spring_set_force.h"
-#include "test_support.h"
+#include "support/dense.h"
+#include "support/scene_builder.h"
 
 namespace fosssim::testing {
 namespace {

@@ -19,7 +19,10 @@
 #include <Eigen/Dense>
 
 #include "core/force_evaluation.h"
-#include "test_support.h"
+#include "support/dense.h"
+#include "support/random.h"
+#include "support/scene_builder.h"
+#include "support/typed_tests.h"
 
 namespace fosssim::testing {
 namespace {
@@ -30,14 +33,7 @@ FOSSSIM_TEST_SUITE_IN_2D_AND_3D(StepMatrixTest);
 template <int D>
 TestScene fixed_scene(unsigned seed) {
   Random random(seed);
-  TestScene scene(D, "implicit-euler", 0.05);
-  for (int p = 0; p < 4; ++p) {
-    scene.add_particle(random.uniform(0.5, 2.0), random.uniform_vector(D, -1.0, 1.0),
-                       random.uniform_vector(D, -1.0, 1.0), p == 1);
-  }
-  scene.add_spring(0, 1, 5.0, 0.3);
-  scene.add_spring(1, 2, 2.0, 1.5);
-  scene.add_spring(2, 3, 7.0, 0.0);
+  TestScene scene = random_spring_chain(D, random);
   scene.add_spring(0, 2, 3.0, 0.5, 2.0);  // damped: hessV and a non-symmetric hessX
   scene.add_drag(0.4);
   return scene;
@@ -55,8 +51,8 @@ TYPED_TEST(StepMatrixTest, IdentityRowsForFixedParticles) {
   constexpr int D = TypeParam::value;
   const TestScene scene = fixed_scene<D>(87);
   const ForceSet forces(scene.model);
-  const Vector& q = scene.state.q;
-  const Vector& v = scene.state.v;
+  const Vector& q = scene.initial.q;
+  const Vector& v = scene.initial.v;
   const double h = 0.05;
   Eigen::MatrixXd expected = full_matrix(forces, q, v, h);
   expected.middleRows(D, D).setZero();  // particle 1 is fixed
@@ -81,8 +77,8 @@ TYPED_TEST(StepMatrixTest, EliminationKeepsOnlyTheFreeDofs) {
   constexpr int D = TypeParam::value;
   const TestScene scene = fixed_scene<D>(88);
   const ForceSet forces(scene.model);
-  const Vector& q = scene.state.q;
-  const Vector& v = scene.state.v;
+  const Vector& q = scene.initial.q;
+  const Vector& v = scene.initial.v;
   const double h = 0.05;
   // P selects particles 0, 2, 3.
   Eigen::MatrixXd P = Eigen::MatrixXd::Zero(3 * D, 4 * D);
@@ -105,8 +101,8 @@ TYPED_TEST(StepMatrixTest, BothRulesGiveTheSameStep) {
   constexpr int D = TypeParam::value;
   const TestScene scene = fixed_scene<D>(89);
   const ForceSet forces(scene.model);
-  const Vector& q = scene.state.q;
-  const Vector& v = scene.state.v;
+  const Vector& q = scene.initial.q;
+  const Vector& v = scene.initial.v;
   const double h = 0.05;
   const Vector rhs = h * compute_force(forces, q, v);
   Vector dv[2];
@@ -129,8 +125,8 @@ TYPED_TEST(StepMatrixTest, SubtractsHSquaredHessXTimesAVectorFromTheRightSide) {
   constexpr int D = TypeParam::value;
   const TestScene scene = fixed_scene<D>(90);
   const ForceSet forces(scene.model);
-  const Vector& q = scene.state.q;
-  const Vector& v = scene.state.v;
+  const Vector& q = scene.initial.q;
+  const Vector& v = scene.initial.v;
   const double h = 0.05;
   const Vector u = Vector::LinSpaced(4 * D, -2.0, 3.0);
   const Vector start = Vector::LinSpaced(4 * D, 1.0, 5.0);
@@ -158,8 +154,8 @@ TYPED_TEST(StepMatrixTest, DefiniteHessianDropsACompressedSpringsTransverseStiff
   StepMatrix exact(forces, FixedParticleRule::kElimination);
   StepMatrix definite(forces, FixedParticleRule::kElimination, /*definite_hessian=*/true);
   const double h = 0.1;
-  const Eigen::MatrixXd a = dense(exact.assemble(scene.state.q, scene.state.v, h));
-  const Eigen::MatrixXd b = dense(definite.assemble(scene.state.q, scene.state.v, h));
+  const Eigen::MatrixXd a = dense(exact.assemble(scene.initial.q, scene.initial.v, h));
+  const Eigen::MatrixXd b = dense(definite.assemble(scene.initial.q, scene.initial.v, h));
   // Transverse stiffness k (l - l0)/l = -10 in the exact block, 0 in the definite one.
   EXPECT_DOUBLE_EQ(a(1, 1), 1.0 + h * h * -10.0);
   EXPECT_DOUBLE_EQ(b(1, 1), 1.0);

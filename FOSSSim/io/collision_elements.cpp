@@ -1,0 +1,269 @@
+#include "io/collision_elements.h"
+
+#include <tinyxml2.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <limits>
+
+#include "core/text.h"
+#include "io/element_reader.h"
+#include "io/scene_error.h"
+#include "io/text_lines.h"
+
+namespace fosssim {
+
+namespace {
+
+using tinyxml2::XMLElement;
+
+constexpr std::array<std::string_view, 4> kElements = {"halfplane", "halfplanecolor", "collision",
+                                                       "collisiondetection"};
+
+struct MethodName {
+  std::string_view name;
+  CollisionMethod method;
+};
+constexpr std::array<MethodName, 5> kMethods = {
+    {{"none", CollisionMethod::kNone},
+     {"simple", CollisionMethod::kSimple},
+     {"penalty", CollisionMethod::kPenalty},
+     {"continuous-time", CollisionMethod::kContinuousTime},
+     {"hybrid", CollisionMethod::kHybrid}}};
+
+std::vector<const XMLElement*> children(const XMLElement& root, const char* name) {
+  std::vector<const XMLElement*> found;
+  for (const XMLElement* e = root.FirstChildElement(name); e; e = e->NextSiblingElement(name)) {
+    found.push_back(e);
+  }
+  return found;
+}
+
+class CollisionReader {
+ public:
+  CollisionReader(Scene& scene, const std::string& file) : scene_(scene), file_(file) {}
+
+  void read(const XMLElement& root) {
+    const auto half_planes = children(root, "halfplane");
+    for (int k = 0; k < static_cast<int>(half_planes.size()); ++k) {
+      read_half_plane(*half_planes[k], k);
+    }
+    scene_.appearance.half_plane_color.assign(scene_.model.half_planes.size(),
+                                              Appearance::kDefaultHalfPlaneColor);
+    const auto colors = children(root, "halfplanecolor");
+    for (int k = 0; k < static_cast<int>(colors.size()); ++k) read_color(*colors[k], k);
+    const auto collisions = children(root, "collision");
+    if (!collisions.empty()) read_collision(*collisions[0]);
+    for (std::size_t k = 1; k < collisions.size(); ++k) {
+      ElementReader r = reader(*collisions[k], static_cast<int>(k));
+      warn(r,
+           "a second <collision> element is ignored, as the course ignores it (the first, "
+           "at line " +
+               std::to_string(collisions[0]->GetLineNum()) + ", applies)");
+      r.text_or_empty("type");  // its attributes are not reported one by one
+      for (const char* name : {"COR", "k", "thickness", "maxiters", "penalty-jacobian"}) {
+        r.text_or_empty(name);
+      }
+    }
+    const auto detections = children(root, "collisiondetection");
+    if (detections.size() > 1) {
+      throw SceneError(file_, detections[1]->GetLineNum(), "<collisiondetection>",
+                       "may appear only once (first at line " +
+                           std::to_string(detections[0]->GetLineNum()) + ")");
+    }
+    if (!detections.empty()) read_detection(*detections[0]);
+  }
+
+ private:
+  ElementReader reader(const XMLElement& e, int index) {
+    return ElementReader(e, file_, index, scene_.model.num_particles(),
+                         static_cast<int>(scene_.model.edges.size()));
+  }
+  void warn(const ElementReader& r, const std::string& text) {
+    scene_.warnings.push_back(r.warning(text));
+  }
+  void keep_warnings(const ElementReader& r) {
+    for (auto& warning : r.unknown_attribute_warnings()) scene_.warnings.push_back(warning);
+  }
+
+  void read_half_plane(const XMLElement& e, int index) {
+    ElementReader r = reader(e, index);
+    const int dim = scene_.model.dim;
+    HalfPlane plane;
+    plane.point.resize(dim);
+    plane.normal.resize(dim);
+    const std::array<const char*, 3> p = {"px", "py", "pz"}, n = {"nx", "ny", "nz"};
+    for (int c = 0; c < dim; ++c) plane.point[c] = r.number(p[c]);
+    for (int c = 0; c < dim; ++c) plane.normal[c] = r.number(n[c]);
+    if (plane.normal.isZero(0.0)) {
+      warn(r,
+           "the normal is zero, so this half-plane never collides and exerts no force (the "
+           "course accepts it silently)");
+    }
+    scene_.model.half_planes.push_back(std::move(plane));
+    keep_warnings(r);
+  }
+
+  void read_color(const XMLElement& e, int index) {
+    ElementReader r = reader(e, index);
+    const int count = static_cast<int>(scene_.model.half_planes.size());
+    const int i = r.integer("i");
+    if (i < 0 || i >= count) {
+      r.fail("i",
+             "refers to half-plane " + std::to_string(i) + ", but the scene has " +
+                 (count == 0 ? std::string("no half-planes")
+                             : std::to_string(count) + " half-plane" + (count == 1 ? "" : "s") +
+                                   " (valid indices are 0 to " + std::to_string(count - 1) + ")"));
+    }
+    scene_.appearance.half_plane_color[i] = r.color();
+    keep_warnings(r);
+  }
+
+  void read_collision(const XMLElement& e) {
+    ElementReader r = reader(e, -1);
+    CollisionSettings& s = scene_.model.collisions;
+    const std::string type = r.text("type");
+    const MethodName* found = nullptr;
+    for (const MethodName& m : kMethods) {
+      if (m.name == type) found = &m;
+    }
+    if (found == nullptr) {
+      r.fail("type", "names an unknown collision handling " + quote(type.c_str()) +
+                         " (expected one of none, simple, penalty, continuous-time, hybrid; "
+                         "exact spelling, lower case)");
+    }
+    s.method = found->method;
+    s.cor = r.number_or("COR", 1.0);
+    if (s.cor < 0.0 || s.cor > 1.0) {
+      warn(r, "COR = " + to_text(s.cor) + " is outside [0, 1]: collisions will " +
+                  (s.cor > 1.0 ? "add energy" : "not separate the objects") +
+                  " (the course accepts it)");
+    }
+    if (s.method == CollisionMethod::kHybrid) {
+      s.stiffness = 10.0;
+      s.thickness = 0.1;
+    }
+    if (s.has_penalty_force()) {
+      s.stiffness = r.number_or("k", s.stiffness);
+      s.thickness = r.number_or("thickness", s.thickness);
+      if (s.stiffness < 0.0) {
+        warn(r, "k = " + to_text(s.stiffness) +
+                    " is negative: the penalty force pulls objects "
+                    "together (the course accepts it)");
+      }
+      if (s.thickness < 0.0) {
+        warn(r, "thickness = " + to_text(s.thickness) +
+                    " is negative: objects may overlap before the penalty force acts (the "
+                    "course accepts it)");
+      }
+      const std::string jacobian = r.text_or_empty("penalty-jacobian");
+      if (jacobian == "exact") {
+        s.penalty_jacobian = PenaltyJacobian::kExact;
+      } else if (!jacobian.empty() && jacobian != "none") {
+        r.fail("penalty-jacobian",
+               "must be \"none\" (the course's) or \"exact\", found " + quote(jacobian.c_str()));
+      }
+    }
+    if (s.method == CollisionMethod::kHybrid) {
+      const double iterations = r.number_or("maxiters", 10.0);
+      const double whole = std::trunc(iterations);
+      if (whole != iterations || iterations < 0.0) {
+        warn(r, "maxiters = " + to_text(iterations) + " is read as " +
+                    to_text(std::max(whole, 0.0)) +
+                    (iterations < 1.0 ? " impulse passes (straight to the geometric stage)"
+                                      : " impulse passes") +
+                    ", as the course reads it");
+      }
+      s.max_iterations =
+          static_cast<int>(std::clamp(whole, -1.0, double{std::numeric_limits<int>::max()}));
+    }
+    if (scene_.model.dim == 3 && s.method == CollisionMethod::kHybrid) {
+      r.fail("type", "\"hybrid\" is 2D only (its rigid impact zones rotate in the plane)");
+    }
+    keep_warnings(r);
+  }
+
+  void read_detection(const XMLElement& e) {
+    ElementReader r = reader(e, -1);
+    const std::string type = r.text("type");
+    CollisionSettings& s = scene_.model.collisions;
+    if (type == "allpairs") {
+      s.detection = PairDetection::kAllPairs;
+    } else if (type == "contest") {
+      s.detection = PairDetection::kContest;
+      if (s.method == CollisionMethod::kContinuousTime || s.method == CollisionMethod::kHybrid) {
+        warn(r, "the course's program refuses \"contest\" detection with " +
+                    std::string(collision_method_name(s.method)) +
+                    " handling; FOSSSim runs it (its pair detection serves every method)");
+      }
+    } else {
+      r.fail("type", "must be \"allpairs\" or \"contest\", found " + quote(type.c_str()));
+    }
+    keep_warnings(r);
+  }
+
+  Scene& scene_;
+  const std::string& file_;
+};
+
+bool is_name_start(char c) {
+  return std::isalpha(static_cast<unsigned char>(c)) != 0 || c == '_' || c == ':';
+}
+
+}  // namespace
+
+bool is_collision_element(std::string_view name) {
+  for (std::string_view known : kElements) {
+    if (name == known) return true;
+  }
+  return false;
+}
+
+void read_collision_elements(const XMLElement& root, Scene& scene, const std::string& file) {
+  CollisionReader(scene, file).read(root);
+}
+
+std::string separate_run_together_attributes(std::string_view text, const std::string& file,
+                                             std::vector<std::string>& warnings) {
+  std::string out;
+  out.reserve(text.size());
+  int line = 1;
+  bool in_tag = false;
+  char quote_char = 0;  // the quote of the attribute value we are in, or 0
+  std::size_t k = 0;
+  while (k < text.size()) {
+    const char c = text[k];
+    if (!in_tag && quote_char == 0 && text.substr(k, 4) == "<!--") {
+      const std::size_t end = text.find("-->", k + 4);
+      const std::size_t stop = end == std::string_view::npos ? text.size() : end + 3;
+      for (std::size_t j = k; j < stop; ++j) line += text[j] == '\n';
+      out.append(text.substr(k, stop - k));
+      k = stop;
+      continue;
+    }
+    out.push_back(c);
+    if (c == '\n') ++line;
+    if (quote_char != 0) {
+      if (c == quote_char) {
+        quote_char = 0;
+        if (k + 1 < text.size() && is_name_start(text[k + 1])) {
+          out.push_back(' ');
+          warnings.push_back(file + ":" + std::to_string(line) +
+                             ": warning: two attributes without a blank between them (such as "
+                             "vx=\"0\"vy=\"0\"), read as if separated, as the course reads them");
+        }
+      }
+    } else if (in_tag) {
+      if (c == '"' || c == '\'') quote_char = c;
+      if (c == '>') in_tag = false;
+    } else if (c == '<') {
+      in_tag = true;
+    }
+    ++k;
+  }
+  return out;
+}
+
+}  // namespace fosssim

@@ -1,0 +1,37 @@
+#pragma once
+// The scene-file elements of contact: <halfplane>, <halfplanecolor>, <collision> and
+// <collisiondetection> (docs/scene-format.md, docs/collisions.md).
+
+#include <string>
+#include <string_view>
+
+#include "core/scene.h"
+
+namespace tinyxml2 {
+class XMLElement;
+}
+
+namespace fosssim {
+
+/// True for the root elements read by read_collision_elements.
+bool is_collision_element(std::string_view name);
+
+/// Reads the root's contact elements into `scene` (its particles and edges already read):
+/// half-planes into model.half_planes, their colours into the appearance, the first
+/// <collision> element into model.collisions (a second one is ignored with a warning, as the
+/// course ignores it) and <collisiondetection>. Values the course accepts but that are probably
+/// mistakes (a restitution outside [0, 1], a negative stiffness or thickness, a zero normal, a
+/// fractional or negative maxiters) become warnings. Throws SceneError naming file, line and
+/// element.
+void read_collision_elements(const tinyxml2::XMLElement& root, Scene& scene,
+                             const std::string& file);
+
+/// Inserts the blank that is missing between two attributes written one after the other,
+/// `vx="0"vy="0"`, which XML forbids and the course's parser reads as two attributes (an
+/// official course scene has it). Nothing else changes: only a quote that closes an attribute
+/// value inside a tag and is directly followed by a letter gets a blank after it. Appends a
+/// warning naming the line of each place fixed.
+std::string separate_run_together_attributes(std::string_view text, const std::string& file,
+                                             std::vector<std::string>& warnings);
+
+}  // namespace fosssim

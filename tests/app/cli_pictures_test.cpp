@@ -1,0 +1,117 @@
+#include <gtest/gtest.h>
+#include <tinyxml2.h>
+
+#include <filesystem>
+
+#include "pictures/cairo_painter.h"
+#include "support/run_program.h"
+#include "support/scratch_folder.h"
+#include "support/tiny_scenes.h"
+
+namespace fosssim {
+namespace {
+
+class CliPictures : public ::testing::Test {
+ protected:
+  void SetUp() override { folder_.write("scene.xml", testing::kTinyScene); }
+  testing::ProgramResult fosssim(const std::string& arguments) {
+    return testing::run_command(folder_,
+                                testing::quoted(testing::fosssim_program()) + " " + arguments);
+  }
+  std::vector<std::string> files_in(const std::string& directory) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(folder_ / directory)) {
+      names.push_back(entry.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+  testing::ScratchFolder folder_;
+};
+
+TEST_F(CliPictures, PngPerStepGoesIntoPngs) {
+  const auto result = fosssim("-s scene.xml -d 0 -g 1");
+  ASSERT_EQ(result.status, 0) << result.err;
+  const auto names = files_in("pngs");
+  ASSERT_EQ(names.size(), testing::kTinySteps + 1u);  // the initial state and every step
+  EXPECT_EQ(names.front(), "frame_00000.png");
+  EXPECT_EQ(names.back(), "frame_00030.png");
+  const Image first = read_png(folder_ / "pngs/frame_00000.png");
+  EXPECT_EQ(first.width, 512);
+  EXPECT_LT(color_distance(first.color_at(128, 256), testing::kRed), 0.01);
+  EXPECT_LT(color_distance(first.color_at(500, 500), testing::kBackground), 0.01);
+  // The particle moves up, so the last picture differs from the first.
+  const Image last = read_png(folder_ / "pngs/frame_00030.png");
+  EXPECT_NE(last.pixels, first.pixels);
+}
+
+TEST_F(CliPictures, PngFolderAndSizeCanBeChosen) {
+  const auto result = fosssim("-s scene.xml -d 0 -g 1 --png-dir out/frames --size 320x240");
+  ASSERT_EQ(result.status, 0) << result.err;
+  const Image image = read_png(folder_ / "out/frames/frame_00003.png");
+  EXPECT_EQ(image.width, 320);
+  EXPECT_EQ(image.height, 240);
+  // Same camera, 240 pixels tall: 120 per unit, centre (160, 120); particle 0 at (100, 120).
+  EXPECT_LT(color_distance(read_png(folder_ / "out/frames/frame_00000.png").color_at(100, 120),
+                           testing::kRed),
+            0.01);
+}
+
+TEST_F(CliPictures, SvgPerStepIsValidXml) {
+  const auto result = fosssim("-s scene.xml -d 0 -m svgs");
+  ASSERT_EQ(result.status, 0) << result.err;
+  const auto names = files_in("svgs");
+  ASSERT_EQ(names.size(), testing::kTinySteps + 1u);
+  for (const auto& name : names) {
+    tinyxml2::XMLDocument document;
+    ASSERT_EQ(document.LoadFile((folder_ / ("svgs/" + name)).c_str()), tinyxml2::XML_SUCCESS)
+        << name;
+    EXPECT_STREQ(document.RootElement()->Name(), "svg");
+  }
+}
+
+TEST_F(CliPictures, PicturesAndTrajectoryInOneRun) {
+  const auto result = fosssim("-s scene.xml -d 0 -g 1 -m svgs -o run.bin");
+  ASSERT_EQ(result.status, 0) << result.err;
+  EXPECT_EQ(std::filesystem::file_size(folder_ / "run.bin"),
+            (testing::kTinySteps + 1u) * 2 * 4 * 8);
+  EXPECT_EQ(files_in("pngs").size(), testing::kTinySteps + 1u);
+}
+
+TEST_F(CliPictures, PicturesCannotBeCombinedWithGrading) {
+  const auto result = fosssim("-s scene.xml -d 0 -i run.bin -g 1");
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.err.find("cannot be combined with grading"), std::string::npos) << result.err;
+}
+
+TEST_F(CliPictures, BadSizeIsACommandLineError) {
+  const auto result = fosssim("-s scene.xml -d 0 -g 1 --size 512by512");
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.err.find("--size"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(folder_ / "pngs"));
+}
+
+TEST_F(CliPictures, AnUnwritablePictureFolderIsAnIoError) {
+  folder_.write("blocker", "a file where the folder should be");
+  const auto result = fosssim("-s scene.xml -d 0 -g 1 --png-dir blocker/pngs");
+  EXPECT_EQ(result.status, 4);
+  EXPECT_NE(result.err.find("blocker/pngs"), std::string::npos) << result.err;
+}
+
+TEST_F(CliPictures, FountainRunsAreReproducibleAndGradeAsPassed) {
+  folder_.write("fountain.xml", R"(<scene>
+    <duration time="2.0"/><integrator type="explicit-euler" dt="0.01"/>
+    <scenetag tag="ParticleFountain"/>
+    <particle m="1" px="0" py="0" vx="0.3" vy="2" fixed="0" tag="teleport"/>
+    <particle m="1" px="0.1" py="0" vx="-0.3" vy="3" fixed="0" tag="teleport"/>
+    <simplegravity fx="0" fy="-9.81"/></scene>)");
+  ASSERT_EQ(fosssim("-s fountain.xml -d 0 -o a.bin").status, 0);
+  ASSERT_EQ(fosssim("-s fountain.xml -d 0 -o b.bin -g 1").status, 0);
+  EXPECT_EQ(testing::read_file(folder_ / "a.bin"), testing::read_file(folder_ / "b.bin"));
+  const auto graded = fosssim("-s fountain.xml -d 0 -i a.bin");
+  EXPECT_EQ(graded.status, 0) << graded.out << graded.err;
+  EXPECT_NE(graded.out.find("Overall success: Passed."), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fosssim

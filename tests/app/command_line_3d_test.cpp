@@ -1,0 +1,141 @@
+// FOSSSim and FOSSSim-generate on 3D scenes, run as a user would.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "support/run_program.h"
+#include "support/scratch_folder.h"
+
+namespace {
+
+using fosssim::testing::ProgramResult;
+
+class CommandLine3D : public ::testing::Test {
+ protected:
+  /// Runs a shell command line in the test's folder.
+  ProgramResult run(const std::string& command) const {
+    return fosssim::testing::run_command(folder_, command);
+  }
+  std::string path(const std::string& name) const { return folder_ / name; }
+  std::string write(const std::string& name, const std::string& content) const {
+    return folder_.write(name, content);
+  }
+  static std::string asset(const std::string& name) {
+    return std::string(FOSSSIM_SOURCE_DIR) + "/assets3d/" + name;
+  }
+
+  fosssim::testing::ScratchFolder folder_;
+};
+
+const std::string kFosssim = fosssim::testing::fosssim_program();
+const std::string kGenerate = fosssim::testing::fosssim_generate_program();
+
+TEST_F(CommandLine3D, WritesAndGradesTheTrajectoryOfAMeshScene) {
+  const std::string scene = asset("scenes/tet_box.xml");
+  const ProgramResult simulate =
+      run(kFosssim + " -s " + scene + " -d 0 -q --duration 0.05 -o " + path("out.bin"));
+  ASSERT_EQ(simulate.status, 0) << simulate.output();
+  EXPECT_NE(simulate.output().find("Simulation complete"), std::string::npos);
+  const ProgramResult grade = run(kFosssim + " -s " + scene + " -d 0 -q --duration 0.05 -i " +
+                                  path("out.bin") + " --residual-file " + path("residual.txt"));
+  EXPECT_EQ(grade.status, 0) << grade.output();
+  EXPECT_NE(grade.output().find("Overall success: Passed."), std::string::npos) << grade.output();
+}
+
+TEST_F(CommandLine3D, RunsTheAssignmentsJsonScenes) {
+  const ProgramResult json = run(kFosssim + " -s " + asset("json/cloth_9x9.json") +
+                                 " -d 0 -q --duration 0.2 -o " + path("j.bin"));
+  EXPECT_EQ(json.status, 0) << json.output();
+  EXPECT_EQ(std::filesystem::file_size(path("j.bin")), 7u * 2u * 81u * 3u * 8u);
+}
+
+TEST_F(CommandLine3D, TheIterationStartIsReadAlikeFromJsonKeysXmlAttributesAndTheCommandLine) {
+  const auto bytes = [this](const std::string& arguments, const std::string& name) {
+    const ProgramResult r =
+        run(kFosssim + " " + arguments + " -d 0 -q --duration 0.3 -o " + path(name));
+    EXPECT_EQ(r.status, 0) << arguments << "\n" << r.output();
+    return folder_.read(name);
+  };
+  // JSON scenes start at the current positions unless the key or the option says otherwise.
+  write("inertial.json", "{\"obj\": \"" + asset("cloth/cloth_flat_9x9.obj") +
+                             "\", \"k\": 20000, \"b\": [1, 9], \"start\": \"inertial\"}");
+  const std::string json = "-s " + asset("json/cloth_9x9.json");
+  const std::string current = bytes(json, "current.bin");
+  const std::string by_option = bytes(json + " --integrator-option start=inertial", "o.bin");
+  const std::string by_key = bytes("-s " + path("inertial.json"), "k.bin");
+  EXPECT_EQ(by_option, by_key);
+  EXPECT_NE(by_option, current);
+  // XML scenes start at the inertial prediction unless the attribute or the option says so.
+  const std::string xml = R"(<scene dim="3">
+  <duration time="1"/>
+  <integrator type="local-global" dt="0.03" iterations="5" START/>
+  <generate type="cloth" nx="6" ny="6" k="500" mass="voronoi" density="0.1"/>
+  <simplegravity fx="0" fy="-9.8" fz="0"/>
+</scene>)";
+  std::string with = xml, without = xml;
+  with.replace(with.find("START"), 5, "start=\"current\"");
+  without.replace(without.find("START"), 5, "");
+  write("with.xml", with);
+  write("without.xml", without);
+  const std::string by_attribute = bytes("-s " + path("with.xml"), "a.bin");
+  EXPECT_EQ(bytes("-s " + path("without.xml") + " --integrator-option start=current", "c.bin"),
+            by_attribute);
+  EXPECT_NE(bytes("-s " + path("without.xml"), "i.bin"), by_attribute);
+}
+
+TEST_F(CommandLine3D, RejectsAMalformedMeshWithItsLineAndStatus2) {
+  write("broken.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 4\n");
+  const std::string scene = write("scene.xml", R"(<scene dim="3">
+  <duration time="1"/>
+  <integrator type="local-global" dt="0.01"/>
+  <clothmesh file="broken.obj" k="1" m="1"/>
+</scene>)");
+  const ProgramResult result = run(kFosssim + " -s " + scene + " -d 0 -o " + path("out.bin"));
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.output().find(path("broken.obj") +
+                                 ":4: error: vertex index 4 is past the last vertex"),
+            std::string::npos)
+      << result.output();
+  EXPECT_FALSE(std::filesystem::exists(path("out.bin")));
+}
+
+TEST_F(CommandLine3D, GeneratesMeshesAndJsonScenesThatRun) {
+  const ProgramResult cloth = run(kGenerate + " -o " + path("c.obj") + " --json " + path("c.json") +
+                                  " --k 5000 cloth --nx 6 --ny 4");
+  ASSERT_EQ(cloth.status, 0) << cloth.output();
+  EXPECT_NE(cloth.output().find("24 vertices"), std::string::npos) << cloth.output();
+  const ProgramResult json = run(kFosssim + " -s " + path("c.json") + " -d 0 -q --duration 0.1");
+  EXPECT_EQ(json.status, 0) << json.output();
+  const ProgramResult ball = run(kGenerate + " -o " + path("b.mesh") + " tetball --cells 4");
+  ASSERT_EQ(ball.status, 0) << ball.output();
+  write("ball.xml", R"(<scene dim="3">
+  <duration time="0.05"/>
+  <integrator type="linearly-implicit-euler" dt="0.01"/>
+  <tetmesh file="b.mesh" k="100" mass="volume" density="10"><pin axis="y" side="highest" within="0.01"/></tetmesh>
+  <simplegravity fx="0" fy="-9.8" fz="0"/>
+</scene>)");
+  const ProgramResult ball_run = run(kFosssim + " -s " + path("ball.xml") + " -d 0 -q");
+  EXPECT_EQ(ball_run.status, 0) << ball_run.output();
+  const ProgramResult wrong = run(kGenerate + " -o " + path("b.obj") + " tetbox");
+  EXPECT_EQ(wrong.status, 2);
+  EXPECT_NE(wrong.output().find("MEDIT (.mesh)"), std::string::npos) << wrong.output();
+  const ProgramResult bad_pins = run(kGenerate + " -o " + path("c2.obj") + " --json " +
+                                     path("c2.json") + " --pins middle cloth");
+  EXPECT_EQ(bad_pins.status, 2);
+  // Sizes over the limit are refused before anything is generated, and the limit can be set.
+  const ProgramResult huge =
+      run(kGenerate + " -o " + path("h.mesh") + " tetbox --nx 2000 --ny 2000 --nz 2000");
+  EXPECT_EQ(huge.status, 2);
+  EXPECT_NE(huge.output().find("FOSSSim-generate: error: a tetbox of 2000 × 2000 × 2000 cubes has "
+                               "8012006001 vertices, more than the limit of 1000000 particles"),
+            std::string::npos)
+      << huge.output();
+  EXPECT_FALSE(std::filesystem::exists(path("h.mesh")));
+  EXPECT_EQ(
+      run(kGenerate + " -o " + path("c3.obj") + " --max-particles 23 cloth --nx 6 --ny 4").status,
+      2);
+}
+
+}  // namespace

@@ -1,0 +1,158 @@
+// The contact elements of scene files: what they read, every malformed input with its message,
+// the warnings for values the course accepts but that are probably mistakes, and the
+// vx="0"vy="0" pre-pass.
+
+#include "io/collision_elements.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "io/scene_loader.h"
+
+namespace fosssim {
+namespace {
+
+constexpr const char* kHeader =
+    "<scene>\n"
+    "<duration time=\"1\"/><integrator type=\"explicit-euler\" dt=\"0.1\"/>\n"
+    "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n";
+
+Scene load(const std::string& body) {
+  return load_scene_text(kHeader + body + "</scene>\n", "c.xml");
+}
+
+std::string error_of(const std::string& body) {
+  try {
+    load_scene_text(kHeader + body + "</scene>\n", "c.xml");
+  } catch (const SceneError& error) {
+    return error.what();
+  }
+  return "(loaded without error)";
+}
+
+TEST(CollisionElements, ReadsHalfPlanesColoursAndTheCoursesDefaults) {
+  const Scene scene = load(
+      "<halfplane px=\"0\" py=\"-1\" nx=\"0\" ny=\"2\"/>\n"
+      "<halfplanecolor i=\"0\" r=\"0.5\" g=\"0.25\" b=\"1\"/>\n"
+      "<collision type=\"hybrid\"/>\n");
+  ASSERT_EQ(scene.model.half_planes.size(), 1u);
+  EXPECT_EQ(scene.model.half_planes[0].normal[1], 2.0);  // kept unnormalised
+  EXPECT_EQ(scene.appearance.half_plane_color[0], (Color{0.5, 0.25, 1.0}));
+  const CollisionSettings& s = scene.model.collisions;
+  EXPECT_EQ(s.method, CollisionMethod::kHybrid);
+  EXPECT_EQ(s.cor, 1.0);
+  EXPECT_EQ(s.stiffness, 10.0);
+  EXPECT_EQ(s.thickness, 0.1);
+  EXPECT_EQ(s.max_iterations, 10);
+  EXPECT_TRUE(scene.warnings.empty());
+  const Scene penalty = load("<collision type=\"penalty\"/>\n");
+  EXPECT_EQ(penalty.model.collisions.stiffness, 100.0);
+  EXPECT_EQ(penalty.model.collisions.thickness, 0.01);
+  EXPECT_EQ(penalty.model.collisions.penalty_jacobian, PenaltyJacobian::kNone);
+  EXPECT_EQ(load("<collision type=\"penalty\" penalty-jacobian=\"exact\"/>\n")
+                .model.collisions.penalty_jacobian,
+            PenaltyJacobian::kExact);
+  EXPECT_EQ(load("").model.collisions.method, CollisionMethod::kNone);
+}
+
+TEST(CollisionElements, MaxitersIsTruncatedTowardZeroWithAWarning) {
+  const Scene scene = load("<collision type=\"hybrid\" maxiters=\"2.7\"/>\n");
+  EXPECT_EQ(scene.model.collisions.max_iterations, 2);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_EQ(scene.warnings[0],
+            "c.xml:4: warning: <collision>: maxiters = 2.7 is read as 2 impulse passes, as the "
+            "course reads it");
+}
+
+struct Case {
+  const char* name;
+  const char* body;  // its first line is line 4
+  const char* message;
+};
+
+class BadContactElement : public testing::TestWithParam<Case> {};
+
+TEST_P(BadContactElement, NamesFileLineElementAndProblem) {
+  EXPECT_EQ(error_of(GetParam().body), GetParam().message);
+}
+
+const Case kCases[] = {
+    {"HalfPlaneAttributeMissing", "<halfplane px=\"0\" py=\"0\" nx=\"0\"/>\n",
+     "c.xml:4: error: <halfplane> 0: attribute \"ny\" is missing"},
+    {"HalfPlaneAttributeNotANumber", "<halfplane px=\"a\" py=\"0\" nx=\"0\" ny=\"1\"/>\n",
+     "c.xml:4: error: <halfplane> 0: attribute \"px\" must be a finite number, found \"a\""},
+    {"HalfPlaneColorWithoutHalfPlanes", "<halfplanecolor i=\"0\" r=\"0\" g=\"0\" b=\"0\"/>\n",
+     "c.xml:4: error: <halfplanecolor> 0: attribute \"i\" refers to half-plane 0, but the scene "
+     "has no half-planes"},
+    {"HalfPlaneColorIndexOutOfRange",
+     "<halfplane px=\"0\" py=\"0\" nx=\"0\" ny=\"1\"/>\n"
+     "<halfplanecolor i=\"1\" r=\"0\" g=\"0\" b=\"0\"/>\n",
+     "c.xml:5: error: <halfplanecolor> 0: attribute \"i\" refers to half-plane 1, but the scene "
+     "has 1 half-plane (valid indices are 0 to 0)"},
+    {"HalfPlaneColorOutsideZeroOne",
+     "<halfplane px=\"0\" py=\"0\" nx=\"0\" ny=\"1\"/>\n"
+     "<halfplanecolor i=\"0\" r=\"2\" g=\"0\" b=\"0\"/>\n",
+     "c.xml:5: error: <halfplanecolor> 0: attribute \"r\" must be between 0 and 1, found 2"},
+    {"CollisionWithoutType", "<collision COR=\"1\"/>\n",
+     "c.xml:4: error: <collision>: attribute \"type\" is missing"},
+    {"CollisionTypeWrongCase", "<collision type=\"SIMPLE\"/>\n",
+     "c.xml:4: error: <collision>: attribute \"type\" names an unknown collision handling "
+     "\"SIMPLE\" (expected one of none, simple, penalty, continuous-time, hybrid; exact "
+     "spelling, lower case)"},
+    {"CorNotANumber", "<collision type=\"simple\" COR=\"bouncy\"/>\n",
+     "c.xml:4: error: <collision>: attribute \"COR\" must be a finite number, found \"bouncy\""},
+    {"StiffnessNotANumber", "<collision type=\"penalty\" k=\"stiff\"/>\n",
+     "c.xml:4: error: <collision>: attribute \"k\" must be a finite number, found \"stiff\""},
+    {"UnknownPenaltyJacobian", "<collision type=\"penalty\" penalty-jacobian=\"yes\"/>\n",
+     "c.xml:4: error: <collision>: attribute \"penalty-jacobian\" must be \"none\" (the "
+     "course's) or \"exact\", found \"yes\""},
+    {"UnknownDetection", "<collisiondetection type=\"grid\"/>\n",
+     "c.xml:4: error: <collisiondetection>: attribute \"type\" must be \"allpairs\" or "
+     "\"contest\", found \"grid\""},
+};
+
+INSTANTIATE_TEST_SUITE_P(Cases, BadContactElement, testing::ValuesIn(kCases),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(CollisionElements, ProbableMistakesAreWarnedAbout) {
+  const Scene scene = load(
+      "<halfplane px=\"0\" py=\"0\" nx=\"0\" ny=\"0\"/>\n"
+      "<collision type=\"penalty\" COR=\"1.5\" k=\"-1\" thickness=\"-0.1\"/>\n"
+      "<collision type=\"simple\"/>\n");
+  EXPECT_EQ(scene.model.collisions.method, CollisionMethod::kPenalty);  // the first one
+  ASSERT_EQ(scene.warnings.size(), 5u);
+  EXPECT_EQ(scene.warnings[0],
+            "c.xml:4: warning: <halfplane> 0: the normal is zero, so this half-plane never "
+            "collides and exerts no force (the course accepts it silently)");
+  EXPECT_EQ(scene.warnings[1],
+            "c.xml:5: warning: <collision>: COR = 1.5 is outside [0, 1]: collisions will add "
+            "energy (the course accepts it)");
+  EXPECT_NE(scene.warnings[2].find("k = -1 is negative"), std::string::npos);
+  EXPECT_NE(scene.warnings[3].find("thickness = -0.1 is negative"), std::string::npos);
+  EXPECT_EQ(scene.warnings[4],
+            "c.xml:6: warning: <collision> 1: a second <collision> element is ignored, as the "
+            "course ignores it (the first, at line 5, applies)");
+}
+
+TEST(CollisionElements, AttributesWithoutABlankBetweenThemAreSeparated) {
+  // An official course scene has vx="0"vy="0", which XML forbids.
+  const Scene scene = load_scene_text(
+      "<scene>\n<duration time=\"1\"/><integrator type=\"explicit-euler\" dt=\"0.1\"/>\n"
+      "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"2\"vy=\"3\" fixed=\"0\"/>\n</scene>\n",
+      "quirk.xml");
+  EXPECT_EQ(scene.initial.v[0], 2.0);
+  EXPECT_EQ(scene.initial.v[1], 3.0);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_EQ(scene.warnings[0],
+            "quirk.xml:3: warning: two attributes without a blank between them (such as "
+            "vx=\"0\"vy=\"0\"), read as if separated, as the course reads them");
+  // Only that pattern changes: text in comments and values is left alone.
+  std::vector<std::string> warnings;
+  EXPECT_EQ(separate_run_together_attributes("<!-- a=\"1\"b --><e t=\"x\"/>", "f", warnings),
+            "<!-- a=\"1\"b --><e t=\"x\"/>");
+  EXPECT_TRUE(warnings.empty());
+}
+
+}  // namespace
+}  // namespace fosssim

@@ -1,0 +1,129 @@
+// The fast mass-springs JSON scenes, read from small files written here.
+
+#include "io/json_scene_reader.h"
+
+#include <gtest/gtest.h>
+
+#include "core/force_evaluation.h"
+#include "core/forces/spring_set_force.h"
+#include "io/scene_loader.h"
+#include "support/scratch_folder.h"
+#include "support/thrown.h"
+
+namespace fosssim {
+namespace {
+
+/// Two triangles making the unit square in the xy plane (area 1), plus a loose spring.
+constexpr const char* kSquare = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+
+TEST(JsonScene, AppliesTheAssignmentsDefaults) {
+  testing::ScratchFolder dir;
+  dir.write("meshes/square.obj", kSquare);
+  const auto scene = load_json_scene_file(
+      dir.write("scene.json", R"({"obj": "meshes/square.obj", "k": 250, "b": [1, 4]})"));
+  const SceneModel& model = scene.model;
+  EXPECT_EQ(model.dim, 3);
+  EXPECT_EQ(model.integrator.method->name, "local-global");
+  EXPECT_EQ(model.integrator.dt, 1.0 / 30.0);
+  EXPECT_EQ(model.integrator.options.integer("iterations"), 50);
+  EXPECT_EQ(model.integrator.options.choice("start"), "current");
+  EXPECT_EQ(model.integrator.options.choice("pins"), "penalty");
+  EXPECT_EQ(model.integrator.options.number("penalty"), 1e10);
+  EXPECT_EQ(model.duration, 10.0);
+  EXPECT_EQ(model.fixed, (std::vector<bool>{true, false, false, true}));
+  // Masses from mixed Voronoi areas: both triangles are right-angled and isosceles, at
+  // corners 1 and 3 (1/2 of their area there, 1/4 at the others), so corners 0 and 2 get
+  // 1/4 + 1/4 of 1/2 each and corners 1 and 3 get 1/2 of 1/2 (a third each would be 1/3, 1/6).
+  EXPECT_DOUBLE_EQ(model.mass[0], 0.25);
+  EXPECT_DOUBLE_EQ(model.mass[3], 0.25);
+  EXPECT_DOUBLE_EQ(model.mass[6], 0.25);
+  EXPECT_DOUBLE_EQ(model.mass[9], 0.25);
+  // Springs: the 5 distinct edges of the two triangles, at rest; gravity -9.8 N on every vertex.
+  EXPECT_EQ(model.edges.size(), 5u);
+  ASSERT_EQ(model.forces.size(), 2u);
+  const Vector force = compute_force(ForceSet(model), scene.initial.q, scene.initial.v);
+  for (int p = 0; p < 4; ++p) EXPECT_EQ(force.segment<3>(3 * p), Eigen::Vector3d(0.0, -9.8, 0.0));
+  const auto* springs = dynamic_cast<const SpringSetForce<3>*>(model.forces[0].get());
+  ASSERT_NE(springs, nullptr);
+  EXPECT_EQ(springs->springs()[0].k, 250.0);
+  EXPECT_TRUE(scene.warnings.empty());
+}
+
+TEST(JsonScene, TakesUniformMassesAndOurOptionalKeys) {
+  testing::ScratchFolder dir;
+  dir.write("square.obj", kSquare);
+  const auto scene = load_json_scene_file(dir.write("scene.json", R"({
+    "obj": "square.obj", "k": 10, "m": 0.25, "h": 0.01, "iterations": 7, "duration": 2,
+    "start": "inertial", "colour": "red"
+  })"));
+  EXPECT_EQ(scene.model.mass, Vector::Constant(12, 0.25));
+  EXPECT_EQ(scene.model.integrator.dt, 0.01);
+  EXPECT_EQ(scene.model.integrator.options.integer("iterations"), 7);
+  EXPECT_EQ(scene.model.integrator.options.choice("start"), "inertial");
+  EXPECT_EQ(scene.model.num_steps(), 200);
+  EXPECT_EQ(scene.model.fixed, std::vector<bool>(4, false));
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_NE(scene.warnings[0].find("unknown key \"colour\""), std::string::npos);
+}
+
+TEST(JsonScene, IsChosenByTheSceneLoaderForJsonFiles) {
+  testing::ScratchFolder dir;
+  dir.write("square.obj", kSquare);
+  const auto scene = load_scene_file(dir.write("s.json", R"({"obj": "square.obj", "k": 1})"));
+  EXPECT_EQ(scene.model.integrator.method->name, "local-global");
+}
+
+struct Bad {
+  const char* json;
+  int line;
+  const char* problem;
+};
+
+TEST(JsonScene, RejectsBadScenesNamingTheProblem) {
+  testing::ScratchFolder dir;
+  dir.write("square.obj", kSquare);
+  dir.write("lines.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n");
+  const Bad cases[] = {
+      {R"({"k": 1})", 0, "the required key \"obj\""},
+      {R"({"obj": "square.obj"})", 0, "the required key \"k\" is missing"},
+      {R"({"obj": "square.obj", "k": "stiff"})", 0, "\"k\" must be a number, found \"stiff\""},
+      {R"({"obj": "square.obj", "k": -1})", 0, "\"k\" must not be negative"},
+      {R"({"obj": "square.obj", "k": 1, "b": [0]})", 0,
+       "\"b\"[0] must be a vertex number from 1 to 4 (1-based), found 0"},
+      {R"({"obj": "square.obj", "k": 1, "b": [1, 5]})", 0,
+       "\"b\"[1] must be a vertex number from 1 to 4"},
+      {R"({"obj": "square.obj", "k": 1, "b": 3})", 0, "\"b\" must be a list"},
+      {R"({"obj": "square.obj", "k": 1, "m": 0})", 0, "\"m\" must be positive"},
+      {R"({"obj": "square.obj", "k": 1, "iterations": 2.5})", 0,
+       "\"iterations\" must be a whole number"},
+      {R"({"obj": "square.obj", "k": 1, "start": "previous"})", 0,
+       "\"start\" must be \"inertial\" or \"current\", found \"previous\""},
+      {R"({"obj": "square.obj", "k": 1, "start": 1})", 0,
+       "\"start\" must be \"inertial\" or \"current\", found \"1\""},
+      {R"({"obj": "lines.obj", "k": 1})", 0, "masses from areas need faces"},
+      {"{\n  \"obj\": \"square.obj\",\n  \"k\": 1,,\n}", 3, "not valid JSON"},
+      {"[1, 2]", 0, "must hold a JSON object"},
+      {"  \n", 0, "the file is empty"},
+  };
+  for (const Bad& c : cases) {
+    const std::string path = dir.write("bad.json", c.json);
+    const SceneError scene_error = thrown_by<SceneError>([&] { load_json_scene_file(path); });
+    EXPECT_EQ(scene_error.file(), path);
+    EXPECT_EQ(scene_error.line(), c.line) << scene_error.what();
+    EXPECT_NE(scene_error.problem().find(c.problem), std::string::npos) << scene_error.what();
+  }
+}
+
+TEST(JsonScene, PassesOnTheMeshFilesErrorsWithTheirLines) {
+  testing::ScratchFolder dir;
+  dir.write("broken.obj", "v 0 0 0\nv 1 0 0\nf 1 7\n");
+  const SceneError scene_error = thrown_by<SceneError>([&] {
+    load_json_scene_file(dir.write("scene.json", R"({"obj": "broken.obj", "k": 1, "m": 1})"));
+  });
+  EXPECT_EQ(scene_error.file(), (dir / "broken.obj"));
+  EXPECT_EQ(scene_error.line(), 3);
+  EXPECT_NE(scene_error.problem().find("the \"obj\" of"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fosssim

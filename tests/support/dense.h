@@ -1,0 +1,32 @@
+#pragma once
+// Dense views: sparse matrices as dense ones, and a force's energy, gradient and Hessians at one
+// configuration, assembled densely, for comparisons written without the library's assembly.
+
+#include <Eigen/Dense>
+
+#include "core/force.h"
+#include "core/types.h"
+
+namespace fosssim::testing {
+
+/// A sparse matrix as a dense one.
+inline Eigen::MatrixXd dense(const SparseMatrix& A) { return Eigen::MatrixXd(A); }
+
+/// ‖A - Aᵀ‖_F / ‖A‖_F, 0 for the zero matrix.
+double asymmetry(const Eigen::MatrixXd& A);
+
+/// The pair pattern of pair forces (docs/forces.md) as a dense n×n matrix: +H on blocks (i,i),
+/// (j,j), -H on (i,j), (j,i). Written out here so tests do not depend on HessianBuilder for
+/// expected values.
+Eigen::MatrixXd dense_pair_pattern(int n, int dim, int i, int j, const Eigen::MatrixXd& H);
+
+/// The force's gradient of energy, energy, hessX and hessV at (q, v) with per-coordinate masses,
+/// assembled densely.
+Vector gradient_of(const Force& force, const Vector& q, const Vector& v, const Vector& mass);
+double energy_of(const Force& force, const Vector& q, const Vector& v, const Vector& mass);
+Eigen::MatrixXd hessian_x_of(const Force& force, const Vector& q, const Vector& v,
+                             const Vector& mass);
+Eigen::MatrixXd hessian_v_of(const Force& force, const Vector& q, const Vector& v,
+                             const Vector& mass);
+
+}  // namespace fosssim::testing
