@@ -1,7 +1,9 @@
 // Fuzz target: grading a trajectory (io/trajectory_file.h, grading/), as FOSSSim -i does. The
-// first byte picks one of six tiny scenes, one per integrator; the rest is the trajectory,
-// read from memory. Scenes are loaded once; each input grades a few steps of two or three
-// particles, so the target runs thousands of inputs a second.
+// first byte picks one of nine tiny scenes: one per integrator, then one per trajectory layout
+// with collisions (simple, continuous-time, hybrid: collision records, polynomial logs and sync
+// records); the rest is the trajectory, read from memory in the scene's layout. Scenes are loaded
+// once; each input grades a few steps of two to four particles, so the target runs thousands of
+// inputs a second.
 
 #include <cstddef>
 #include <cstdint>
@@ -18,6 +20,24 @@
 namespace {
 
 using namespace fosssim;
+
+/// Two balls that meet each other, a fixed bar above them and the floor within 4 steps, under
+/// collision handling `type` (2D).
+std::string collision_scene(const std::string& type) {
+  return R"(<scene>
+  <duration time="0.04"/>
+  <integrator type="symplectic-euler" dt="0.01"/>
+  <particle m="1" px="0" py="0.025" vx="1" vy="-1" fixed="0" radius="0.02"/>
+  <particle m="2" px="0.045" py="0.025" vx="-1" vy="-1" fixed="0" radius="0.02"/>
+  <particle m="1" px="-0.3" py="0.06" vx="0" vy="0" fixed="1" radius="0.02"/>
+  <particle m="1" px="0.3" py="0.06" vx="0" vy="0" fixed="1" radius="0.02"/>
+  <edge i="2" j="3" radius="0.01"/>
+  <halfplane px="0" py="0" nx="0" ny="1"/>
+  <simplegravity fx="0" fy="-9.81"/>
+  <collision type=")" +
+         type + R"("/>
+</scene>)";
+}
 
 /// Three particles (one fixed) on damped springs under gravity and drag, 4 steps, with
 /// `integrator` (and its attributes): frames of 2 × 6 doubles, 5 frames in a complete file.
@@ -58,6 +78,10 @@ const std::vector<std::unique_ptr<Scene>>& scenes() {
   <gravitationalforce i="0" j="1" G="1"/>
 </scene>)",
                                                           "fuzz3d.xml")));
+    for (const char* type : {"simple", "continuous-time", "hybrid"}) {
+      out.push_back(std::make_unique<Scene>(
+          load_scene_text(collision_scene(type), std::string(type) + ".xml")));
+    }
     return out;
   }();
   return loaded;
@@ -70,9 +94,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto& all = scenes();
   const Scene& scene = *all[data[0] % all.size()];
   try {
-    TrajectoryReader file =
-        TrajectoryReader::from_bytes(std::string(reinterpret_cast<const char*>(data + 1), size - 1),
-                                     scene.model.num_dofs(), "fuzz.bin");
+    TrajectoryReader file = TrajectoryReader::from_bytes(
+        std::string(reinterpret_cast<const char*>(data + 1), size - 1), scene.model.num_dofs(),
+        "fuzz.bin", scene.model.dim, trajectory_layout(scene.model));
     const GradeReport report = grade_trajectory(scene, file);
     std::ostringstream out;
     print_grade_report(out, report);

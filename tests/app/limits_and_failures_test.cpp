@@ -265,6 +265,30 @@ TEST_F(LimitsAndFailures, TheResidualFileAgreesWithTheReportForAnAllZeroTrajecto
   EXPECT_NE(r.out.find("Overall success: Failed."), std::string::npos);
 }
 
+// Failures that are not FOSSSim's own errors (here std::bad_alloc, under a memory limit of 300
+// MB for a cloth that needs about 3 GB) reach main's handler: one message, exit status 2, and
+// the run's output kept as .incomplete, never left as .partial or under its own name.
+TEST_F(LimitsAndFailures, RunningOutOfMemoryIsAMessageAndStatus2WithNoPartialFileLeft) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit allows";
+#endif
+  write("big.xml", R"(<scene dim="3"><duration time="0.05"/>
+<integrator type="linearly-implicit-euler" dt="0.01"/>
+<generate type="cloth" nx="400" ny="400" k="1" m="1"/></scene>)");
+  const ProgramResult r = fosssim::testing::run_program(
+      {"/bin/sh", "-c",
+       "ulimit -v 300000 && exec '" + fosssim::testing::fosssim_program() +
+           "' -s big.xml -d 0 -q -o out.bin"},
+      dir_.string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(
+      r.err.rfind("FOSSSim: error: out of memory: the scene is too large for this machine", 0), 0u)
+      << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out.bin"));
+  EXPECT_FALSE(fs::exists(dir_ / "out.bin.partial"));
+}
+
 TEST_F(LimitsAndFailures, ScenesWithoutFreeParticlesRunUnderEveryIntegrator) {
   for (const IntegratorMethod* method : integrator_methods()) {
     const std::string name(method->name);
