@@ -27,6 +27,9 @@ bool StepSolver::same_pattern(const SparseMatrix& A) const {
 }
 
 std::optional<Vector> StepSolver::solve(const SparseMatrix& A, const Vector& b) {
+  // A scene with no free degree of freedom (no particles, or only fixed ones) has nothing to
+  // solve; Eigen's factorizations and norms assert on 0×0 matrices in Debug builds.
+  if (A.rows() == 0) return Vector(0);
   if (!same_pattern(A)) {
     outer_.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
     inner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
