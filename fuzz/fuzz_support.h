@@ -21,9 +21,10 @@ inline std::string_view as_text(const std::uint8_t* data, std::size_t size) {
   return {reinterpret_cast<const char*>(data), size};
 }
 
-/// Takes up to `max_steps` steps of the scene (its scene tag's hook included), as a run does.
+/// Takes up to `max_steps` steps of the scene (its scene tag's hook included), as a run does,
+/// with its iteration counts (Newton, local/global, hybrid passes) capped at 20.
 /// A step that fails with an Error is an expected outcome and ends the run quietly; anything
 /// else escapes to the fuzzer as a finding.
-void run_a_few_steps(const Scene& scene, int max_steps = 3);
+void run_a_few_steps(Scene& scene, int max_steps = 3);
 
 }  // namespace fosssim::fuzzing

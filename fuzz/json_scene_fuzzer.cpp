@@ -17,7 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace fosssim;
   InputFiles files = InputFiles::in_memory({{"cloth.obj", kCloth}}, fuzzing::fuzz_limits());
   try {
-    const Scene scene = load_json_scene_text(fuzzing::as_text(data, size), "fuzz.json", files);
+    Scene scene = load_json_scene_text(fuzzing::as_text(data, size), "fuzz.json", files);
     fuzzing::run_a_few_steps(scene);
   } catch (const SceneError&) {
   }

@@ -24,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   InputFiles files = InputFiles::in_memory(
       {{"mesh.mesh", std::string(fuzzing::as_text(data, size))}}, fuzzing::fuzz_limits());
   try {
-    const Scene scene = load_scene_text(kScene, "fuzz.xml", files);
+    Scene scene = load_scene_text(kScene, "fuzz.xml", files);
     fuzzing::run_a_few_steps(scene);
   } catch (const SceneError&) {
   }

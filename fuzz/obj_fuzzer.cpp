@@ -14,7 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   InputFiles files = InputFiles::in_memory(
       {{"mesh.obj", std::string(fuzzing::as_text(data, size))}}, fuzzing::fuzz_limits());
   try {
-    const Scene scene = load_json_scene_text(
+    Scene scene = load_json_scene_text(
         R"({"obj": "mesh.obj", "k": 100, "b": [1], "iterations": 3, "duration": 0.1})", "fuzz.json",
         files);
     fuzzing::run_a_few_steps(scene);

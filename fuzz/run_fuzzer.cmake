@@ -2,7 +2,7 @@
 # WORK/corpus), with DICTIONARY if it exists; crashes go to WORK/artifacts. Fails when the
 # fuzzer finds anything.
 file(MAKE_DIRECTORY ${WORK}/corpus ${WORK}/artifacts)
-set(arguments -max_total_time=${SECONDS} -timeout=10 -rss_limit_mb=2048 -print_final_stats=1
+set(arguments -max_total_time=${SECONDS} -timeout=25 -rss_limit_mb=2048 -print_final_stats=1
     -artifact_prefix=${WORK}/artifacts/)
 if(EXISTS ${DICTIONARY})
   list(APPEND arguments -dict=${DICTIONARY})

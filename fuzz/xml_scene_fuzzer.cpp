@@ -23,7 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   InputFiles files =
       InputFiles::in_memory({{"cloth.obj", kCloth}, {"tet.mesh", kTet}}, fuzzing::fuzz_limits());
   try {
-    const Scene scene = load_scene_text(fuzzing::as_text(data, size), "fuzz.xml", files);
+    Scene scene = load_scene_text(fuzzing::as_text(data, size), "fuzz.xml", files);
     fuzzing::run_a_few_steps(scene);
   } catch (const SceneError&) {
   }

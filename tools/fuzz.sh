@@ -45,7 +45,7 @@ for target in $targets; do
   echo "fuzz.sh: $target for $minutes min with $jobs job(s); findings in $work/artifacts/"
   # Run in the work folder: with several jobs libFuzzer writes a fuzz-N.log per job there.
   # shellcheck disable=SC2086
-  (cd "$work" && "$fuzzer" -max_total_time=$((minutes * 60)) -timeout=10 -rss_limit_mb=2048 \
+  (cd "$work" && "$fuzzer" -max_total_time=$((minutes * 60)) -timeout=25 -rss_limit_mb=2048 \
     -print_final_stats=1 $parallel $dictionary -artifact_prefix="$work/artifacts/" \
     "$work/corpus" "$root/fuzz/corpus/$target" >"$work/log.txt" 2>&1) || true
   grep -hE "^(Done [0-9]+ runs|stat::number_of_executed_units|stat::average_exec_per_sec|SUMMARY)" \
