@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_clock.h"
 #include "core/step/simulation.h"
 #include "io/scene_loader.h"
 #include "pictures/cairo_painter.h"
@@ -22,14 +23,8 @@
 namespace {
 
 using namespace fosssim;
-using Clock = std::chrono::steady_clock;
-
-std::string load_average() {
-  std::ifstream in("/proc/loadavg");
-  std::string one, five, fifteen;
-  in >> one >> five >> fifteen;
-  return one + " " + five + " " + fifteen;
-}
+using bench::Clock;
+using bench::load_average;
 
 /// The median of `repeats` timings of `work`, milliseconds.
 double median_ms(int repeats, const std::function<void()>& work) {

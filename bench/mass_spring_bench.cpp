@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 
+#include "bench_clock.h"
 #include "core/force_evaluation.h"
 #include "core/forces/simple_gravity_force.h"
 #include "core/forces/spring_force.h"
@@ -33,18 +34,9 @@
 namespace {
 
 using namespace fosssim;
-using Clock = std::chrono::steady_clock;
-
-double milliseconds_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-std::string load_average() {
-  std::ifstream in("/proc/loadavg");
-  std::string one, five, fifteen;
-  in >> one >> five >> fifteen;
-  return one + " " + five + " " + fifteen;
-}
+using bench::Clock;
+using bench::load_average;
+using bench::milliseconds_since;
 
 constexpr double kTimeStep = 1.0 / 30.0;
 

@@ -50,11 +50,13 @@ struct Appearance {
   static constexpr Color kDefaultMeshColor{0.25, 0.5, 0.8};
   static constexpr Color kDefaultEdgeColor{0.0, 0.388, 0.388};
   static constexpr Color kDefaultHalfPlaneColor{0.0, 0.0, 0.0};
+  static constexpr Color kDefaultSphereColor{0.6, 0.6, 0.6};
 
   // Radii are physics: SceneModel::particle_radius and SceneModel::edge_radius.
   std::vector<Color> particle_color;
   std::vector<Color> edge_color;
   std::vector<Color> half_plane_color;  ///< per half-plane, default black
+  std::vector<Color> sphere_color;      ///< per sphere, default grey
   Color background{1.0, 1.0, 1.0};
   std::vector<ParticlePath> paths;
   std::optional<Viewport> viewport;

@@ -48,7 +48,11 @@ struct SceneModel {
   std::vector<Edge> edges;
   /// Per edge: the radius of the capsule that collisions see and pictures draw.
   std::vector<double> edge_radius;
+  /// Per edge, false for the edges of meshes: springs that are drawn but are no collision
+  /// capsules (a cloth's bending springs pass through its vertices). Edges past its end collide.
+  std::vector<bool> edge_collides;
   std::vector<HalfPlane> half_planes;          ///< solid obstacles, numbered in file order
+  std::vector<Sphere> spheres;                 ///< static balls (3D), numbered in file order
   CollisionSettings collisions;                ///< how contact is handled (docs/collisions.md)
   std::vector<std::unique_ptr<Force>> forces;  ///< summed in this order
   IntegratorSettings integrator;
@@ -58,6 +62,10 @@ struct SceneModel {
   int num_dofs() const { return dim * num_particles(); }
   bool is_fixed_dof(int dof) const { return fixed[dof / dim]; }
   bool has_fixed_particles() const;
+  /// True when edge e is a collision capsule (edge_collides).
+  bool is_colliding_edge(int e) const {
+    return e >= static_cast<int>(edge_collides.size()) || edge_collides[e];
+  }
   /// ceil(duration / dt) in double precision (4.0 / 0.01 gives 400), the number of steps a run
   /// takes, saturated at kMaxStepCount: a count beyond it (or an infinite one, from a dt so small
   /// that duration / dt overflows) is refused with a message by check_step_count

@@ -18,6 +18,9 @@ std::string describe_collision(const CollisionRecord& collision) {
     case CollisionKind::kParticleHalfPlane:
       out << "Halfplane ";
       break;
+    case CollisionKind::kParticleSphere:
+      out << "Sphere ";
+      break;
   }
   out << collision.second << " with normal =";
   for (int c = 0; c < collision.normal.size(); ++c) out << " " << collision.normal[c];

@@ -19,8 +19,8 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-constexpr std::array<std::string_view, 4> kElements = {"halfplane", "halfplanecolor", "collision",
-                                                       "collisiondetection"};
+constexpr std::array<std::string_view, 6> kElements = {
+    "halfplane", "halfplanecolor", "sphere", "spherecolor", "collision", "collisiondetection"};
 
 struct MethodName {
   std::string_view name;
@@ -54,6 +54,14 @@ class CollisionReader {
                                               Appearance::kDefaultHalfPlaneColor);
     const auto colors = children(root, "halfplanecolor");
     for (int k = 0; k < static_cast<int>(colors.size()); ++k) read_color(*colors[k], k);
+    const auto spheres = children(root, "sphere");
+    for (int k = 0; k < static_cast<int>(spheres.size()); ++k) read_sphere(*spheres[k], k);
+    scene_.appearance.sphere_color.assign(scene_.model.spheres.size(),
+                                          Appearance::kDefaultSphereColor);
+    const auto sphere_colors = children(root, "spherecolor");
+    for (int k = 0; k < static_cast<int>(sphere_colors.size()); ++k) {
+      read_sphere_color(*sphere_colors[k], k);
+    }
     const auto collisions = children(root, "collision");
     if (!collisions.empty()) read_collision(*collisions[0]);
     for (std::size_t k = 1; k < collisions.size(); ++k) {
@@ -107,18 +115,45 @@ class CollisionReader {
   }
 
   void read_color(const XMLElement& e, int index) {
+    read_obstacle_color(e, index, "half-plane", scene_.appearance.half_plane_color);
+  }
+
+  /// <halfplanecolor> and <spherecolor>: i names an obstacle of `colors`, one per obstacle.
+  void read_obstacle_color(const XMLElement& e, int index, const std::string& what,
+                           std::vector<Color>& colors) {
     ElementReader r = reader(e, index);
-    const int count = static_cast<int>(scene_.model.half_planes.size());
+    const int count = static_cast<int>(colors.size());
     const int i = r.integer("i");
     if (i < 0 || i >= count) {
       r.fail("i",
-             "refers to half-plane " + std::to_string(i) + ", but the scene has " +
-                 (count == 0 ? std::string("no half-planes")
-                             : std::to_string(count) + " half-plane" + (count == 1 ? "" : "s") +
+             "refers to " + what + " " + std::to_string(i) + ", but the scene has " +
+                 (count == 0 ? "no " + what + "s"
+                             : std::to_string(count) + " " + what + (count == 1 ? "" : "s") +
                                    " (valid indices are 0 to " + std::to_string(count - 1) + ")"));
     }
-    scene_.appearance.half_plane_color[i] = r.color();
+    colors[i] = r.color();
     keep_warnings(r);
+  }
+
+  void read_sphere(const XMLElement& e, int index) {
+    ElementReader r = reader(e, index);
+    if (scene_.model.dim != 3) {
+      r.fail("spheres are obstacles of 3D scenes only (<scene dim=\"3\">)");
+    }
+    Sphere sphere;
+    sphere.center = Vector(3);
+    const std::array<const char*, 3> p = {"px", "py", "pz"};
+    for (int c = 0; c < 3; ++c) sphere.center[c] = r.number(p[c]);
+    sphere.radius = r.number("radius");
+    if (!(sphere.radius > 0.0)) {
+      r.fail("radius", "must be positive, found " + to_text(sphere.radius));
+    }
+    scene_.model.spheres.push_back(std::move(sphere));
+    keep_warnings(r);
+  }
+
+  void read_sphere_color(const XMLElement& e, int index) {
+    read_obstacle_color(e, index, "sphere", scene_.appearance.sphere_color);
   }
 
   void read_collision(const XMLElement& e) {
@@ -227,29 +262,20 @@ void read_collision_elements(const XMLElement& root, Scene& scene, const std::st
 
 std::string separate_run_together_attributes(std::string_view text, const std::string& file,
                                              std::vector<std::string>& warnings) {
-  std::string out;
-  out.reserve(text.size());
+  // One pass finds where a blank is missing; the text is copied once, with the blanks added.
+  std::vector<std::size_t> missing;  // offsets after which a blank goes
   int line = 1;
   bool in_tag = false;
   char quote_char = 0;  // the quote of the attribute value we are in, or 0
-  std::size_t k = 0;
-  while (k < text.size()) {
+  for (std::size_t k = 0; k < text.size(); ++k) {
     const char c = text[k];
-    if (!in_tag && quote_char == 0 && text.substr(k, 4) == "<!--") {
-      const std::size_t end = text.find("-->", k + 4);
-      const std::size_t stop = end == std::string_view::npos ? text.size() : end + 3;
-      for (std::size_t j = k; j < stop; ++j) line += text[j] == '\n';
-      out.append(text.substr(k, stop - k));
-      k = stop;
-      continue;
-    }
-    out.push_back(c);
-    if (c == '\n') ++line;
-    if (quote_char != 0) {
+    if (c == '\n') {
+      ++line;
+    } else if (quote_char != 0) {
       if (c == quote_char) {
         quote_char = 0;
         if (k + 1 < text.size() && is_name_start(text[k + 1])) {
-          out.push_back(' ');
+          missing.push_back(k + 1);
           warnings.push_back(file + ":" + std::to_string(line) +
                              ": warning: two attributes without a blank between them (such as "
                              "vx=\"0\"vy=\"0\"), read as if separated, as the course reads them");
@@ -259,10 +285,25 @@ std::string separate_run_together_attributes(std::string_view text, const std::s
       if (c == '"' || c == '\'') quote_char = c;
       if (c == '>') in_tag = false;
     } else if (c == '<') {
+      if (text.substr(k, 4) == "<!--") {  // a comment: skip it whole
+        const std::size_t end = text.find("-->", k + 4);
+        const std::size_t stop = end == std::string_view::npos ? text.size() : end + 3;
+        line += static_cast<int>(std::count(text.begin() + k, text.begin() + stop, '\n'));
+        k = stop - 1;
+        continue;
+      }
       in_tag = true;
     }
-    ++k;
   }
+  std::string out;
+  out.reserve(text.size() + missing.size());
+  std::size_t from = 0;
+  for (const std::size_t at : missing) {
+    out.append(text.substr(from, at - from));
+    out.push_back(' ');
+    from = at;
+  }
+  out.append(text.substr(from));
   return out;
 }
 

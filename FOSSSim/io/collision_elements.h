@@ -1,6 +1,6 @@
 #pragma once
-// The scene-file elements of contact: <halfplane>, <halfplanecolor>, <collision> and
-// <collisiondetection> (docs/scene-format.md, docs/collisions.md).
+// The scene-file elements of contact: <halfplane>, <halfplanecolor>, <sphere>, <spherecolor>,
+// <collision> and <collisiondetection> (docs/scene-format.md, docs/collisions.md).
 
 #include <string>
 #include <string_view>
@@ -17,7 +17,8 @@ namespace fosssim {
 bool is_collision_element(std::string_view name);
 
 /// Reads the root's contact elements into `scene` (its particles and edges already read):
-/// half-planes into model.half_planes, their colours into the appearance, the first
+/// half-planes into model.half_planes and spheres (3D only) into model.spheres, their colours
+/// into the appearance, the first
 /// <collision> element into model.collisions (a second one is ignored with a warning, as the
 /// course ignores it) and <collisiondetection>. Values the course accepts but that are probably
 /// mistakes (a restitution outside [0, 1], a negative stiffness or thickness, a zero normal, a

@@ -28,7 +28,9 @@ ElementReader::ElementReader(const tinyxml2::XMLElement& element, const std::str
       file_(file),
       index_(index),
       num_particles_(num_particles),
-      num_edges_(num_edges) {}
+      num_edges_(num_edges) {
+  asked_.reserve(16);  // one allocation for the names an element is asked for
+}
 
 int ElementReader::line() const { return element_.GetLineNum(); }
 
@@ -48,8 +50,20 @@ void ElementReader::fail(const char* name, const std::string& problem) {
 
 bool ElementReader::has(const char* name) const { return element_.Attribute(name) != nullptr; }
 
+bool ElementReader::was_asked(const char* name) const {
+  const std::string_view wanted(name);  // compared by length first
+  for (const std::string& asked : asked_) {
+    if (asked == wanted) return true;
+  }
+  return false;
+}
+
+void ElementReader::remember(const char* name) {
+  if (!was_asked(name)) asked_.emplace_back(name);
+}
+
 const char* ElementReader::raw(const char* name) {
-  asked_.insert(name);
+  remember(name);
   const char* value = element_.Attribute(name);
   if (value == nullptr) fail(name, "is missing");
   return value;
@@ -65,7 +79,7 @@ double ElementReader::number(const char* name) {
 }
 
 double ElementReader::number_or(const char* name, double fallback) {
-  asked_.insert(name);
+  remember(name);
   return has(name) ? number(name) : fallback;
 }
 
@@ -116,7 +130,7 @@ int ElementReader::edge_index(const char* name) {
 std::string ElementReader::text(const char* name) { return raw(name); }
 
 std::string ElementReader::text_or_empty(const char* name) {
-  asked_.insert(name);
+  remember(name);
   const char* value = element_.Attribute(name);
   return value ? value : "";
 }
@@ -141,7 +155,7 @@ std::string ElementReader::warning(const std::string& text) const {
 std::vector<std::string> ElementReader::unknown_attribute_warnings() const {
   std::vector<std::string> warnings;
   for (const auto* a = element_.FirstAttribute(); a != nullptr; a = a->Next()) {
-    if (asked_.count(a->Name()) == 0) {
+    if (!was_asked(a->Name())) {
       warnings.push_back(warning(std::string("unknown attribute \"") + a->Name() + "\" ignored"));
     }
   }

@@ -264,9 +264,10 @@ std::int64_t TrajectoryReader::record_end(std::int64_t at, std::int64_t index) {
         !read_int(file, type)) {
       cut_short("its collisions");
     }
-    if (type < 0 || type > 2) {
+    if (type < 0 || type > (dim_ == 3 ? 3 : 2)) {  // 3, particle-sphere, is 3D only
       fail(path_ + ": record " + record + " has a collision of unknown type " +
-           std::to_string(type) + " (expected 0, 1 or 2)");
+           std::to_string(type) +
+           (dim_ == 3 ? " (expected 0, 1, 2 or 3)" : " (expected 0, 1 or 2)"));
     }
   }
   at += count * record_bytes;

@@ -75,8 +75,10 @@ std::unique_ptr<Force> append_mesh(Scene& scene, const Mesh& mesh, const MeshMat
   Appearance& look = scene.appearance;
   model.particle_radius.resize(total, kParticleRadiusPerLength * length);
   look.particle_color.resize(total, Appearance::kDefaultMeshColor);
+  model.edge_collides.resize(model.edges.size(), true);
   for (const SpringTerm& s : springs) {
     model.edges.push_back({s.i, s.j});
+    model.edge_collides.push_back(false);  // a mesh's springs are not collision capsules
     model.edge_radius.push_back(kEdgeRadiusPerLength * length);
     look.edge_color.push_back(Appearance::kDefaultEdgeColor);
   }

@@ -192,6 +192,7 @@ SceneParts3D compute_scene_parts_3d(const Scene& scene) {
     if (!stood_for(edges[e].i) || !stood_for(edges[e].j))
       parts.edges.push_back(static_cast<int>(e));
   }
+  parts.obstacles = compute_obstacle_frame(scene);
   return parts;
 }
 
@@ -213,6 +214,10 @@ Drawing compose_drawing_3d(const Scene& scene, const SceneParts3D& parts, const 
   add_triangles(view, shapes);
   add_edges(view, parts, shapes);
   add_particles(view, parts, drawing.text_color, shapes);
+  for (DepthShape& facet : sphere_triangles(scene, camera, view.projection)) {
+    shapes.add(facet.depth, std::move(facet.triangle));
+  }
+  add_half_space_regions(scene, parts.obstacles, camera, view.projection, drawing.regions);
   drawing.shapes = shapes.farthest_first();
   add_overlay(view, overlay, drawing);
   drawing.text = overlay_text(overlay, state.time, scene.model.integrator.dt);

@@ -7,6 +7,7 @@
 #include "core/scene.h"
 #include "core/state.h"
 #include "render/drawing.h"
+#include "render/obstacles_3d.h"
 #include "render/orbit_camera.h"
 #include "render/path_history.h"
 
@@ -27,6 +28,7 @@ struct SceneParts3D {
   std::vector<int> particles;  ///< drawn as discs: on no surface and inside none
   std::vector<int> pins;       ///< fixed particles on a surface: drawn as dots
   std::vector<int> edges;      ///< drawn as capsules: with an end on no surface and inside none
+  ObstacleFrame obstacles;     ///< where half-spaces are drawn (render/obstacles_3d.h)
 };
 
 /// Works out SceneParts3D once for a scene (its topology does not change while it runs).
@@ -40,7 +42,10 @@ SceneParts3D compute_scene_parts_3d(const Scene& scene);
 /// - `parts.edges` as capsules and `parts.particles` as discs, their radii scaled by the
 ///   perspective at their depth; fixed particles at least kPinMinPixels and ringed in the pin
 ///   colour; `parts.pins` as dots;
-/// - the trails as thin segments.
+/// - the trails as thin segments;
+/// - the spheres as shaded facets;
+/// and, painted before all of them as regions, the half-spaces as tiled patches of their
+/// boundaries (add_half_space_regions).
 /// Shapes with a corner behind the near plane are left out. The overlay's marks ring their
 /// particles and its drag guide is drawn over everything, as in 2D.
 Drawing compose_drawing_3d(const Scene& scene, const SceneParts3D& parts, const State& state,

@@ -139,6 +139,14 @@ TEST_F(CollisionGrading, MissingSuperfluousAndWrongNormalCollisionsFail) {
   EXPECT_NE(report.find("Superfluous collision: Particle 1 - Particle 0"), std::string::npos);
 }
 
+TEST(CollisionDescription, NamesTheKindOfEveryPairSpheresIncluded) {
+  EXPECT_EQ(describe_collision(
+                {CollisionKind::kParticleSphere, 4, 1, Eigen::Vector3d(0, -1.5, 0.25), 0.6}),
+            "Particle 4 - Sphere 1 with normal = 0 -1.5 0.25");
+  EXPECT_EQ(describe_collision({CollisionKind::kParticleEdge, 0, 2, Eigen::Vector2d(1, 0), 0.0}),
+            "Particle 0 - Edge 2 with normal = 1 0");
+}
+
 TEST_F(CollisionGrading, PolynomialsAreComparedUpToAPositiveFactor) {
   load("continuous-time");
   bool passed = false;

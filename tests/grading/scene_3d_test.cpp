@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "core/step/simulation.h"
@@ -54,6 +57,46 @@ TEST(Scene3D, MeshScenesFromTheAssetsRunAndGrade) {
     scene.model.duration = 10 * scene.model.integrator.dt;
     testing::ScratchFolder dir;
     EXPECT_TRUE(run_and_grade(scene, (dir / "out.bin")).passed()) << name;
+  }
+}
+
+/// The least distance, over the particles of `state`, of a particle's surface from the
+/// obstacles (half-spaces and spheres), in units of its radius: 1 when a particle touches an
+/// obstacle, 0 when its centre is on the boundary, negative when its centre is inside.
+double least_clearance_in_radii(const SceneModel& model, const State& state) {
+  double least = INFINITY;
+  for (int p = 0; p < model.num_particles(); ++p) {
+    const Eigen::Vector3d x = state.q.segment<3>(3 * p);
+    const double r = model.particle_radius[p];
+    for (const HalfPlane& plane : model.half_planes) {
+      const Eigen::Vector3d n = plane.normal.head<3>().normalized();
+      least = std::min(least, (x - plane.point.head<3>()).dot(n) / r);
+    }
+    for (const Sphere& sphere : model.spheres) {
+      least = std::min(least, ((x - sphere.center.head<3>()).norm() - sphere.radius) / r);
+    }
+  }
+  return least;
+}
+
+TEST(Scene3D, CollisionScenesKeepEveryParticleOutOfTheObstaclesAndGrade) {
+  const std::string assets = std::string(FOSSSIM_SOURCE_DIR) + "/assets3d/collisions/";
+  for (const char* name : {"cloth_on_sphere.xml", "balls_in_box.xml", "soft_ball_bounce.xml"}) {
+    const Scene scene = load_scene_file(assets + name);
+    Simulation simulation(scene.model, scene.initial);
+    double least = INFINITY;
+    while (!simulation.finished()) {
+      simulation.step();
+      least = std::min(least, least_clearance_in_radii(scene.model, simulation.state()));
+    }
+    std::printf("%-22s least clearance %.3f radii\n", name, least);
+    // Touching (1) less what penalty contact sinks in; never half a radius in.
+    EXPECT_GT(least, 0.5) << name;
+    EXPECT_LT(least, 2.0) << name << ": reached an obstacle";
+    Scene shorter = load_scene_file(assets + name);
+    shorter.model.duration = 20 * scene.model.integrator.dt;
+    testing::ScratchFolder dir;
+    EXPECT_TRUE(run_and_grade(shorter, (dir / "out.bin")).passed()) << name;
   }
 }
 

@@ -22,9 +22,9 @@ Scene load(const std::string& body) {
   return load_scene_text(kHeader + body + "</scene>\n", "c.xml");
 }
 
-std::string error_of(const std::string& body) {
+std::string error_of(const std::string& body, const char* header = kHeader) {
   try {
-    load_scene_text(kHeader + body + "</scene>\n", "c.xml");
+    load_scene_text(header + body + "</scene>\n", "c.xml");
   } catch (const SceneError& error) {
     return error.what();
   }
@@ -110,10 +110,53 @@ const Case kCases[] = {
     {"UnknownDetection", "<collisiondetection type=\"grid\"/>\n",
      "c.xml:4: error: <collisiondetection>: attribute \"type\" must be \"allpairs\" or "
      "\"contest\", found \"grid\""},
+    {"SphereIn2D", "<sphere px=\"0\" py=\"0\" pz=\"0\" radius=\"1\"/>\n",
+     "c.xml:4: error: <sphere> 0: spheres are obstacles of 3D scenes only (<scene "
+     "dim=\"3\">)"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Cases, BadContactElement, testing::ValuesIn(kCases),
                          [](const auto& info) { return std::string(info.param.name); });
+
+constexpr const char* kHeader3D =
+    "<scene dim=\"3\">\n"
+    "<duration time=\"1\"/><integrator type=\"local-global\" dt=\"0.01\"/>\n"
+    "<particle m=\"1\" px=\"0\" py=\"0\" pz=\"0\" vx=\"0\" vy=\"0\" vz=\"0\" fixed=\"0\"/>\n";
+
+TEST(CollisionElements, ReadsSpheresAndTheirColoursIn3D) {
+  const Scene scene =
+      load_scene_text(std::string(kHeader3D) +
+                          "<halfplane px=\"0\" py=\"-1\" pz=\"0\" nx=\"0\" ny=\"1\" nz=\"0\"/>\n"
+                          "<sphere px=\"1\" py=\"2\" pz=\"3\" radius=\"0.5\"/>\n"
+                          "<sphere px=\"0\" py=\"0\" pz=\"-4\" radius=\"2\"/>\n"
+                          "<spherecolor i=\"1\" r=\"1\" g=\"0.5\" b=\"0\"/>\n"
+                          "<collision type=\"penalty\"/>\n</scene>\n",
+                      "c.xml");
+  ASSERT_EQ(scene.model.spheres.size(), 2u);
+  EXPECT_EQ(scene.model.spheres[0].center, (Vector(Eigen::Vector3d(1, 2, 3))));
+  EXPECT_EQ(scene.model.spheres[0].radius, 0.5);
+  EXPECT_EQ(scene.model.spheres[1].radius, 2.0);
+  ASSERT_EQ(scene.appearance.sphere_color.size(), 2u);
+  EXPECT_EQ(scene.appearance.sphere_color[0], Appearance::kDefaultSphereColor);
+  EXPECT_EQ(scene.appearance.sphere_color[1], (Color{1.0, 0.5, 0.0}));
+  EXPECT_EQ(scene.model.half_planes[0].normal.size(), 3);
+  EXPECT_TRUE(scene.warnings.empty());
+}
+
+TEST(CollisionElements, BadSpheresNameFileLineAndProblem) {
+  EXPECT_EQ(error_of("<sphere px=\"0\" py=\"0\" pz=\"0\" radius=\"0\"/>\n", kHeader3D),
+            "c.xml:4: error: <sphere> 0: attribute \"radius\" must be positive, found 0");
+  EXPECT_EQ(error_of("<sphere px=\"0\" py=\"0\" radius=\"1\"/>\n", kHeader3D),
+            "c.xml:4: error: <sphere> 0: attribute \"pz\" is missing");
+  EXPECT_EQ(error_of("<sphere px=\"0\" py=\"0\" pz=\"0\" radius=\"1\"/>\n"
+                     "<spherecolor i=\"1\" r=\"0\" g=\"0\" b=\"0\"/>\n",
+                     kHeader3D),
+            "c.xml:5: error: <spherecolor> 0: attribute \"i\" refers to sphere 1, but the scene "
+            "has 1 sphere (valid indices are 0 to 0)");
+  EXPECT_EQ(error_of("<spherecolor i=\"0\" r=\"0\" g=\"0\" b=\"0\"/>\n", kHeader3D),
+            "c.xml:4: error: <spherecolor> 0: attribute \"i\" refers to sphere 0, but the scene "
+            "has no spheres");
+}
 
 TEST(CollisionElements, ProbableMistakesAreWarnedAbout) {
   const Scene scene = load(

@@ -202,6 +202,31 @@ TEST_F(TrajectoryFile, RecordsWithCollisionsReadAlikeInAnyOrder) {
   }
 }
 
+TEST_F(TrajectoryFile, SphereRecordsAre3DOnlyAndUnknownTypesAreNamed) {
+  // A particle-sphere record (type 3) reads back in 3D; in 2D, type 3 is no collision type.
+  const CollisionRecord hit{CollisionKind::kParticleSphere, 1, 0, Eigen::Vector3d(0, -1, 0.5), 0.0};
+  const Vector q = Vector::LinSpaced(6, 0.0, 5.0), v = Vector::Zero(6);
+  {
+    TrajectoryWriter writer = TrajectoryWriter::open(path("s.bin"));
+    writer.write_record(TrajectoryLayout::kCollisions, q, v, {}, {});
+    writer.write_record(TrajectoryLayout::kCollisions, q, v, {hit}, {});
+    writer.commit();
+  }
+  TrajectoryReader reader =
+      TrajectoryReader::open(path("s.bin"), 6, 3, TrajectoryLayout::kCollisions);
+  TrajectoryRecord record;
+  reader.read_record(1, record);
+  ASSERT_EQ(record.collisions.size(), 1u);
+  EXPECT_TRUE(record.collisions[0].same_pair(hit));
+  EXPECT_EQ(record.collisions[0].normal, hit.normal);
+  const Error error = thrown_by(
+      [&] { TrajectoryReader::open(path("s.bin"), 6, 2, TrajectoryLayout::kCollisions); });
+  EXPECT_NE(
+      std::string(error.what()).find("has a collision of unknown type 3 (expected 0, 1 or 2)"),
+      std::string::npos)
+      << error.what();
+}
+
 TEST_F(TrajectoryFile, AFileCutInsideACollisionRecordIsNamed) {
   {
     TrajectoryWriter writer = TrajectoryWriter::open(path("c.bin"));

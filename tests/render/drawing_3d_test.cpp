@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "io/scene_loader.h"
 #include "render/scene_view.h"
@@ -198,6 +199,54 @@ TEST(SceneView, KeepsTheTwoDimensionalCameraFor2DScenes) {
   EXPECT_DOUBLE_EQ(view.camera().cx, -1.0);
   view.orbit(100.0, 100.0);  // nothing in 2D
   EXPECT_DOUBLE_EQ(view.camera().cx, -1.0);
+}
+
+TEST(ComposeDrawing3D, HalfSpacesAreCheckeredPatchesSeenOnlyFromTheirFreeSide) {
+  // The eye at (0, 0, 5) looks along -z. The floor y ≤ -1 is seen from above: a patch of
+  // 16 × 16 tiles of half-width 2 around the particle, all below the horizon (the picture's
+  // middle row), in two shades. The wall z ≥ 1 has the eye inside its solid: not drawn.
+  Scene scene = particles_at({{0, 0, 0}});
+  scene.model.half_planes.push_back({testing::vec({0, -1, 0}), testing::vec({0, 1, 0})});
+  scene.appearance.half_plane_color.assign(1, Color{0.8, 0.8, 0.8});
+  const Drawing floor = draw(scene, front_camera());
+  ASSERT_EQ(floor.regions.size(), static_cast<std::size_t>(kTiles * kTiles));
+  std::vector<Color> colors;
+  for (const Region& region : floor.regions) {
+    for (const Point2& corner : region.corners) EXPECT_GT(corner.y, 256.0);
+    if (std::find(colors.begin(), colors.end(), region.color) == colors.end()) {
+      colors.push_back(region.color);
+    }
+  }
+  EXPECT_EQ(colors.size(), 2u);
+  Scene walled = particles_at({{0, 0, 0}});
+  walled.model.half_planes.push_back({testing::vec({0, 0, 1}), testing::vec({0, 0, -1})});
+  walled.appearance.half_plane_color.assign(1, Color{0.5, 0.5, 0.5});
+  EXPECT_TRUE(draw(walled, front_camera()).regions.empty());
+  // With both, the floor is cut at the wall: the 12 rows of tiles with z ≤ 1 remain.
+  scene.model.half_planes.push_back(walled.model.half_planes[0]);
+  scene.appearance.half_plane_color.push_back(Color{0.5, 0.5, 0.5});
+  EXPECT_EQ(draw(scene, front_camera()).regions.size(), static_cast<std::size_t>(kTiles * 12));
+}
+
+TEST(ComposeDrawing3D, SpheresAreShadedFacetsOfTheirNearSide) {
+  // A sphere of radius 0.5 at the origin, 5 units in front of the eye (focal length 256 pixels):
+  // its outline has a radius of about 0.5 · 256 / √(5² - 0.5²) ≈ 25.7 pixels.
+  Scene scene = particles_at({{3, 0, 0}});
+  scene.model.spheres.push_back({testing::vec({0, 0, 0}), 0.5});
+  scene.appearance.sphere_color.assign(1, Color{0.9, 0.5, 0.1});
+  const Drawing d = draw(scene, front_camera());
+  int facets = 0;
+  for (const Shape& shape : d.shapes) {
+    const Triangle* t = std::get_if<Triangle>(&shape);
+    if (t == nullptr) continue;
+    ++facets;
+    for (const Point2& c : t->corners) {
+      EXPECT_LT(std::hypot(c.x - 256.0, c.y - 256.0), 25.8);
+    }
+  }
+  // About half of the 32 × (2 · 16 - 2) facets face the eye.
+  EXPECT_GT(facets, 32 * 12);
+  EXPECT_LT(facets, 32 * 17);
 }
 
 }  // namespace

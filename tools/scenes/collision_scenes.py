@@ -423,6 +423,18 @@ def timing_balls(count, detection, seed):
     return build
 
 
+def add_ribbon(s, x0, y0, length, spacing, radius, edge_radius, color, velocity):
+    """A horizontal chain of `length` particles of mass 0.1 from (x0, y0), `spacing` apart, joined
+    by springs (k 100, b 0.1) on edges; velocity() gives each particle's (vx, vy) in turn."""
+    prev = None
+    for k in range(length):
+        vx, vy = velocity()
+        p = s.particle(0.1, x0 + spacing * k, y0, vx, vy, radius=radius, color=color)
+        if prev is not None:
+            s.spring(prev, p, 100, b=0.1, radius=edge_radius)
+        prev = p
+
+
 def timing_ribbons(_):
     s = Scene("symplectic", dt=0.005, duration=0.1, viewport=(0, 0, 6.0),
               integrator_type="forward-backward-euler")
@@ -430,13 +442,8 @@ def timing_ribbons(_):
     rng = random.Random(17)
     for r in range(12):
         x0, y0 = rng.uniform(-4, 3), rng.uniform(-4.5, 4.5)
-        prev = None
-        for k in range(10):
-            p = s.particle(0.1, x0 + 0.1 * k, y0, rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3),
-                           radius=0.04, color=PALETTE[r % len(PALETTE)])
-            if prev is not None:
-                s.spring(prev, p, 100, b=0.1, radius=0.02)
-            prev = p
+        add_ribbon(s, x0, y0, 10, 0.1, 0.04, 0.02, PALETTE[r % len(PALETTE)],
+                   lambda: (rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3)))
     contest_box(s, 5.5)
     s.gravity.append((0, -GRAVITY))
     s.collide("penalty", k=100, thickness=0)
@@ -445,6 +452,33 @@ def timing_ribbons(_):
                      "and edges fall in the box under gravity; penalty forces act between "
                      "particles, particles and edges, and the box.")
     return s
+
+
+def timing_ribbon_pile(ribbons, length, seed):
+    def build(_):
+        s = Scene("symplectic", dt=0.005, duration=0.1, viewport=(0, 0, 6.0),
+                  integrator_type="forward-backward-euler")
+        s.what = (f"a pile of {ribbons} ribbons of {length} particles (springs and edges) in the "
+                  "box, contest detection")
+        rng = random.Random(seed)
+        spacing = 0.06
+        for r in range(ribbons):
+            x0, y0 = rng.uniform(-4.9, 4.9 - spacing * (length - 1)), rng.uniform(-4.9, 4.9)
+            vx, vy = rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3)
+            add_ribbon(s, x0, y0, length, spacing, 0.02, 0.01, PALETTE[r % len(PALETTE)],
+                       lambda: (vx, vy))
+        contest_box(s, 5.5)
+        s.gravity.append((0, -GRAVITY))
+        s.collide("penalty", k=100, thickness=0)
+        s.detection = "contest"
+        s.description = (f"The contest's class with ribbons: {ribbons} ribbons of {length} "
+                         "particles of radius 0.02, 0.06 apart, joined by springs and edges of "
+                         "radius 0.01, lie across each other in the box (random places and "
+                         "velocities) and fall under gravity; penalty forces with thickness 0 act "
+                         "between particles, particles and edges, and the box; forward-backward "
+                         "Euler, h = 0.005, 20 steps.")
+        return s
+    return build
 
 
 def timing_simple(_):
@@ -466,7 +500,9 @@ def timing_simple(_):
 T2M3 = [
     ("timing", "balls_400_contest", timing_balls(400, "contest", 2)),
     ("timing", "balls_400_allpairs", timing_balls(400, "allpairs", 2)),
+    ("timing", "balls_15000_contest", timing_balls(15000, "contest", 1)),
     ("timing", "ribbons_contest", timing_ribbons),
+    ("timing", "ribbon_pile_15000_contest", timing_ribbon_pile(300, 50, 5)),
     ("timing", "simple_contest", timing_simple),
 ]
 

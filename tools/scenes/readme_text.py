@@ -156,7 +156,10 @@ COLLISION_INTROS = {
              "forces with thickness 0, forward-backward Euler, h = 0.005, 20 steps, with "
              "`<collisiondetection type=\"contest\">` (FOSSSim's pair detection serves it; the "
              "same scene with `allpairs` has the same trajectory). The course's own timing scene "
-             "has 15,000 balls; these are small enough to grade with all pairs in seconds."),
+             "has 15,000 balls; `timing_balls_15000_contest.xml` is of its size, and "
+             "`timing_ribbon_pile_15000_contest.xml` is a ribbon pile of the same size. The "
+             "smaller ones grade with all pairs in seconds. docs/collisions.md (\"Broad "
+             "phase\") gives the timings."),
 }
 
 

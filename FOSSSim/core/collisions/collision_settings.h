@@ -15,6 +15,13 @@ struct HalfPlane {
   Vector normal;  ///< points out of the solid, size dim; need not be unit length
 };
 
+/// A solid ball, at rest, that particles collide with (3D scenes only): the points y with
+/// ‖y - center‖ ≤ radius. To a particle it is a particle of infinite mass that never moves.
+struct Sphere {
+  Vector center;        ///< size dim
+  double radius = 0.0;  ///< > 0
+};
+
 /// How a scene handles contact (docs/collisions.md).
 enum class CollisionMethod {
   kNone,            ///< nothing collides
@@ -24,10 +31,15 @@ enum class CollisionMethod {
   kHybrid,          ///< penalty force, Jacobi passes of swept impulses, then rigid impact zones
 };
 
-/// How candidate pairs are found (<collisiondetection type>).
+/// How candidate pairs are found (<collisiondetection type>; docs/collisions.md, "Broad
+/// phase").
 enum class PairDetection {
-  kAllPairs,  ///< every pair, in the course's order (the default)
-  kContest,   ///< the course's contest detector; FOSSSim uses its own broad phase (all pairs now)
+  /// No <collisiondetection>: FOSSSim's grid wherever it gives the results of all pairs
+  /// bit for bit (penalty and simple in 2D, everything in 3D), all pairs for 2D
+  /// continuous-time and hybrid handling, whose polynomial logs list every pair.
+  kDefault,
+  kAllPairs,  ///< type="allpairs": every pair, in the course's order
+  kContest,   ///< type="contest": FOSSSim's grid (core/collisions/grid_pairs.h) for every method
 };
 
 /// How the penalty force enters the matrices of implicit integrators.
@@ -48,7 +60,7 @@ struct CollisionSettings {
   double thickness = 0.01;   ///< penalty thickness T (hybrid's default is 0.1)
   /// Hybrid: the most impulse passes before the geometric stage; ≤ 0 skips them.
   int max_iterations = 10;
-  PairDetection detection = PairDetection::kAllPairs;
+  PairDetection detection = PairDetection::kDefault;
   PenaltyJacobian penalty_jacobian = PenaltyJacobian::kNone;
 
   /// True for the methods that add a penalty force to the model.

@@ -76,9 +76,11 @@ void ContinuousTimeStage<D>::apply(const StepContext& context, State& state) {
     return (particle_vec<D>(state.q, p) - particle_vec<D>(xs, p)) / h;
   };
   StepRecord& record = context.record;
-  for_each_in_course_order(*pairs_, PairQuery{xs, state.q, 0.0}, [&](const CandidatePair& pair) {
+  // The responses move particles, which later pairs must see: a moving query.
+  pairs_->for_each_moving(PairQuery{xs, state.q, 0.0}, [&](const CandidatePair& pair) {
+    MovedParticles moved;
     const auto hit = detect_swept<D>(model, pair, xs, state.q, &record.polynomials);
-    if (!hit) return;
+    if (!hit) return moved;
     const Separation<D>& s = hit->separation;
     record.collisions.push_back(make_record<D>(pair, s.n, hit->time));
     const Impulse<D> impulse =
@@ -87,7 +89,9 @@ void ContinuousTimeStage<D>::apply(const StepContext& context, State& state) {
       const int p = impulse.particle[k];
       state.v.template segment<D>(D * p) += impulse.dv[k];
       state.q.template segment<D>(D * p) += h * impulse.dv[k];
+      moved.particle[moved.count++] = p;
     }
+    return moved;
   });
   record.sync = SyncPoint{state.q, state.v, record.polynomials.size()};
 }

@@ -17,6 +17,7 @@ ImpactZone impact_zone_of(const SceneModel& model, const CandidatePair& pair) {
       break;
     }
     case CollisionKind::kParticleHalfPlane:
+    case CollisionKind::kParticleSphere:  // hybrid is 2D, spheres 3D: for completeness
       zone.particles = {pair.particle};
       zone.half_plane = true;
       break;

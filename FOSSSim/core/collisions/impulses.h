@@ -41,7 +41,7 @@ inline double impulse_mass(const SceneModel& model, int p) {
 ///     Δv_1 = c s/(1 + (1-α)² M_1/M_2 + α² M_1/M_3) n̂,
 ///     Δv_2 = -c (1-α) s/(M_2/M_1 + (1-α)² + α² M_2/M_3) n̂,
 ///     Δv_3 = -c α s/(M_3/M_1 + (1-α)² M_3/M_2 + α²) n̂;
-///   particle-half-plane:  Δv = -c 2 (w·n̂) n̂.
+///   particle-half-plane and particle-sphere (an object at rest):  Δv = -c 2 (w·n̂) n̂.
 /// M is +∞ for fixed particles, which get no change. The divisions are written exactly in
 /// these forms (course-compatible): a fixed particle against an edge with one fixed end and
 /// alpha 0 or 1 gives 0/0, a NaN, on the free end, as in the course.
@@ -82,6 +82,7 @@ Impulse<D> compute_impulse(const SceneModel& model, const CandidatePair& pair, c
       break;
     }
     case CollisionKind::kParticleHalfPlane:
+    case CollisionKind::kParticleSphere:
       if (!model.fixed[p1]) impulse.add(p1, -(c * 2.0 * w1.dot(nhat)) * nhat);
       break;
   }

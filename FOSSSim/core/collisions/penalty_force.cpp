@@ -18,7 +18,7 @@ struct Contact {
   std::array<int, 3> particle{};
   std::array<double, 3> weight{};
   Separation<D> separation;
-  double distance = 0.0;  // d = ‖n‖
+  double distance = 0.0;  // d = ‖n‖ (signed for 3D half-spaces, Separation::distance)
   double delta = 0.0;     // δ = d - R - T < 0
   bool half_plane = false;
   bool interior_edge_point = false;
@@ -38,14 +38,21 @@ PenaltyForce<D>::PenaltyForce(const SceneModel& model, double stiffness, double 
 
 template <int D>
 template <typename Visit>
-void PenaltyForce<D>::for_each_contact(const Vector& q, Visit&& visit) const {
+void PenaltyForce<D>::for_each_contact(const Vector& q, PenaltyPairs which, Visit&& visit) const {
   const SceneModel& model = *model_;
   const PairQuery query{q, q, thickness_};
   pairs_->for_each(query, [&](const CandidatePair& pair) {
+    if (which != PenaltyPairs::kAll &&
+        is_obstacle(pair.kind) != (which == PenaltyPairs::kObstacles)) {
+      return;
+    }
     Contact<D> c;
     c.separation = separation<D>(model, pair, q);
-    c.distance = c.separation.n.norm();
+    c.distance = c.separation.distance;
     if (!(c.distance < c.separation.radii + thickness_)) return;
+    if constexpr (D == 3) {
+      if (c.separation.n.isZero(0.0)) return;  // no direction to push along
+    }
     c.delta = c.distance - c.separation.radii - thickness_;
     const double alpha = c.separation.alpha;
     switch (pair.kind) {
@@ -64,10 +71,11 @@ void PenaltyForce<D>::for_each_contact(const Vector& q, Visit&& visit) const {
         break;
       }
       case CollisionKind::kParticleHalfPlane:
+      case CollisionKind::kParticleSphere:
         c.count = 1;
         c.particle = {pair.particle, 0, 0};
         c.weight = {-1.0, 0.0, 0.0};
-        c.half_plane = true;
+        c.half_plane = pair.kind == CollisionKind::kParticleHalfPlane;
         break;
     }
     visit(c);
@@ -76,13 +84,20 @@ void PenaltyForce<D>::for_each_contact(const Vector& q, Visit&& visit) const {
 
 template <int D>
 void PenaltyForce<D>::add_energy(const ForceInput& in, double& energy) const {
-  for_each_contact(in.q, [&](const Contact<D>& c) { energy += 0.5 * k_ * c.delta * c.delta; });
+  for_each_contact(in.q, PenaltyPairs::kAll,
+                   [&](const Contact<D>& c) { energy += 0.5 * k_ * c.delta * c.delta; });
 }
 
 template <int D>
 void PenaltyForce<D>::add_gradient(const ForceInput& in, Vector& gradient) const {
-  for_each_contact(in.q, [&](const Contact<D>& c) {
-    const Vec<D> nhat = c.separation.n / c.distance;
+  add_gradient(in, gradient, PenaltyPairs::kAll);
+}
+
+template <int D>
+void PenaltyForce<D>::add_gradient(const ForceInput& in, Vector& gradient,
+                                   PenaltyPairs which) const {
+  for_each_contact(in.q, which, [&](const Contact<D>& c) {
+    const Vec<D> nhat = c.separation.n / c.separation.n.norm();
     // The particle's force is k δ n̂ and the other object's -k δ n̂ shared by the weights;
     // gradE = -F.
     const Vec<D> force = k_ * c.delta * nhat;
@@ -95,8 +110,8 @@ void PenaltyForce<D>::add_gradient(const ForceInput& in, Vector& gradient) const
 template <int D>
 void PenaltyForce<D>::add_hessian_x(const ForceInput& in, HessianBuilder& hessian) const {
   if (jacobian_ == PenaltyJacobian::kNone) return;
-  for_each_contact(in.q, [&](const Contact<D>& c) {
-    const Vec<D> nhat = c.separation.n / c.distance;
+  for_each_contact(in.q, PenaltyPairs::kAll, [&](const Contact<D>& c) {
+    const Vec<D> nhat = c.separation.n / c.separation.n.norm();
     const Mat<D> nn = nhat * nhat.transpose();
     if (c.half_plane) {  // d is linear in x: ∇²d = 0
       hessian.add_block<D>(c.particle[0], c.particle[0], k_ * nn);

@@ -13,10 +13,11 @@
 namespace fosssim {
 
 /// For every candidate pair with separation n (core/collisions/proximity.h), radii R and
-/// thickness T, and d = ‖n‖ < R + T: the potential ½ k δ², δ = d - R - T, and with n̂ = n/d
+/// thickness T (for a sphere R = r_i + its radius), and d = ‖n‖ < R + T: the potential ½ k δ², δ =
+/// d - R - T, and with n̂ = n/d
 ///   particle-particle:  F_i = k δ n̂,  F_j = -k δ n̂;
 ///   particle-edge:      F_i = k δ n̂,  F_a = -(1-α) k δ n̂,  F_b = -α k δ n̂;
-///   particle-half-plane: F_i = k δ n̂.
+///   particle-half-plane and particle-sphere: F_i = k δ n̂.
 /// δ < 0, so every force pushes the particle away from the other object (but a particle whose
 /// centre has crossed a half-plane's boundary is pushed further in: the course's unsigned
 /// distance). The force is the exact negative gradient of the potential (α is the minimiser of
@@ -26,6 +27,13 @@ namespace fosssim {
 /// the force only in their right-hand side. With PenaltyJacobian::kExact hessX is the exact
 /// Jacobian, k (∇d ∇dᵀ + δ ∇²d), and with ForceInput::definite_hessian only its semi-definite
 /// part k ∇d ∇dᵀ. hessV is zero. The course defines no energy; add_energy reports ½ k δ².
+/// Which pairs an evaluation of the penalty force sums.
+enum class PenaltyPairs {
+  kAll,             ///< every pair: the force as every integrator but local/global sees it
+  kAmongParticles,  ///< particle-particle and particle-edge pairs only
+  kObstacles,       ///< particle-half-plane and particle-sphere pairs only
+};
+
 template <int D>
 class PenaltyForce final : public Force {
  public:
@@ -42,9 +50,15 @@ class PenaltyForce final : public Force {
   bool has_jacobian() const override { return jacobian_ == PenaltyJacobian::kExact; }
   std::string label() const override;
 
+  /// add_gradient over the pairs `which` selects only. The local/global solver takes the
+  /// obstacles' pairs into its global matrix and the others explicitly (docs/collisions.md).
+  void add_gradient(const ForceInput& in, Vector& gradient, PenaltyPairs which) const;
+  double stiffness() const { return k_; }
+  double thickness() const { return thickness_; }
+
  private:
   template <typename Visit>
-  void for_each_contact(const Vector& q, Visit&& visit) const;
+  void for_each_contact(const Vector& q, PenaltyPairs which, Visit&& visit) const;
 
   const SceneModel* model_;
   double k_;

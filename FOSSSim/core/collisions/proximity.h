@@ -17,6 +17,9 @@ struct Separation {
   Vec<D> n;            ///< from the particle to the closest point of the other object
   double alpha = 0.0;  ///< particle-edge: the closest point is x_a + alpha (x_b - x_a)
   double radii = 0.0;  ///< the sum of the radii (the particle's alone for a half-plane)
+  /// ‖n‖, except for a half-space in 3D: the signed distance of the particle's centre from its
+  /// boundary, negative inside the solid.
+  double distance = 0.0;
 };
 
 /// clamp(s, 0, 1) written as the course does: min(1, max(0, s)).
@@ -30,7 +33,8 @@ double closest_edge_parameter(const Vec<D>& x, const Vec<D>& xa, const Vec<D>& x
 }
 
 /// n = ((P - x)·N / (N·N)) N: the vector from x to its projection on the half-plane's
-/// boundary. Its direction depends on the side x is on (the course's unsigned distance).
+/// boundary. Its direction depends on the side x is on (the course's unsigned distance, in 2D;
+/// separation_of signs it in 3D).
 template <int D>
 Vec<D> half_plane_vector(const Vec<D>& x, const HalfPlane& plane) {
   const Vec<D> P = plane.point.head<D>();
@@ -60,10 +64,28 @@ Separation<D> separation_of(const SceneModel& model, const CandidatePair& pair,
       break;
     }
     case CollisionKind::kParticleHalfPlane:
-      s.n = half_plane_vector<D>(x, model.half_planes[pair.other]);
       s.radii = model.particle_radius[i];
+      if constexpr (D == 3) {
+        // FOSSSim's own in 3D (the course has no 3D): n always points into the solid and the
+        // distance is signed, so a particle whose centre has crossed the boundary is still
+        // detected and pushed out. On the free side this is the course's n, bit for bit.
+        const HalfPlane& plane = model.half_planes[pair.other];
+        const Vec<D> N = plane.normal.head<D>();
+        const double side = (x - plane.point.head<D>()).dot(N);
+        s.n = -(std::abs(side) / N.dot(N)) * N;
+        s.distance = side / N.norm();
+        return s;
+      }
+      s.n = half_plane_vector<D>(x, model.half_planes[pair.other]);
       break;
+    case CollisionKind::kParticleSphere: {  // a particle that never moves
+      const Sphere& sphere = model.spheres[pair.other];
+      s.n = sphere.center.head<D>() - x;
+      s.radii = model.particle_radius[i] + sphere.radius;
+      break;
+    }
   }
+  s.distance = s.n.norm();
   return s;
 }
 
@@ -74,7 +96,7 @@ Separation<D> separation(const SceneModel& model, const CandidatePair& pair, con
 }
 
 /// The velocity of the particle relative to the closest point of the other object, (v_i - v_other)
-/// with the edge's velocity interpolated at alpha; a half-plane is at rest.
+/// with the edge's velocity interpolated at alpha; half-planes and spheres are at rest.
 template <int D>
 Vec<D> relative_velocity(const SceneModel& model, const CandidatePair& pair, double alpha,
                          const Vector& v) {
@@ -89,19 +111,20 @@ Vec<D> relative_velocity(const SceneModel& model, const CandidatePair& pair, dou
       return vi - va - alpha * (vb - va);
     }
     case CollisionKind::kParticleHalfPlane:
+    case CollisionKind::kParticleSphere:
       break;
   }
   return vi;
 }
 
-/// The discrete test (course-compatible): the objects overlap, ‖n‖ < radii, and approach,
+/// The discrete test (course-compatible): the objects overlap, distance < radii, and approach,
 /// (relative velocity)·n > 0, both strictly. Touching exactly, or moving tangentially, is not a
 /// collision; neither is a particle whose centre lies on an edge or a half-plane's boundary
 /// (n = 0).
 template <int D>
 bool is_colliding(const SceneModel& model, const CandidatePair& pair, const Separation<D>& s,
                   const Vector& v) {
-  if (!(s.n.norm() < s.radii)) return false;
+  if (!(s.distance < s.radii)) return false;
   return relative_velocity<D>(model, pair, s.alpha, v).dot(s.n) > 0.0;
 }
 

@@ -105,6 +105,11 @@ std::vector<Polynomial> swept_polynomials(const SceneModel& model, const Candida
       return particle_edge<D>(m1, motion<D>(xs, xe, edge.i), motion<D>(xs, xe, edge.j),
                               r + model.edge_radius[pair.other]);
     }
+    case CollisionKind::kParticleSphere: {  // as a particle that never moves
+      const Sphere& sphere = model.spheres[pair.other];
+      return particle_particle<D>(m1, Motion<D>{sphere.center.head<D>(), Vec<D>::Zero()},
+                                  r + sphere.radius);
+    }
     case CollisionKind::kParticleHalfPlane:
       break;
   }

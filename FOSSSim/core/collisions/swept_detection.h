@@ -15,7 +15,8 @@ namespace fosssim {
 /// The polynomials in t ∈ [0, 1] of `pair` moving linearly from xs to xe (x(t) = xs + t Δx,
 /// Δx = xe - xs), all positive exactly when the objects overlap and approach, in the course's
 /// order (docs/collisions.md lists them):
-///   particle-particle and particle-half-plane: overlap (quadratic), approach (linear);
+///   particle-particle, particle-half-plane and particle-sphere (a particle at rest):
+///   overlap (quadratic), approach (linear);
 ///   particle-edge: overlap with the edge's line times ‖edge(t)‖² (quartic), α(t) > 0 and
 ///   α(t) < 1 (quadratics), approach (the course's quintic, whose t³ coefficient has -2FGQ
 ///   where the exact expansion has -2FHQ: course-compatible, kept on purpose).

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string_view>
 
+#include "core/collisions/proximity.h"
 #include "core/error.h"
 
 namespace fosssim {
@@ -13,6 +14,7 @@ template <int D>
 void LocalGlobal<D>::prepare() {
   const SceneModel& model = this->model();
   split_ = sort_mass_spring_forces(forces());
+  penalty_ = dynamic_cast<const PenaltyForce<D>*>(split_.contact);
   const bool eliminate = settings_.pins == PinMethod::kElimination;
   free_ = FreeDofs(eliminate ? model.fixed : std::vector<bool>(model.fixed.size(), false), D);
   if (!eliminate) {
@@ -43,14 +45,15 @@ template <int D>
 void LocalGlobal<D>::advance(State& state) {
   const double h = model().integrator.dt;
   if (!pins_taken_) take_pins(state);
+  auto q = map_points<D>(state.q);
+  auto v = map_points<D>(state.v);
+  y_ = q + h * v;  // where the old velocity carries every particle; eliminated ones go there
   std::vector<std::pair<int, double>> signature = collect_anchors(state);
+  collect_contacts(state, signature);
   if (signature != factored_anchors_) {
     factored_anchors_ = std::move(signature);
     factor();
   }
-  auto q = map_points<D>(state.q);
-  auto v = map_points<D>(state.v);
-  y_ = q + h * v;  // where the old velocity carries every particle; eliminated ones go there
   p_ = y_;
   if (settings_.start == IterationStart::kCurrent) {
     for (int p : free_.particles()) p_.row(p) = q.row(p);
@@ -60,6 +63,7 @@ void LocalGlobal<D>::advance(State& state) {
   for (int iteration = 1; iteration <= settings_.iterations; ++iteration) {
     rhs_ = constant_rhs_;
     add_spring_directions(rhs_);
+    add_contact_targets(rhs_);
     last_change_ = global_solve(rhs_);
     last_iterations_ = iteration;
     if (settings_.tolerance > 0.0 && last_change_ <= settings_.tolerance) break;
@@ -108,10 +112,59 @@ std::vector<std::pair<int, double>> LocalGlobal<D>::collect_anchors(const State&
 }
 
 template <int D>
+void LocalGlobal<D>::collect_contacts(const State& state,
+                                      std::vector<std::pair<int, double>>& signature) {
+  contacts_.clear();
+  if (penalty_ == nullptr) return;
+  const SceneModel& model = this->model();
+  const auto q = map_points<D>(state.q);
+  const int num_half_planes = static_cast<int>(model.half_planes.size());
+  const int num_spheres = static_cast<int>(model.spheres.size());
+  for (int f = 0; f < free_.num_particles(); ++f) {
+    const int p = free_.particles()[f];
+    // Within reach at pⁿ, with a margin of twice the step's predicted motion (distances to an
+    // obstacle change no faster than the particle moves).
+    const double margin = penalty_->thickness() + 2.0 * (y_.row(p) - q.row(p)).norm();
+    const auto consider = [&](CollisionKind kind, int obstacle) {
+      const CandidatePair pair{kind, p, obstacle};
+      const Separation<D> s = separation<D>(model, pair, state.q);
+      if (s.distance < s.radii + margin) {
+        contacts_.push_back({f, pair});
+        signature.emplace_back(p, penalty_->stiffness());
+      }
+    };
+    for (int o = 0; o < num_half_planes; ++o) consider(CollisionKind::kParticleHalfPlane, o);
+    for (int o = 0; o < num_spheres; ++o) consider(CollisionKind::kParticleSphere, o);
+  }
+}
+
+template <int D>
+void LocalGlobal<D>::add_contact_targets(Points<D>& rhs) const {
+  const SceneModel& model = this->model();
+  const double k = penalty_ != nullptr ? penalty_->stiffness() : 0.0;
+  const double thickness = penalty_ != nullptr ? penalty_->thickness() : 0.0;
+  const auto position = [this](int p) -> Vec<D> { return p_.row(p).transpose(); };
+  for (const ObstacleContact& c : contacts_) {
+    // The nearest point out of reach, p + min(δ, 0) n̂ (n from the particle to the obstacle),
+    // so that ½ k |p - t|² = ½ k δ² inside the reach and 0 outside, the penalty energy.
+    const Separation<D> s = separation_of<D>(model, c.pair, position);
+    const double length = s.n.norm();
+    Vec<D> target = position(c.pair.particle);
+    const double delta = s.distance - s.radii - thickness;
+    if (length > 0.0 && delta < 0.0) target += (delta / length) * s.n;
+    rhs.row(c.f) += k * target.transpose();
+  }
+}
+
+template <int D>
 void LocalGlobal<D>::factor() {
   const int n = free_.num_particles();
   if (n == 0) return;
-  const SparseMatrix Q = assemble_local_global_matrix(model().mass, free_, split_.springs, anchors_,
+  std::vector<AnchorTerm> terms = anchors_;  // and each contact's k on its particle's diagonal
+  for (const ObstacleContact& c : contacts_) {
+    terms.push_back({c.pair.particle, penalty_->stiffness(), Eigen::Vector3d::Zero()});
+  }
+  const SparseMatrix Q = assemble_local_global_matrix(model().mass, free_, split_.springs, terms,
                                                       model().integrator.dt);
   bool ok = false;
   if (factorizations_ > 0) {
@@ -137,7 +190,13 @@ void LocalGlobal<D>::assemble_constant_rhs(const State& state) {
   const auto q = map_points<D>(state.q);
   explicit_gradient_.setZero(state.q.size());
   const ForceInput in{state.q, state.v, model.mass};
-  for (const Force* force : split_.others) force->add_gradient(in, explicit_gradient_);
+  for (const Force* force : split_.others) {
+    if (force == split_.contact && penalty_ != nullptr) {  // obstacles are in Q
+      penalty_->add_gradient(in, explicit_gradient_, PenaltyPairs::kAmongParticles);
+    } else {
+      force->add_gradient(in, explicit_gradient_);
+    }
+  }
   const auto gradient = map_points<D>(static_cast<const Vector&>(explicit_gradient_));
   const int n = free_.num_particles();
   constant_rhs_.resize(n, D);

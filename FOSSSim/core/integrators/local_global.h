@@ -4,6 +4,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/collisions/candidate_pairs.h"
+#include "core/collisions/penalty_force.h"
 #include "core/integrators/integrator.h"
 #include "core/solvers/spd_solver.h"
 #include "core/spring_terms.h"
@@ -74,9 +76,15 @@ struct LocalGlobalSettings {
 ///   integrator's first step, moved on with their velocity at that step. A penalty-pinned
 ///   particle is otherwise an ordinary particle, as in Liu et al. and the fast mass-springs
 ///   assignment: it receives every force, and the penalty holds it within about |f|/w.
-/// Every other force (gravity, constant forces, drag, vortices, Newtonian gravity) is
-/// evaluated once per step at (pⁿ, vⁿ) and held constant as f_ext: exact for gravity and
-/// constant forces, explicit for the rest.
+/// - the penalty force's contacts with obstacles (half-planes, spheres; core/collisions/
+///   penalty_force.h), each ½ k δ² = ½ k |p_i - t|² with t the nearest point of p_i out of
+///   the obstacle's reach (radii plus thickness), which the local step recomputes like a
+///   spring's direction. Particles within reach of an obstacle at the start of a step, with a
+///   margin of twice the distance the old velocity carries them, get the term for the whole
+///   step and add k to Q's diagonal: Q is refactored (numerically) when that set changes.
+/// Every other force (gravity, constant forces, drag, vortices, Newtonian gravity, the penalty
+/// force between particles and edges) is evaluated once per step at (pⁿ, vⁿ) and held constant
+/// as f_ext: exact for gravity and constant forces, explicit for the rest.
 template <int D>
 class LocalGlobal final : public Integrator {
  public:
@@ -86,8 +94,10 @@ class LocalGlobal final : public Integrator {
   int last_iterations() const { return last_iterations_; }
   /// The largest coordinate change of the last iteration of the last step (m).
   double last_change() const { return last_change_; }
-  /// How many times Q has been factored (once in precompute, plus anchor changes).
+  /// How many times Q has been factored (once in precompute, plus anchor and contact changes).
   int factorizations() const { return factorizations_; }
+  /// The obstacle contacts of the last step (particle-obstacle pairs in Q).
+  int last_contacts() const { return static_cast<int>(contacts_.size()); }
   /// The factorization in use.
   SpdSolver::Method solver_method() const { return solver_.method(); }
 
@@ -107,10 +117,15 @@ class LocalGlobal final : public Integrator {
   void take_pins(const State& state);
   /// Gathers this step's anchors; returns their (particle, stiffness) pairs, which Q depends on.
   std::vector<std::pair<int, double>> collect_anchors(const State& state);
-  /// Assembles and factors Q for anchors_.
+  /// Gathers this step's obstacle contacts (from pⁿ and y_); appends their (particle, k) to
+  /// `signature`.
+  void collect_contacts(const State& state, std::vector<std::pair<int, double>>& signature);
+  /// Assembles and factors Q for anchors_ and contacts_.
   void factor();
   void assemble_constant_rhs(const State& state);
   void add_spring_directions(Points<D>& rhs);
+  /// The local step of the obstacle contacts: k times each one's target.
+  void add_contact_targets(Points<D>& rhs) const;
   double global_solve(Points<D>& rhs);
 
   LocalGlobalSettings settings_;
@@ -124,6 +139,13 @@ class LocalGlobal final : public Integrator {
   std::int64_t pin_step_ = 0;
   std::vector<AnchorTerm> anchors_;                       // this step's anchors (free particles)
   std::vector<std::pair<int, double>> factored_anchors_;  // (particle, k) in Q
+  const PenaltyForce<D>* penalty_ = nullptr;              // the model's, or null
+  /// A free particle (f, its index among them) and an obstacle within its reach this step.
+  struct ObstacleContact {
+    int f;
+    CandidatePair pair;
+  };
+  std::vector<ObstacleContact> contacts_;
   SpdSolver solver_;
   Points<D> y_;             // pⁿ + h vⁿ, every particle
   Points<D> p_;             // the current iterate, every particle

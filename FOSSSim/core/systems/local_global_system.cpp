@@ -1,5 +1,6 @@
 #include "core/systems/local_global_system.h"
 
+#include "core/collisions/penalty_force.h"
 #include "core/forces/spring_force.h"
 #include "core/forces/spring_set_force.h"
 
@@ -34,6 +35,10 @@ MassSpringForces sort_mass_spring_forces(const ForceSet& forces) {
       out.anchors.push_back(anchor);
     } else {
       out.others.push_back(force);
+      if (dynamic_cast<const PenaltyForce<2>*>(force) != nullptr ||
+          dynamic_cast<const PenaltyForce<3>*>(force) != nullptr) {
+        out.contact = force;
+      }
     }
   }
   return out;

@@ -15,12 +15,15 @@ namespace fosssim {
 /// A force set sorted the way the local/global solver takes it. Springs (SpringForce,
 /// SpringSetForce) and anchors (DragSpringForce: a zero-rest-length spring to a point) are
 /// quadratic in a projection and go into its constant matrix; every other force is evaluated
-/// explicitly, once per step.
+/// explicitly, once per step, but the penalty force's contacts with obstacles (`contact`).
 struct MassSpringForces {
   std::vector<SpringTerm> springs;  ///< in force order; they must not change during a run
   /// Anchors may change between steps (a dragged particle); the solver asks them every step.
   std::vector<const DragSpringForce*> anchors;
   std::vector<const Force*> others;  ///< in force order
+  /// The model's penalty force (core/collisions/penalty_force.h), also among `others`, or
+  /// null: the solver takes its obstacle pairs implicitly and only the rest explicitly.
+  const Force* contact = nullptr;
 };
 
 /// Sorts `forces` into springs, anchors and the rest.
