@@ -60,6 +60,15 @@ class SceneWriter:
     def path(self, i, duration, color):
         self.add(f'<particlepath i="{i}" duration="{fmt(duration)}" r="{fmt(color[0])}" g="{fmt(color[1])}" b="{fmt(color[2])}"/>')
 
+    def checks(self, n, squares, dark, light):
+        """Colours the vertices of a generated n x n cloth (vertex (r, c) is r n + c) in a
+        checkerboard of about `squares` x `squares` checks."""
+        for r in range(n):
+            for c in range(n):
+                color = dark if (r * squares // n + c * squares // n) % 2 else light
+                self.add(f'<particlecolor i="{r * n + c}" r="{fmt(color[0])}" g="{fmt(color[1])}" '
+                         f'b="{fmt(color[2])}"/>')
+
     def save(self, name, header):
         root = '<scene dim="3">' if self.dim == 3 else "<scene>"
         text = "\n".join(["<!-- Written by Creative/generate_scenes.py; see Creative/README.md -->", root]
@@ -220,13 +229,7 @@ def tablecloth():
     n, squares = 49, 8
     s.add(f'<generate type="cloth" nx="{n}" ny="{n}" plane="xz" pin="corners" k="800" b="0.002" '
           'mass="total" total="0.6"/>')
-    red, cream = (0.8, 0.13, 0.12), (0.97, 0.94, 0.86)
-    for r in range(n):
-        for c in range(n):
-            check = (r * squares // n + c * squares // n) % 2
-            color = red if check else cream
-            s.add(f'<particlecolor i="{r * n + c}" r="{fmt(color[0])}" g="{fmt(color[1])}" '
-                  f'b="{fmt(color[2])}"/>')
+    s.checks(n, squares, (0.8, 0.13, 0.12), (0.97, 0.94, 0.86))
     s.add('<simplegravity fx="0" fy="-9.8" fz="0"/>')
     s.add('<constantforce fx="0.0002" fy="0" fz="0.0005"/>')
     s.save("tablecloth.xml", [
@@ -239,9 +242,86 @@ def tablecloth():
     ])
 
 
+def billiards():
+    """A break: the cue ball hits a rack of fifteen balls on a table bounded by four cushions
+    (half-planes drawn in their colour). Simple impulses with a coefficient of restitution of
+    0.95 answer every contact, Gauss-Seidel in the course's pair order; light drag stands in for
+    the cloth's rolling resistance (symplectic Euler)."""
+    s = SceneWriter()
+    r, half_w, half_h = 0.09, 2.0, 1.0
+    # Pockets: fixed, so they act as round bumpers too; drawn first, under the balls.
+    for x in (-half_w, 0.0, half_w):
+        for y in (-half_h, half_h):
+            inset = 0.0 if x == 0.0 else 0.02
+            s.particle((x - math.copysign(inset, x) if x else 0.0, y - math.copysign(inset, y)),
+                       (0, 0), 1, fixed=True, radius=0.13, color=(0.04, 0.04, 0.04))
+    solids = [(0.98, 0.8, 0.1), (0.1, 0.25, 0.8), (0.85, 0.1, 0.1), (0.45, 0.15, 0.6),
+              (0.98, 0.5, 0.05), (0.1, 0.62, 0.32), (0.5, 0.12, 0.08)]
+    colors = solids + [(0.03, 0.03, 0.03)] + [tuple(0.55 * c + 0.45 for c in col) for col in solids]
+    order = [0, 8, 1, 9, 7, 2, 10, 3, 11, 4, 12, 5, 13, 6, 14]  # the 8 ball in the middle
+    gap = 0.002  # rack balls just apart, so that no pair starts in contact
+    row_step = (2 * r + gap) * math.sqrt(3) / 2
+    apex = 0.9
+    k = 0
+    for row in range(5):
+        for n in range(row + 1):
+            pos = (apex + row * row_step, (n - row / 2) * (2 * r + gap))
+            s.particle(pos, (0, 0), 0.16, radius=r, color=colors[order[k]])
+            k += 1
+    cue = s.particle((-1.1, 0.012), (10.0, 0), 0.17, radius=r, color=(0.97, 0.96, 0.9))
+    s.path(cue, 1.0, (0.97, 0.96, 0.9))
+    cushion = (0.3, 0.16, 0.07)
+    for px, py, nx, ny in ((-half_w, 0, 1, 0), (half_w, 0, -1, 0), (0, -half_h, 0, 1),
+                           (0, half_h, 0, -1)):
+        s.add(f'<halfplane px="{fmt(px)}" py="{fmt(py)}" nx="{fmt(nx)}" ny="{fmt(ny)}"/>')
+    for h in range(4):
+        s.add(f'<halfplanecolor i="{h}" r="{fmt(cushion[0])}" g="{fmt(cushion[1])}" b="{fmt(cushion[2])}"/>')
+    s.add('<collision type="simple" COR="0.95"/>')
+    s.add('<dragdamping b="0.045"/>')
+    s.save("billiards.xml", [
+        '<description text="Billiards: a break on a table with four cushions (simple impulses, COR 0.95, symplectic Euler)"/>',
+        '<duration time="8.0"/>',
+        '<integrator type="symplectic-euler" dt="0.001666666666666667"/>',
+        '<maxsimfreq max="600"/>',
+        '<backgroundcolor r="0.05" g="0.42" b="0.2"/>',
+        '<viewport cx="0" cy="0" size="1.2"/>',
+    ])
+
+
+def cloth_on_sphere():
+    """A checkered cloth of 81 x 81 vertices dropped flat over a sphere onto a floor: penalty
+    contact with the sphere and the half-space, which the local/global solver takes into its
+    global matrix (3D). Seen through a <camera3d>."""
+    s = SceneWriter(dim=3)
+    n, squares = 81, 9
+    s.add(f'<generate type="cloth" nx="{n}" ny="{n}" width="1.6" height="1.6" plane="xz" '
+          'pin="none" k="200" b="0.01" mass="total" total="0.4" tx="0" ty="0.5" tz="-0.8"/>')
+    s.checks(n, squares, (0.12, 0.3, 0.62), (0.95, 0.93, 0.86))
+    s.add('<sphere px="0" py="0" pz="0" radius="0.35"/>')
+    s.add('<spherecolor i="0" r="0.9" g="0.55" b="0.15"/>')
+    s.add('<halfplane px="0" py="-0.4" pz="0" nx="0" ny="1" nz="0"/>')
+    s.add('<halfplanecolor i="0" r="0.72" g="0.7" b="0.66"/>')
+    # The thickness must stay below the vertex spacing (0.02) minus two vertex radii (2 x 0.003):
+    # a larger one makes neighbouring vertices of the cloth a contact, a penalty force that
+    # local/global takes explicitly, and the cloth blows up at once (0.015 does). A smaller one
+    # lets more of the sphere show through the cloth in pictures (see README.md).
+    s.add('<collision type="penalty" k="1000" thickness="0.01"/>')
+    s.add('<simplegravity fx="0" fy="-9.8" fz="0"/>')
+    s.save("cloth_on_sphere.xml", [
+        '<description text="An 81 x 81 cloth dropped over a sphere onto a floor (penalty contact, local/global, 3D)"/>',
+        '<duration time="4.0"/>',
+        '<integrator type="local-global" dt="0.01666666666666667" iterations="10"/>',
+        '<maxsimfreq max="60"/>',
+        '<backgroundcolor r="0.93" g="0.95" b="0.97"/>',
+        '<camera3d yaw="30" pitch="25" tx="0" ty="-0.1" tz="0" distance="3"/>',
+    ])
+
+
 if __name__ == "__main__":
     vortex_spiral()
     fountain()
     pendulum_wave()
     ropes()
     tablecloth()
+    billiards()
+    cloth_on_sphere()

@@ -214,7 +214,8 @@ TEST_F(CommandLine, IntegratorOptionsAreValidatedAgainstTheScenesMethod) {
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err,
             "FOSSSim: error: --integrator-option: the scene's integrator implicit-euler has no "
-            "option 'iterations' (its options: newton-tolerance, newton-max-iterations)\n");
+            "option 'iterations' (its options: newton-tolerance, newton-max-iterations, "
+            "solver)\n");
   r = fosssim({"-s", "spring.xml", "-d", "0", "--integrator-option", "newton-max-iterations=0"});
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err,

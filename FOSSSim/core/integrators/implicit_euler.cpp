@@ -3,6 +3,7 @@
 #include <array>
 #include <string_view>
 
+#include "core/integrators/solver_option.h"
 #include "core/step_error.h"
 #include "core/text.h"
 
@@ -10,7 +11,7 @@ namespace fosssim {
 
 void ImplicitEuler::prepare() {
   matrix_.emplace(forces(), FixedParticleRule::kIdentityRows);
-  solver_.emplace(forces().has_symmetric_jacobians());
+  solver_.emplace(forces().has_symmetric_jacobians(), settings_.solver);
 }
 
 ImplicitEuler::NewtonResult ImplicitEuler::solve(const BackwardEulerStep& problem, bool line_search,
@@ -92,6 +93,7 @@ constexpr std::array kOptions = {
                        "1e-9 is the course's"),
     OptionSpec::integer("newton-max-iterations", kDefaults.max_iterations, 1, 1000000,
                         "give up on a step after this many Newton iterations"),
+    kSolverOption,
 };
 }  // namespace
 
@@ -105,8 +107,9 @@ constinit const IntegratorMethod kImplicitEulerMethod{
                    .implicit = true,
                    .energy = EnergyTrend::kDecays},
     .create = [](const OptionValues& options, int) -> std::unique_ptr<Integrator> {
-      return std::make_unique<ImplicitEuler>(NewtonSettings{
-          options.number("newton-tolerance"), options.integer("newton-max-iterations")});
+      return std::make_unique<ImplicitEuler>(
+          NewtonSettings{options.number("newton-tolerance"),
+                         options.integer("newton-max-iterations"), solver_choice(options)});
     },
 };
 

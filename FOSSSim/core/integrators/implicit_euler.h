@@ -16,6 +16,7 @@ namespace fosssim {
 struct NewtonSettings {
   double tolerance = 1e-9;   ///< stop when the L2 norm of a correction is below this (course)
   int max_iterations = 200;  ///< give up and report non-convergence after this many
+  SolverChoice solver = SolverChoice::kAuto;  ///< how the Newton systems are solved
 };
 
 /// Backward Euler solved by Newton's method on the velocity change, in the course's update
@@ -42,6 +43,8 @@ class ImplicitEuler final : public Integrator {
   /// Number of steps so far that plain Newton could not solve and the line search did.
   std::int64_t line_search_steps() const { return line_search_steps_; }
   std::vector<std::string> notes() const override;
+  /// The linear solver and what it did so far.
+  const StepSolver& solver() const { return *solver_; }
 
  protected:
   void prepare() override;
@@ -64,7 +67,7 @@ class ImplicitEuler final : public Integrator {
 };
 
 /// Registry entry: "implicit-euler", also "implicit". Options: newton-tolerance,
-/// newton-max-iterations.
+/// newton-max-iterations, solver.
 extern const IntegratorMethod kImplicitEulerMethod;
 
 }  // namespace fosssim

@@ -8,15 +8,19 @@
 #include "core/integrators/linearized_implicit_euler.h"
 #include "core/integrators/linearly_implicit_euler.h"
 #include "core/integrators/local_global.h"
+#include "core/integrators/newton.h"
+#include "core/integrators/quasi_newton.h"
 #include "core/integrators/symplectic_euler.h"
 
 namespace fosssim {
 
 namespace {
-/// The course's four methods first, in the order its milestones introduce them.
+/// The course's four methods first, in the order its milestones introduce them; then the
+/// methods for meshes.
 const std::array kMethods = {
-    &kExplicitEulerMethod, &kSymplecticEulerMethod, &kLinearizedImplicitEulerMethod,
-    &kImplicitEulerMethod, &kLocalGlobalMethod,     &kLinearlyImplicitEulerMethod,
+    &kExplicitEulerMethod,         &kSymplecticEulerMethod, &kLinearizedImplicitEulerMethod,
+    &kImplicitEulerMethod,         &kLocalGlobalMethod,     &kAcceleratedLocalGlobalMethod,
+    &kLinearlyImplicitEulerMethod, &kNewtonMethod,          &kQuasiNewtonMethod,
 };
 }  // namespace
 

@@ -4,13 +4,14 @@
 #include <string_view>
 
 #include "core/force_evaluation.h"
+#include "core/integrators/solver_option.h"
 #include "core/step_error.h"
 
 namespace fosssim {
 
 void LinearizedImplicitEuler::prepare() {
   matrix_.emplace(forces(), FixedParticleRule::kIdentityRows);
-  solver_.emplace(forces().has_symmetric_jacobians());
+  solver_.emplace(forces().has_symmetric_jacobians(), choice_);
 }
 
 void LinearizedImplicitEuler::advance(State& state) {
@@ -28,18 +29,20 @@ void LinearizedImplicitEuler::advance(State& state) {
 
 namespace {
 constexpr std::array<std::string_view, 1> kAliases = {"linearized-implicit"};
+constexpr std::array kOptions = {kSolverOption};
 }  // namespace
 
 constinit const IntegratorMethod kLinearizedImplicitEulerMethod{
     .name = "linearized-implicit-euler",
     .aliases = kAliases,
     .summary = "one Newton step of implicit Euler from the predicted position (Baraff-Witkin)",
+    .options = kOptions,
     .properties = {.order = 1,
                    .course_reference = true,
                    .implicit = true,
                    .energy = EnergyTrend::kDecays},
-    .create = [](const OptionValues&, int) -> std::unique_ptr<Integrator> {
-      return std::make_unique<LinearizedImplicitEuler>();
+    .create = [](const OptionValues& options, int) -> std::unique_ptr<Integrator> {
+      return std::make_unique<LinearizedImplicitEuler>(solver_choice(options));
     },
 };
 

@@ -14,16 +14,23 @@ namespace fosssim {
 ///   with the course's identity rows for fixed particles;  vⁿ⁺¹ = vⁿ + δv;  qⁿ⁺¹ = qⁿ + h vⁿ⁺¹.
 /// Baraff and Witkin, "Large steps in cloth simulation", SIGGRAPH 1998.
 class LinearizedImplicitEuler final : public Integrator {
+ public:
+  explicit LinearizedImplicitEuler(SolverChoice solver = SolverChoice::kAuto) : choice_(solver) {}
+
+  /// The linear solver and what it did so far.
+  const StepSolver& solver() const { return *solver_; }
+
  protected:
   void prepare() override;
   void advance(State& state) override;
 
  private:
+  SolverChoice choice_;
   std::optional<StepMatrix> matrix_;
   std::optional<StepSolver> solver_;
 };
 
-/// Registry entry: "linearized-implicit-euler", also "linearized-implicit".
+/// Registry entry: "linearized-implicit-euler", also "linearized-implicit". Option: solver.
 extern const IntegratorMethod kLinearizedImplicitEulerMethod;
 
 }  // namespace fosssim

@@ -4,13 +4,14 @@
 #include <string_view>
 
 #include "core/force_evaluation.h"
+#include "core/integrators/solver_option.h"
 #include "core/step_error.h"
 
 namespace fosssim {
 
 void LinearlyImplicitEuler::prepare() {
   matrix_.emplace(forces(), FixedParticleRule::kElimination, project_hessian_);
-  solver_.emplace(forces().has_symmetric_jacobians());
+  solver_.emplace(forces().has_symmetric_jacobians(), choice_);
 }
 
 void LinearlyImplicitEuler::advance(State& state) {
@@ -29,16 +30,19 @@ constexpr std::array kOptions = {
     OptionSpec::choice("hessian", kHessians,
                        "\"projected\" drops compressed springs' negative transverse stiffness, "
                        "so the step matrix stays positive definite"),
+    kSolverOption,
 };
 }  // namespace
 
 constinit const IntegratorMethod kLinearlyImplicitEulerMethod{
     .name = "linearly-implicit-euler",
+    .aliases = {},
     .summary = "one linear solve at the current state, fixed particles eliminated (CSC417 a2)",
     .options = kOptions,
     .properties = {.order = 1, .implicit = true, .energy = EnergyTrend::kDecays},
     .create = [](const OptionValues& options, int) -> std::unique_ptr<Integrator> {
-      return std::make_unique<LinearlyImplicitEuler>(options.choice("hessian") == "projected");
+      return std::make_unique<LinearlyImplicitEuler>(options.choice("hessian") == "projected",
+                                                     solver_choice(options));
     },
 };
 

@@ -28,10 +28,13 @@ namespace fosssim {
 class LinearlyImplicitEuler final : public Integrator {
  public:
   /// project_hessian: ask forces for semi-definite hessX blocks (ForceInput::definite_hessian).
-  explicit LinearlyImplicitEuler(bool project_hessian) : project_hessian_(project_hessian) {}
+  explicit LinearlyImplicitEuler(bool project_hessian, SolverChoice solver = SolverChoice::kAuto)
+      : project_hessian_(project_hessian), choice_(solver) {}
 
   /// The factorization used by the last step.
   Factorization last_factorization() const { return solver_->last_factorization(); }
+  /// The linear solver and what it did so far.
+  const StepSolver& solver() const { return *solver_; }
 
  protected:
   void prepare() override;
@@ -39,11 +42,12 @@ class LinearlyImplicitEuler final : public Integrator {
 
  private:
   bool project_hessian_;
+  SolverChoice choice_;
   std::optional<StepMatrix> matrix_;
   std::optional<StepSolver> solver_;
 };
 
-/// Registry entry: "linearly-implicit-euler". Option: hessian (exact, projected).
+/// Registry entry: "linearly-implicit-euler". Options: hessian (exact, projected), solver.
 extern const IntegratorMethod kLinearlyImplicitEulerMethod;
 
 }  // namespace fosssim

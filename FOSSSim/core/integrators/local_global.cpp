@@ -59,7 +59,22 @@ void LocalGlobal<D>::advance(State& state) {
     for (int p : free_.particles()) p_.row(p) = q.row(p);
   }
   assemble_constant_rhs(state);
+  if (settings_.acceleration == Acceleration::kAnderson) start_q_ = state.q;
   last_iterations_ = 0;
+  iterate();
+  for (int p : free_.particles()) {
+    v.row(p) = (p_.row(p) - q.row(p)) / h;
+    q.row(p) = p_.row(p);
+  }
+  for (int p = 0; p < model().num_particles(); ++p) {
+    if (free_.of_particle(p) < 0) q.row(p) = p_.row(p);  // eliminated: moves with its own velocity
+  }
+}
+
+template <int D>
+void LocalGlobal<D>::iterate() {
+  if (settings_.acceleration == Acceleration::kAnderson) return iterate_anderson();
+  if (settings_.acceleration == Acceleration::kChebyshev) return iterate_chebyshev();
   for (int iteration = 1; iteration <= settings_.iterations; ++iteration) {
     rhs_ = constant_rhs_;
     add_spring_directions(rhs_);
@@ -67,13 +82,6 @@ void LocalGlobal<D>::advance(State& state) {
     last_change_ = global_solve(rhs_);
     last_iterations_ = iteration;
     if (settings_.tolerance > 0.0 && last_change_ <= settings_.tolerance) break;
-  }
-  for (int p : free_.particles()) {
-    v.row(p) = (p_.row(p) - q.row(p)) / h;
-    q.row(p) = p_.row(p);
-  }
-  for (int p = 0; p < model().num_particles(); ++p) {
-    if (free_.of_particle(p) < 0) q.row(p) = p_.row(p);  // eliminated: moves with its own velocity
   }
 }
 
@@ -255,22 +263,47 @@ constexpr std::array<std::string_view, 2> kStarts = {"inertial", "current"};
 constexpr std::array<std::string_view, 2> kPins = {"elimination", "penalty"};
 constexpr std::array<std::string_view, 3> kSolvers = {"auto", "dense", "sparse"};
 constexpr LocalGlobalSettings kDefaults;
-constexpr std::array kOptions = {
+constexpr IntegratorProperties kProperties = {
+    .order = 1, .implicit = true, .velocity_from_positions = true, .energy = EnergyTrend::kDecays};
+constexpr std::array<std::string_view, 2> kAccelerations = {"anderson", "chebyshev"};
+constexpr std::array<std::string_view, 1> kAcceleratedAliases = {"anderson-local-global"};
+constexpr OptionSpec kIterationsOption =
     OptionSpec::integer("iterations", kDefaults.iterations, 1, 1000000,
-                        "local/global iterations per step (at most, with a tolerance)"),
+                        "local/global iterations per step (at most, with a tolerance)");
+constexpr OptionSpec kToleranceOption =
     OptionSpec::number("tolerance", kDefaults.tolerance, 0.0, /*excluded=*/false,
-                       "stop iterating once no coordinate moves more than this (m); 0: never"),
+                       "stop iterating once no coordinate moves more than this (m); 0: never");
+constexpr OptionSpec kStartOption =
     OptionSpec::choice("start", kStarts,
                        "where each step's iterations begin: at pⁿ + h vⁿ (inertial) or at the "
-                       "current positions pⁿ (current, as in the fast mass-springs assignment)"),
+                       "current positions pⁿ (current, as in the fast mass-springs assignment)");
+constexpr OptionSpec kPinsOption =
     OptionSpec::choice("pins", kPins,
                        "fixed particles: removed from the system (exact), or held by penalty "
-                       "springs as in Liu et al. 2013"),
+                       "springs as in Liu et al. 2013");
+constexpr OptionSpec kPenaltyOption =
     OptionSpec::number("penalty", kDefaults.penalty_weight, 0.0, /*excluded=*/true,
-                       "stiffness w of penalty pins (N/m)"),
+                       "stiffness w of penalty pins (N/m)");
+constexpr OptionSpec kSolverChoiceOption =
     OptionSpec::choice("solver", kSolvers,
                        "factorization of the constant matrix: dense up to 64 free particles "
-                       "(auto), dense, or sparse"),
+                       "(auto), dense, or sparse");
+constexpr std::array kOptions = {kIterationsOption, kToleranceOption, kStartOption,
+                                 kPinsOption,       kPenaltyOption,   kSolverChoiceOption};
+constexpr std::array kAcceleratedOptions = {
+    kIterationsOption,
+    kToleranceOption,
+    kStartOption,
+    kPinsOption,
+    kPenaltyOption,
+    kSolverChoiceOption,
+    OptionSpec::choice("acceleration", kAccelerations,
+                       "anderson (Peng et al. 2018, energy safeguarded, the default) or "
+                       "chebyshev (Wang 2015, needs rho)"),
+    OptionSpec::integer("window", kDefaults.window, 1, 100,
+                        "anderson: how many recent iterates are combined"),
+    OptionSpec::number("rho", kDefaults.rho, 0.0, /*excluded=*/true,
+                       "chebyshev: the spectral radius of the plain iteration, below 1"),
 };
 
 std::unique_ptr<Integrator> make_local_global(const OptionValues& options, int dim) {
@@ -293,6 +326,12 @@ LocalGlobalSettings local_global_settings(const OptionValues& options) {
   settings.solver = solver == "dense"    ? LinearSolverChoice::kDense
                     : solver == "sparse" ? LinearSolverChoice::kSparse
                                          : LinearSolverChoice::kAuto;
+  if (options.has("acceleration")) {
+    const std::string_view a = options.choice("acceleration");
+    settings.acceleration = a == "chebyshev" ? Acceleration::kChebyshev : Acceleration::kAnderson;
+    settings.window = options.integer("window");
+    settings.rho = options.number("rho");
+  }
   return settings;
 }
 
@@ -301,10 +340,18 @@ constinit const IntegratorMethod kLocalGlobalMethod{
     .aliases = kAliases,
     .summary = "implicit Euler for springs by local/global iterations (Liu et al. 2013)",
     .options = kOptions,
-    .properties = {.order = 1,
-                   .implicit = true,
-                   .velocity_from_positions = true,
-                   .energy = EnergyTrend::kDecays},
+    .properties = kProperties,
+    .create = &make_local_global,
+};
+
+constinit const IntegratorMethod kAcceleratedLocalGlobalMethod{
+    .name = "accelerated-local-global",
+    .aliases = kAcceleratedAliases,
+    .summary =
+        "local/global iterations with Anderson acceleration (Peng et al. 2018): the same "
+        "step, reached in fewer iterations",
+    .options = kAcceleratedOptions,
+    .properties = kProperties,
     .create = &make_local_global,
 };
 

@@ -7,6 +7,7 @@
 #include "core/collisions/candidate_pairs.h"
 #include "core/collisions/penalty_force.h"
 #include "core/integrators/integrator.h"
+#include "core/solvers/anderson_acceleration.h"
 #include "core/solvers/spd_solver.h"
 #include "core/spring_terms.h"
 #include "core/systems/free_dofs.h"
@@ -27,6 +28,13 @@ enum class LinearSolverChoice {
   kSparse,  ///< sparse Cholesky (Eigen::SimplicialLLT), factored once and reused
 };
 
+/// How the local/global iterations are accelerated.
+enum class Acceleration {
+  kNone,       ///< plain local/global
+  kAnderson,   ///< Anderson acceleration with an energy safeguard (Peng et al. 2018)
+  kChebyshev,  ///< Chebyshev semi-iterative acceleration (Wang 2015)
+};
+
 /// Where each step's local/global iterations begin.
 enum class IterationStart {
   kInertial,  ///< at y = pⁿ + h vⁿ, where the old velocity carries the particles
@@ -43,6 +51,9 @@ struct LocalGlobalSettings {
   PinMethod pins = PinMethod::kElimination;
   double penalty_weight = 1e10;  ///< w of the penalty pins, N/m
   LinearSolverChoice solver = LinearSolverChoice::kAuto;
+  Acceleration acceleration = Acceleration::kNone;
+  int window = 5;     ///< Anderson: differences kept
+  double rho = 0.99;  ///< Chebyshev: the estimated spectral radius of the plain iteration
 };
 
 /// Implicit Euler for mass-spring systems by the local/global solver of Liu, Bargteil, O'Brien
@@ -127,6 +138,18 @@ class LocalGlobal final : public Integrator {
   /// The local step of the obstacle contacts: k times each one's target.
   void add_contact_targets(Points<D>& rhs) const;
   double global_solve(Points<D>& rhs);
+  /// The iterations of a step from p_ = y, plain or accelerated; p_ ends at the last iterate.
+  void iterate();
+  void iterate_anderson();
+  void iterate_chebyshev();
+  /// The free particles' rows of p_ as one vector, and back.
+  Vector free_positions() const;
+  void set_free_positions(const Vector& u);
+  /// The energy local/global iterations decrease, at p_: ½|p - y|²_M / h² + the springs'
+  /// ½ k (|δ| - l)² and Laplacian damping ½ (b/h) |δ - δⁿ|², the anchors' ½ k |p - a|², and the
+  /// explicit forces' -f·p (over the free particles; up to a constant). *round_off: the size
+  /// of its rounding error.
+  double energy(double* round_off) const;
 
   LocalGlobalSettings settings_;
   MassSpringForces split_;
@@ -147,6 +170,8 @@ class LocalGlobal final : public Integrator {
   };
   std::vector<ObstacleContact> contacts_;
   SpdSolver solver_;
+  Vector start_q_;  // qⁿ, for the energy of accelerated iterations
+  AndersonAcceleration anderson_;
   Points<D> y_;             // pⁿ + h vⁿ, every particle
   Points<D> p_;             // the current iterate, every particle
   Points<D> d_;             // spring directions times rest lengths, kept between iterations
@@ -161,6 +186,11 @@ class LocalGlobal final : public Integrator {
 /// Registry entry: "local-global", also "fast-mass-springs". Options: iterations, tolerance,
 /// start, pins, penalty, solver.
 extern const IntegratorMethod kLocalGlobalMethod;
+
+/// Registry entry: "accelerated-local-global", also "anderson-local-global": LocalGlobal with
+/// Acceleration::kAnderson (or kChebyshev). Options: those of local-global, and acceleration,
+/// window, rho.
+extern const IntegratorMethod kAcceleratedLocalGlobalMethod;
 
 /// The settings the options of kLocalGlobalMethod hold.
 LocalGlobalSettings local_global_settings(const OptionValues& options);

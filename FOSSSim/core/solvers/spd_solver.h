@@ -2,22 +2,21 @@
 // Factors a symmetric positive definite matrix once, then solves for many right-hand sides.
 
 #include <Eigen/Cholesky>
-#include <Eigen/SparseCholesky>
-#include <vector>
+#include <optional>
 
+#include "core/solvers/cholesky_factor.h"
 #include "core/types.h"
 
 namespace fosssim {
 
 /// Cholesky factorization A = L Lᵀ (sparse: P A Pᵀ = L Lᵀ) of a constant SPD matrix, for the
-/// local/global solver (libigl's precompute/solve split): factor() once, then solve_in_place()
-/// every iteration.
+/// local/global solver and its accelerations (libigl's precompute/solve split): factor() once,
+/// then solve_in_place() every iteration.
 ///
-/// Dense (Eigen::LLT) suits tiny systems. Sparse uses Eigen::SimplicialLLT with its
-/// fill-reducing AMD ordering; its symbolic analysis is kept, so refactor() with the same
-/// sparsity pattern (a changed stiffness) only redoes the numeric factorization. The
-/// triangular solves are our own: they sweep L once for all C right-hand-side columns together
-/// (the x, y and z of every particle), where Eigen's solve sweeps it once per column.
+/// Dense (Eigen::LLT) suits tiny systems. Sparse is CHOLMOD's (CholeskyFactor): the ordering
+/// and symbolic analysis are kept, so refactor() with the same sparsity pattern (a changed
+/// stiffness) only redoes the numeric factorization, and every solve takes all C columns (the
+/// x, y and z of every particle) through the factor together.
 class SpdSolver {
  public:
   enum class Method { kDense, kSparse };
@@ -38,15 +37,12 @@ class SpdSolver {
   long factor_nonzeros() const;
 
  private:
-  template <int C>
-  void solve_sparse(Points<C>& X) const;
-
   Method method_ = Method::kSparse;
   int size_ = 0;
   Eigen::LLT<Eigen::MatrixXd> dense_;
-  Eigen::SimplicialLLT<SparseMatrix> sparse_;
-  bool own_sweeps_ = false;       // L's layout is the one solve_sparse expects (else Eigen's solve)
-  mutable Eigen::VectorXd work_;  // the permuted right-hand sides, C per row
+  std::optional<CholeskyFactor> sparse_;
+  SparseMatrix::Index pattern_nonzeros_ = 0;
+  mutable Eigen::MatrixXd columns_;  // the right-hand sides, column-major, for CHOLMOD
 };
 
 }  // namespace fosssim

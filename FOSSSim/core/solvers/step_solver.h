@@ -1,49 +1,132 @@
 #pragma once
-// Solves the implicit step system A x = b with a sparse factorization that is correct for A.
+// Solves the implicit step systems A x = b: the one interface to the sparse solvers.
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
+#include "core/solvers/cholesky_factor.h"
+#include "core/solvers/gmres.h"
+#include "core/solvers/lu_factor.h"
 #include "core/types.h"
 
 namespace fosssim {
 
-/// Which factorization solved the last system.
-enum class Factorization { kLDLT, kLU };
+/// Which library solves the step systems (the option "solver" of the implicit integrators).
+enum class SolverChoice {
+  kAuto,     ///< Eigen below StepSolver::kCholmodFromSize unknowns, SuiteSparse from there on
+  kEigen,    ///< Eigen's sparse LDLᵀ and LU, factored at every solve
+  kCholmod,  ///< SuiteSparse: CHOLMOD's Cholesky or UMFPACK's LU, reused through GMRES
+};
 
-/// Factorizes and solves the step matrix A = M + h² hessX + h hessV.
+/// What solved the last system.
+enum class Factorization {
+  kLDLT,      ///< Eigen's LDLᵀ of A
+  kLU,        ///< Eigen's LU of A
+  kCholesky,  ///< GMRES on A with a CHOLMOD Cholesky factor of A (or of a nearby matrix)
+  kUmfpack,   ///< GMRES on A with an UMFPACK LU factor of A (or of a nearby matrix)
+};
+
+/// Counts of the work done so far, for tests and benchmarks.
+struct SolveStatistics {
+  std::int64_t solves = 0;
+  std::int64_t factorizations = 0;     ///< numeric factorizations (any library), tried or done
+  std::int64_t analyses = 0;           ///< symbolic analyses (new patterns)
+  std::int64_t krylov_iterations = 0;  ///< GMRES iterations over all solves
+  std::int64_t lu_factorizations = 0;  ///< of them, UMFPACK's (A was not positive definite)
+  std::int64_t direct_fallbacks = 0;   ///< GMRES did not converge: Eigen's LU or LDLᵀ solved
+};
+
+/// Solves the systems A x = b of an implicit integrator: one step matrix
+/// A = M + h² hessX + h hessV after another, all of one sparsity pattern, with values that
+/// change a little between Newton iterations and steps. Every answer it returns has a
+/// residual at round-off level, ‖A x - b‖ ≤ 1e-12 (‖b‖ + ‖A‖_F ‖x‖), whichever path made it.
 ///
-/// A is symmetric when every force's Jacobians are (springs without damping, gravity, drag);
-/// then a sparse LDLᵀ (no pivoting) is tried first and its answer accepted only when the
-/// residual ‖Ax - b‖ is at round-off level, because a compressed spring or Newtonian gravity can
-/// make A indefinite. Otherwise, and as the fallback, sparse LU with partial pivoting is used,
-/// which is correct for the non-symmetric A of damped springs and vortices.
-/// The symbolic analysis is reused while A's sparsity pattern stays the same.
+/// Two paths, chosen by SolverChoice and the size of A:
+/// - Eigen (small systems, and the course's small scenes bit for bit): a symmetric A is
+///   factored by Eigen's SimplicialLDLT, accepted only at round-off residual (a compressed
+///   spring or Newtonian gravity can make A indefinite, where LDLᵀ without pivoting may lose
+///   accuracy); otherwise, and as the fallback, sparse LU with partial pivoting (correct for
+///   the non-symmetric A of damped springs and vortices). The symbolic analysis is reused
+///   while the pattern stays the same; the numbers are factored at every solve.
+/// - SuiteSparse (large systems): GMRES on A itself, preconditioned by a factor of an earlier
+///   step matrix or of this one: CHOLMOD's supernodal Cholesky factor when A is symmetric
+///   positive definite, and UMFPACK's LU factor otherwise (a compressed spring makes A
+///   indefinite, damping and vortices make it non-symmetric). After Cholesky fails, the next
+///   few factorizations go straight to LU. The factor is kept across solves, Newton iterations
+///   and steps while GMRES converges fast with it: the iterations beyond those a fresh factor
+///   needs are charged at their cost, and A is factored again once they have cost as much as
+///   a factorization (a rent-or-buy rule: a run never pays more than about twice what the best
+///   choice of refactorizations would). When a kept factor fails (the matrices change too much
+///   between solves, as for a cloth falling at h = 1/30 s), the next 1, 2, 4, ... 16 solves
+///   factor at once without trying it. The cost model counts operations, never clocks, so the
+///   same input gives the same bits. Each library's symbolic analysis is done once per pattern.
 class StepSolver {
  public:
+  /// Systems of at least this many unknowns go to SuiteSparse under SolverChoice::kAuto
+  /// (measured with bench_implicit: below it Eigen's simplicial factorizations are as fast,
+  /// and the course's scenes keep their exact trajectories).
+  static constexpr int kCholmodFromSize = 1000;
+
   /// symmetric: whether A is known to be symmetric (SceneModel::has_symmetric_jacobians).
-  explicit StepSolver(bool symmetric) : symmetric_(symmetric) {}
+  explicit StepSolver(bool symmetric, SolverChoice choice = SolverChoice::kAuto)
+      : symmetric_(symmetric), choice_(choice) {}
 
   /// Returns x with A x = b, or nullopt when A is numerically singular.
   std::optional<Vector> solve(const SparseMatrix& A, const Vector& b);
 
-  /// The factorization used by the last successful solve.
+  /// What solved the last system.
   Factorization last_factorization() const { return last_; }
+  const SolveStatistics& statistics() const { return statistics_; }
 
  private:
   bool same_pattern(const SparseMatrix& A) const;
+  void take_pattern(const SparseMatrix& A);
+  std::optional<Vector> solve_eigen(const SparseMatrix& A, const Vector& b);
   std::optional<Vector> solve_ldlt(const SparseMatrix& A, const Vector& b);
   std::optional<Vector> solve_lu(const SparseMatrix& A, const Vector& b);
+  std::optional<Vector> solve_suitesparse(const SparseMatrix& A, const Vector& b);
+  /// Factors A (or its symmetric part) for GMRES to precondition with; false when singular.
+  bool refactor(const SparseMatrix& A);
+  bool factor_cholesky(const SparseMatrix& A);
+  bool factor_lu(const SparseMatrix& A);
+  /// z = M⁻¹ r with the current factor.
+  void precondition(const double* r, double* z) const;
+  /// symmetric_part_ = (A + Aᵀ)/2 over A's pattern.
+  void symmetrize(const SparseMatrix& A);
 
   bool symmetric_;
+  SolverChoice choice_;
   Factorization last_ = Factorization::kLU;
+  SolveStatistics statistics_;
   std::vector<SparseMatrix::StorageIndex> outer_, inner_;  // pattern of the analysed matrix
+
+  // The Eigen path.
   bool ldlt_analysed_ = false;
   bool lu_analysed_ = false;
   Eigen::SimplicialLDLT<SparseMatrix> ldlt_;
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
+
+  // The SuiteSparse path.
+  bool suitesparse_ = false;     // the pattern goes to SuiteSparse
+  std::vector<int> transposed_;  // slot of entry (j, i) for the entry (i, j) in slot k
+  SparseMatrix symmetric_part_;
+  std::optional<CholeskyFactor> cholesky_;
+  std::optional<LuFactor> umfpack_;
+  Factorization factor_ = Factorization::kCholesky;  // which one preconditions now
+  int skip_cholesky_ = 0;                            // factorizations left that go straight to LU
+  Gmres gmres_;
+  bool refactor_due_ = true;
+  double factor_cost_ = 0.0;     // of one factorization, in operations
+  double iteration_cost_ = 0.0;  // of one GMRES iteration, in operations
+  double charged_ = 0.0;      // cost of the iterations beyond a fresh factor's, since the last one
+  int fresh_iterations_ = 0;  // GMRES iterations of the first solve after a factorization
+  bool first_after_factor_ = false;
+  int backoff_ = 0;           // solves left that factor at once, after a kept factor failed
+  int backoff_length_ = 0;    // the next backoff: doubles while kept factors keep failing
+  double scale_ratio_ = 0.0;  // ‖A‖ ‖x‖ / ‖b‖ of the last answer
 };
 
 }  // namespace fosssim

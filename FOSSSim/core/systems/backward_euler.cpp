@@ -29,7 +29,7 @@ double BackwardEulerStep::incremental_potential(const Vector& dv) const {
 }
 
 Vector potential_line_search(const BackwardEulerStep& problem, const Vector& dv, const Vector& rhs,
-                             const Vector& direction) {
+                             const Vector& direction, double* potential) {
   // -rhs is the gradient of Φ.
   Vector step = direction;
   double slope = -rhs.dot(step);
@@ -37,15 +37,18 @@ Vector potential_line_search(const BackwardEulerStep& problem, const Vector& dv,
     step = rhs.cwiseQuotient(problem.forces.mass());
     slope = -rhs.dot(step);
   }
-  const double start = problem.incremental_potential(dv);
+  const double start = potential != nullptr && !std::isnan(*potential)
+                           ? *potential
+                           : problem.incremental_potential(dv);
   // Φ is a difference of large energies near convergence; allow for its round-off.
   const double noise = 1e-13 * (std::abs(start) + 1.0);
   double alpha = 1.0;
-  while (problem.incremental_potential(dv + alpha * step) >
-             start + kArmijo * alpha * slope + noise &&
-         alpha > kSmallestStep) {
+  double trial = problem.incremental_potential(dv + alpha * step);
+  while (trial > start + kArmijo * alpha * slope + noise && alpha > kSmallestStep) {
     alpha *= 0.5;
+    trial = problem.incremental_potential(dv + alpha * step);
   }
+  if (potential != nullptr) *potential = trial;
   return alpha * step;
 }
 

@@ -29,9 +29,11 @@ struct BackwardEulerStep {
 /// A step along `direction` from dv that decreases Φ enough (Armijo's rule with backtracking
 /// by halves), where rhs = r(dv). When `direction` does not descend (an indefinite A can make
 /// the Newton step climb), the mass-scaled steepest descent direction M⁻¹ r is used instead.
-/// Returns the step to add to dv.
+/// Returns the step to add to dv. `potential`, when given, holds Φ(dv) on entry (or NaN when
+/// it is not known) and Φ(dv + step) on return, which spares an iterative caller one
+/// evaluation of Φ per step.
 Vector potential_line_search(const BackwardEulerStep& problem, const Vector& dv, const Vector& rhs,
-                             const Vector& direction);
+                             const Vector& direction, double* potential = nullptr);
 
 /// A fraction of the Newton step `newton_step` from dv that decreases ½‖r‖² enough (Armijo; the
 /// Newton step always descends on it), for forces without a potential. rhs = r(dv) on entry

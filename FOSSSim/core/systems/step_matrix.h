@@ -3,6 +3,7 @@
 
 #include "core/force_set.h"
 #include "core/hessian_builder.h"
+#include "core/hessian_pattern.h"
 #include "core/systems/free_dofs.h"
 #include "core/types.h"
 
@@ -19,10 +20,13 @@ enum class FixedParticleRule {
   kElimination,
 };
 
-/// Assembles A = M + h² hessX(q, v) + h hessV(q, v) over the unknowns of a rule, keeping its
-/// triplet storage between steps so that stepping does not reallocate. The entries are summed
-/// in a fixed order (hessX, then hessV, force by force, then the diagonal), so the same input
-/// gives the same bits.
+/// Assembles A = M + h² hessX(q, v) + h hessV(q, v) over the unknowns of a rule. The first
+/// assembly records where every block the forces write lands (HessianPattern); later ones
+/// scatter the values straight into a matrix of that fixed pattern, with no triplets, no sort
+/// and no allocation, while the forces write the same blocks (a changed set of writes, such as a
+/// grabbed particle, is recorded anew). Entries are summed in a fixed order (hessX, then hessV,
+/// force by force, then the diagonal), the order Eigen's setFromTriplets would sum them in, so
+/// the same input gives the same bits as building the matrix from triplets.
 class StepMatrix {
  public:
   /// forces: what A is assembled from (they and their model must outlive this);
@@ -35,6 +39,15 @@ class StepMatrix {
   const SparseMatrix& assemble(const Vector& q, const Vector& v, double h,
                                const Vector* u = nullptr, Vector* rhs = nullptr);
   const SparseMatrix& matrix() const { return matrix_; }
+  /// A at (q, v) with every force's semi-definite hessX (ForceInput::definite_hessian), in a
+  /// matrix of its own with the pattern of assemble()'s: a positive definite matrix near A
+  /// when A is not, to precondition with (StepSolver::DefiniteMatrix).
+  const SparseMatrix& assemble_definite(const Vector& q, const Vector& v, double h);
+  /// What assemble() gives, bit for bit, computed the plain way: the forces' values as
+  /// triplets, filtered by the fixed-particle rule and summed by Eigen's setFromTriplets. The
+  /// reference for tests, and the old path of the benchmarks.
+  const SparseMatrix& assemble_from_triplets(const Vector& q, const Vector& v, double h,
+                                             const Vector* u = nullptr, Vector* rhs = nullptr);
 
   /// A full right-hand side over the unknowns: b with fixed DOFs zeroed (kIdentityRows) or P b.
   Vector restrict(const Vector& b) const;
@@ -44,15 +57,32 @@ class StepMatrix {
   FixedParticleRule rule() const { return rule_; }
   /// The number of unknowns: every DOF, or the free ones.
   int size() const;
+  /// Bytes the assembly keeps besides the matrices (the recorded pattern), for benchmarks.
+  std::size_t pattern_bytes() const { return pattern_.bytes(); }
 
  private:
+  HessianPattern make_pattern() const;
+  /// Records the writes of the forces at `in` and the pattern they make.
+  void record(const ForceInput& in);
+  /// Scatters A's values at `in` into `out` (of the recorded pattern); false when the forces
+  /// wrote other blocks than those recorded (`rhs` is then as it was).
+  bool scatter(const ForceInput& in, double h, const Vector* u, Vector* rhs, SparseMatrix& out);
+  /// Triplets, filtered and summed (the fallback for patterns HessianPattern cannot hold).
+  void build_from_triplets(const ForceInput& in, double h, const Vector* u, Vector* rhs,
+                           SparseMatrix& out);
+
   const ForceSet* forces_;
   FixedParticleRule rule_;
   bool definite_hessian_;
   FreeDofs free_;
   bool any_fixed_ = false;
-  HessianBuilder scratch_;
+  HessianPattern pattern_;
+  bool recorded_ = false;
+  bool pattern_usable_ = false;
+  HessianBuilder scratch_;  // triplets, for the fallback
+  Vector saved_rhs_;
   SparseMatrix matrix_;
+  SparseMatrix definite_;
 };
 
 }  // namespace fosssim
