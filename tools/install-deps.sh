@@ -1,12 +1,15 @@
 #!/bin/sh
-# Installs the Debian packages FOSSSim needs to build, test, render and benchmark.
+# Installs the Debian packages FOSSSim needs to build, test, fuzz, render and benchmark.
 # Idempotent: installs only what is missing, and touches the network only then.
 set -eu
 
+# clang, libclang-rt-14-dev (libFuzzer and clang's sanitizer runtimes) and llvm (the symbolizer
+# of sanitizer reports) build and run the fuzz targets of fuzz/.
 PACKAGES="cmake ninja-build g++ pkg-config
   libeigen3-dev libtinyxml2-dev libcli11-dev nlohmann-json3-dev libsuitesparse-dev libopenblas-dev
   libgtest-dev libbenchmark-dev python3
-  libcairo2-dev libssl-dev freeglut3-dev ffmpeg xvfb xauth"
+  libcairo2-dev libssl-dev freeglut3-dev ffmpeg xvfb xauth
+  clang libclang-rt-14-dev llvm"
 
 missing=""
 for package in $PACKAGES; do

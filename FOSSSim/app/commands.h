@@ -2,7 +2,9 @@
 // What the command line does once a scene is loaded; each returns the process exit status, and
 // failures they do not report themselves reach main() as Error.
 
+#include <exception>
 #include <ostream>
+#include <string>
 
 #include "app/options.h"
 #include "core/error.h"
@@ -27,9 +29,12 @@ int report_grade(const Scene& scene, const Options& options, const GradeReport& 
 /// (viewer/particle_grab.h).
 int run_window(const Scene& scene, const Options& options);
 
-/// Prints an error as the programs do: a located input error ("file:line: error: ...") as it
-/// is, anything else after "FOSSSim: error: ".
-void print_error(std::ostream& out, const Error& error);
+/// Prints a failure as FOSSSim does and returns the exit status for it: a located input error
+/// ("file:line: error: ...") as it is, running out of memory with a pointer to the limits,
+/// anything else after "FOSSSim: error: "; then "; <kept>" when `kept` says what a stopped run
+/// kept. The status is exit_status() of an Error's kind, and 2 (bad input) for anything else:
+/// a run always ends with a message and a documented status, never an abort.
+int report_failure(std::ostream& out, const std::exception& failure, const std::string& kept = "");
 
 /// Finite-difference check of every force at the scene's initial state.
 int run_derivative_check(const Scene& scene, const Options& options);

@@ -8,6 +8,7 @@
 
 #include "cli/exit_codes.h"
 #include "cli/parse_command_line.h"
+#include "core/limits.h"
 #include "core/text.h"
 #include "io/mesh_writer.h"
 #include "io/output_file.h"
@@ -27,6 +28,7 @@ struct GenerateOptions {
   std::string json;
   double k = 1000.0;
   std::string pins;
+  std::int64_t max_vertices = Limits{}.max_particles;
 };
 
 /// Writes {"obj": <mesh file relative to the JSON>, "k": k, "b": [pins, 1-based]}.
@@ -56,6 +58,10 @@ int main(int argc, char** argv) {
                  "Also write a JSON scene (fast mass-springs format) around the OBJ");
   app.add_option("--k", o.k, "Spring stiffness for --json (N/m)")->capture_default_str();
   app.add_option("--pins", o.pins, "Pin set for --json (default: the generator's)");
+  app.add_option("--max-particles", o.max_vertices,
+                 "Refuse to generate more vertices than this (docs/limits-and-failures.md)")
+      ->check(CLI::Range(std::int64_t{1}, kMaxParticlesLimit))
+      ->capture_default_str();
   auto* cloth = app.add_subcommand("cloth", "nx × ny cloth, hanging (plane xy) or flat (xz)");
   cloth->add_option("--nx", o.nx)->capture_default_str();
   cloth->add_option("--ny", o.ny)->capture_default_str();
@@ -91,31 +97,37 @@ int main(int argc, char** argv) {
   if (auto status = parse_command_line(app, argc, argv)) return *status;
 
   const auto positive = [](double x) { return x > 0.0; };
+  const std::int64_t m = o.max_vertices;
   GeneratedMesh generated;
   bool valid = true;
-  if (cloth->parsed()) {
-    valid = o.nx >= 2 && o.ny >= 2 && positive(o.width) && positive(o.height);
-    if (valid)
-      generated = generate_cloth(o.nx, o.ny, o.width, o.height, o.plane == "xz", !o.no_bend);
-  } else if (chain->parsed()) {
-    valid = o.links >= 1 && positive(o.length);
-    if (valid) generated = generate_chain(o.links, o.length);
-  } else if (net->parsed()) {
-    valid = o.nx >= 2 && o.ny >= 2 && positive(o.width) && positive(o.depth);
-    if (valid) generated = generate_net(o.nx, o.ny, o.width, o.depth);
-  } else if (skirt->parsed()) {
-    valid = o.segments >= 3 && o.rings >= 2 && positive(o.top_radius) &&
-            positive(o.bottom_radius) && o.height >= 0.0;
-    if (valid)
-      generated =
-          generate_skirt(o.segments, o.rings, o.top_radius, o.bottom_radius, o.height, !o.no_bend);
-  } else if (box->parsed()) {
-    valid =
-        o.nx >= 1 && o.ny >= 1 && o.nz >= 1 && positive(o.sx) && positive(o.sy) && positive(o.sz);
-    if (valid) generated = generate_tet_box(o.nx, o.ny, o.nz, o.sx, o.sy, o.sz);
-  } else {
-    valid = o.cells >= 2 && positive(o.radius);
-    if (valid) generated = generate_tet_ball(o.cells, o.radius);
+  try {
+    if (cloth->parsed()) {
+      valid = o.nx >= 2 && o.ny >= 2 && positive(o.width) && positive(o.height);
+      if (valid)
+        generated = generate_cloth(o.nx, o.ny, o.width, o.height, o.plane == "xz", !o.no_bend, m);
+    } else if (chain->parsed()) {
+      valid = o.links >= 1 && positive(o.length);
+      if (valid) generated = generate_chain(o.links, o.length, m);
+    } else if (net->parsed()) {
+      valid = o.nx >= 2 && o.ny >= 2 && positive(o.width) && positive(o.depth);
+      if (valid) generated = generate_net(o.nx, o.ny, o.width, o.depth, m);
+    } else if (skirt->parsed()) {
+      valid = o.segments >= 3 && o.rings >= 2 && positive(o.top_radius) &&
+              positive(o.bottom_radius) && o.height >= 0.0;
+      if (valid)
+        generated = generate_skirt(o.segments, o.rings, o.top_radius, o.bottom_radius, o.height,
+                                   !o.no_bend, m);
+    } else if (box->parsed()) {
+      valid =
+          o.nx >= 1 && o.ny >= 1 && o.nz >= 1 && positive(o.sx) && positive(o.sy) && positive(o.sz);
+      if (valid) generated = generate_tet_box(o.nx, o.ny, o.nz, o.sx, o.sy, o.sz, m);
+    } else {
+      valid = o.cells >= 2 && positive(o.radius);
+      if (valid) generated = generate_tet_ball(o.cells, o.radius, m);
+    }
+  } catch (const Error& error) {
+    std::cerr << "FOSSSim-generate: error: " << error.what() << "\n";
+    return exit_status(error.kind());
   }
   if (!valid) {
     std::cerr << "FOSSSim-generate: error: counts must be at least 2 (cubes, links: 1; skirt "

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <iostream>
-#include <new>
 
 #include "app/commands.h"
 #include "app/interrupt.h"
@@ -12,6 +11,8 @@
 #include "cli/exit_codes.h"
 #include "cli/parse_command_line.h"
 #include "core/error.h"
+#include "core/limits.h"
+#include "io/input_files.h"
 #include "io/scene_loader.h"
 #include "scripting/step_hooks.h"
 
@@ -26,9 +27,13 @@ int run(Options& options) {
     std::cerr << "FOSSSim: error: " << error.what() << "\nRun FOSSSim --help for the options.\n";
     return exit_status(error.kind());
   }
-  Scene scene = load_scene_file(options.scene);
+  const Limits limits = limits_of(options);
+  InputFiles files(limits);
+  Scene scene = load_scene_file(options.scene, files);
   try {
     apply_overrides(options, scene);
+    if (!options.check_derivatives) check_step_count(scene.model, limits);
+    check_outputs_spare_inputs(options, scene);
   } catch (const Error&) {
     for (const std::string& warning : scene.warnings) std::cerr << warning << "\n";
     throw;
@@ -61,14 +66,7 @@ int main(int argc, char** argv) {
   options.display_given = app.count("--display") > 0;
   try {
     return run(options);
-  } catch (const Error& error) {
-    print_error(std::cerr, error);
-    return exit_status(error.kind());
-  } catch (const std::bad_alloc&) {
-    std::cerr << "FOSSSim: error: out of memory\n";
-    return kExitBadInput;
-  } catch (const std::exception& error) {
-    std::cerr << "FOSSSim: error: " << error.what() << "\n";
-    return kExitBadInput;
+  } catch (const std::exception& failure) {
+    return report_failure(std::cerr, failure);
   }
 }

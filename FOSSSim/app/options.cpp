@@ -65,6 +65,28 @@ void add_picture_options(CLI::App& app, Options& options) {
       ->group(group);
 }
 
+void add_limit_options(CLI::App& app, Options& options) {
+  const char* group = "Limits (docs/limits-and-failures.md)";
+  app.add_option("--max-steps", options.max_steps,
+                 "Refuse a run (or a trajectory to grade) of more steps than this:\n"
+                 "ceil(duration / dt)")
+      ->check(CLI::Range(std::int64_t{1}, SceneModel::kMaxStepCount - 1))
+      ->capture_default_str()
+      ->group(group);
+  app.add_option("--max-particles", options.max_particles,
+                 "Refuse a scene of more particles than this, mesh vertices included; mesh\n"
+                 "generators are refused before they generate more")
+      ->check(CLI::Range(std::int64_t{1}, kMaxParticlesLimit))
+      ->capture_default_str()
+      ->group(group);
+  app.add_option("--max-file-size", options.max_file_mib,
+                 "Refuse a scene or mesh file larger than this many MiB")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 40))
+      ->type_name("MIB")
+      ->capture_default_str()
+      ->group(group);
+}
+
 /// Throws Error (kBadInput) with a message.
 [[noreturn]] void fail(const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); }
 
@@ -223,6 +245,14 @@ void check_picture_options(Options& options) {
   }
 }
 
+Limits limits_of(const Options& options) {
+  Limits limits;
+  limits.max_steps = options.max_steps;
+  limits.max_particles = options.max_particles;
+  limits.max_file_bytes = options.max_file_mib << 20;
+  return limits;
+}
+
 MovieSettings movie_settings(const Options& options) {
   MovieSettings settings;
   settings.width = options.width;
@@ -285,11 +315,13 @@ void add_options(CLI::App& app, Options& options) {
                "scene's initial state, print a table and exit (1 if any check fails)");
   app.add_flag("-q,--quiet", options.quiet, "No progress bar and no description");
   add_picture_options(app, options);
+  add_limit_options(app, options);
   app.set_version_flag("--version", "FOSSSim 0.1.0");
   app.footer(integrator_help() +
              "\nExit status: 0 success or passed; 1 grading failed; 2 bad command line, scene or\n"
-             "trajectory file; 3 a step failed (non-finite state, Newton did not converge);\n"
-             "4 an output file could not be written; 130 interrupted.\n\n"
+             "trajectory file, a size over a limit, an output that would replace an input;\n"
+             "3 a step failed (non-finite state, Newton did not converge); 4 an output file\n"
+             "could not be written; 130 interrupted (docs/limits-and-failures.md).\n\n"
              "Examples:\n"
              "  FOSSSim -s assets/t1m1/springs_single.xml -d 0 -o out.bin\n"
              "  FOSSSim -s assets/t1m1/springs_single.xml -d 0 -i out.bin\n"

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/limits.h"
 #include "core/scene.h"
 #include "pictures/movie_writer.h"
 
@@ -43,7 +44,15 @@ struct Options {
   std::string window_screenshot;    ///< test aid: PNG of the window at window_screenshot_step
   std::int64_t window_screenshot_step = 0;
   bool display_given = false;  ///< -d appeared on the command line
+
+  // Limits (docs/limits-and-failures.md).
+  std::int64_t max_steps = Limits{}.max_steps;                ///< --max-steps
+  std::int64_t max_particles = Limits{}.max_particles;        ///< --max-particles
+  std::int64_t max_file_mib = Limits{}.max_file_bytes >> 20;  ///< --max-file-size, MiB
 };
+
+/// The limits the options set.
+Limits limits_of(const Options& options);
 
 /// Declares every option on `app`, writing into `options`.
 void add_options(CLI::App& app, Options& options);
@@ -54,6 +63,12 @@ void check_picture_options(Options& options);
 
 /// The movie settings of --size and --fps.
 MovieSettings movie_settings(const Options& options);
+
+/// Refuses, with an Error (kBadInput) naming the option and the input, every output of the
+/// options that would replace or overwrite an input of the run: the scene file, its mesh files
+/// (scene.files) or the trajectory to grade, compared by file identity (io/file_identity.h),
+/// under every name an output is written to on the way (app/protected_inputs.cpp).
+void check_outputs_spare_inputs(const Options& options, const Scene& scene);
 
 /// Applies the command line's overrides to a loaded scene. Throws Error (kBadInput) when one is
 /// invalid; an integrator option the scene's integrator does not have becomes a warning in

@@ -1,9 +1,11 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "app/interrupt.h"
 #include "app/progress_bar.h"
 #include "cli/exit_codes.h"
 #include "grading/grader.h"
+#include "grading/step_grader.h"
 #include "io/trajectory_file.h"
 
 namespace fosssim {
@@ -13,9 +15,17 @@ int run_grading(const Scene& scene, const Options& options) {
   ProgressBar progress("grading", scene.model.num_steps(), !options.quiet && stderr_is_terminal());
   GradeReport report;
   try {
-    report =
-        grade_trajectory(scene, file, GradingCriteria{},
-                         [&progress](std::int64_t done, std::int64_t) { progress.update(done); });
+    StepGrader grader = StepGrader::open(scene, file);
+    while (grader.grade_next_step()) {
+      progress.update(grader.steps_graded());
+      if (interrupt_requested()) {
+        progress.finish();
+        std::cerr << "FOSSSim: interrupted at step " << grader.steps_graded()
+                  << " of the grading; no report and no residual file were written\n";
+        return kExitInterrupted;
+      }
+    }
+    report = grader.report();
   } catch (const Error& error) {
     progress.finish();
     throw Error(error.kind(), options.input + ": " + error.what());

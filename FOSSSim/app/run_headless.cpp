@@ -43,7 +43,7 @@ int run_headless(const Scene& scene, const Options& options) {
       }
       progress.finish();
       outputs.commit();
-    } catch (const Error&) {
+    } catch (const std::exception&) {
       progress.finish();
       throw;
     }
@@ -60,9 +60,8 @@ int run_headless(const Scene& scene, const Options& options) {
     std::cerr << "FOSSSim: error: " << scene.source << ": " << error.what() << kept_note(outputs)
               << "\n";
     return kExitSimulationFailed;
-  } catch (const Error& error) {
-    std::cerr << "FOSSSim: error: " << error.what() << kept_note(outputs) << "\n";
-    return exit_status(error.kind());
+  } catch (const std::exception& failure) {
+    return report_failure(std::cerr, failure, outputs.abandon());
   }
 }
 

@@ -73,6 +73,9 @@ struct Appearance {
 /// Everything a scene file declares.
 struct Scene {
   std::string source;  ///< the file it was read from, for messages
+  /// Every file it was read from: the scene file, then the mesh files it names (empty for a
+  /// scene built in memory). No output of a run may replace one of them.
+  std::vector<std::string> files;
   SceneModel model;
   State initial;
   Appearance appearance;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/limits.h"
+
 namespace fosssim {
 
 bool SceneModel::has_fixed_particles() const {
@@ -10,7 +12,8 @@ bool SceneModel::has_fixed_particles() const {
 }
 
 std::int64_t SceneModel::num_steps() const {
-  return static_cast<std::int64_t>(std::ceil(duration / integrator.dt));
+  const double steps = step_count(duration, integrator.dt);
+  return steps < kMaxStepCount ? static_cast<std::int64_t>(steps) : kMaxStepCount;
 }
 
 }  // namespace fosssim

@@ -67,8 +67,14 @@ struct SceneModel {
     return e >= static_cast<int>(edge_collides.size()) || edge_collides[e];
   }
   /// ceil(duration / dt) in double precision (4.0 / 0.01 gives 400), the number of steps a run
-  /// takes.
+  /// takes, saturated at kMaxStepCount: a count beyond it (or an infinite one, from a dt so small
+  /// that duration / dt overflows) is refused with a message by check_step_count
+  /// (core/limits.h) before a run starts.
   std::int64_t num_steps() const;
+
+  /// 2^62: more steps than any run takes, and safe from int64 overflow when frames are counted
+  /// (steps + 1).
+  static constexpr std::int64_t kMaxStepCount = std::int64_t{1} << 62;
 };
 
 }  // namespace fosssim

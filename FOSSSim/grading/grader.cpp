@@ -49,6 +49,9 @@ GradeReport grade_trajectory(const Scene& scene, TrajectoryReader& file,
 void print_grade_report(std::ostream& out, const GradeReport& report) {
   if (report.collisions) {
     for (const std::string& line : report.collisions->lines) out << line << "\n";
+    if (report.collisions->lines_dropped > 0) {
+      out << "  (" << report.collisions->lines_dropped << " more lines not kept)\n";
+    }
   }
   for (const Criterion& c : criteria_of(report)) {
     out << c.name << ": " << c.value << "   " << (c.passed ? "Passed." : "Failed.") << "\n";
@@ -89,7 +92,8 @@ std::string describe_failure(const GradeReport& report, int dim) {
         << ")\n";
     const std::size_t shown = std::min<std::size_t>(c.lines.size(), 10);
     for (std::size_t k = 0; k < shown; ++k) out << c.lines[k] << "\n";
-    if (c.lines.size() > shown) out << "  (" << c.lines.size() - shown << " more lines)\n";
+    const std::int64_t more = static_cast<std::int64_t>(c.lines.size() - shown) + c.lines_dropped;
+    if (more > 0) out << "  (" << more << " more lines)\n";
   }
   if (const auto& d = report.first_divergence) {
     out << "First divergence at step " << d->step << ", particle " << d->particle

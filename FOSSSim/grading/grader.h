@@ -48,9 +48,13 @@ struct FirstDivergence {
 /// The comparison of a step's collisions, polynomials and sync record (docs/collisions.md,
 /// 'Grading'), for trajectories whose layout has them.
 struct CollisionGrade {
+  /// At most this many lines are kept, so that grading's memory does not grow with the number
+  /// of steps; the others are counted in lines_dropped.
+  static constexpr std::size_t kMaxLines = 10000;
   /// The course's report lines, in the order found: "  Missed collision: Particle 0 - Particle 1
   /// with normal = 0.4 0", "Wrong number of polynomials!", and FOSSSim's own sync-record lines.
   std::vector<std::string> lines;
+  std::int64_t lines_dropped = 0;  ///< lines found after the first kMaxLines
   std::int64_t missed = 0;
   std::int64_t superfluous = 0;
   std::int64_t wrong_normal = 0;
@@ -65,17 +69,23 @@ struct CollisionGrade {
   }
 };
 
+/// What grading found, in memory independent of the number of steps: the four criteria's
+/// values, the last step graded and the first divergence. Whoever needs every step's residuals
+/// (the oracle's diagnosis) takes them one by one from a StepGrader (grading/step_grader.h).
 struct GradeReport {
   GradingCriteria criteria;
-  std::int64_t steps = 0;
+  std::int64_t steps = 0;         ///< the steps to grade: the scene's num_steps()
+  std::int64_t steps_graded = 0;  ///< steps compared so far
   double accumulated_position = 0.0;
   double accumulated_velocity = 0.0;
   double max_position = 0.0;
   double max_velocity = 0.0;
-  std::vector<StepResidual> per_step;  ///< one entry per step, in order
+  std::optional<StepResidual> last_step;  ///< the residuals of the last step compared
   std::optional<FirstDivergence> first_divergence;
   /// Set when the reference integrator could not take a step from the file's state; the
-  /// comparison stops there and the grade is a failure.
+  /// comparison stops there and the grade is a failure. The step's residuals are undefined:
+  /// they count as NaN, so that every criterion fails with it (the printed report and the
+  /// residual file say so too).
   std::optional<std::string> reference_failure;
   /// Set when the trajectory's layout records collisions (collision types simple,
   /// continuous-time and hybrid); it must pass too.

@@ -1,5 +1,7 @@
 #include "grading/step_grader.h"
 
+#include <limits>
+
 #include "core/step_error.h"
 #include "core/text.h"
 #include "grading/collision_grading.h"
@@ -12,7 +14,6 @@ StepGrader::StepGrader(const Scene& scene, TrajectoryReader& file, const Grading
   pipeline_.set_health_check(false);
   report_.criteria = criteria;
   report_.steps = scene.model.num_steps();
-  report_.per_step.reserve(static_cast<std::size_t>(report_.steps));
   if (file.layout() != TrajectoryLayout::kFrames) report_.collisions.emplace();
   file.read_frame(0, file_state_.q, file_state_.v);
 }
@@ -48,9 +49,18 @@ bool StepGrader::grade_next_step() {
     pipeline_.step(reference, &record_);
   } catch (const StepError& error) {
     report_.reference_failure = std::string("the reference integrator failed at ") + error.what();
+    constexpr double kUndefined = std::numeric_limits<double>::quiet_NaN();
+    StepResidual undefined;
+    undefined.step = k;
+    undefined.sum_position = undefined.sum_velocity = kUndefined;
+    undefined.max_position = undefined.max_velocity = kUndefined;
+    accumulate(undefined);
     return false;
   }
   Vector previous_q = std::move(file_state_.q), previous_v = std::move(file_state_.v);
+  // The step's sync record precedes its end-of-step record: reading in file order keeps the
+  // reader's walk through the records one step long (io/trajectory_file.h).
+  if (report_.collisions && file_->has_sync_records()) file_->read_sync_record(k, sync_record_);
   file_->read_frame(k, file_state_.q, file_state_.v);
   file_state_.step = k;
   file_state_.time = reference.time;
@@ -69,8 +79,7 @@ void StepGrader::compare_records(std::int64_t step) {
     if (!compare_polynomials(record_.polynomials, written.polynomials, grade.lines)) {
       ++grade.polynomial_failures;
     }
-    TrajectoryRecord sync;
-    file_->read_sync_record(step, sync);
+    const TrajectoryRecord& sync = sync_record_;
     const int dim = scene_->model.dim;
     const Vector& q = record_.sync ? record_.sync->q : file_state_.q;
     const Vector& v = record_.sync ? record_.sync->v : file_state_.v;
@@ -89,6 +98,11 @@ void StepGrader::compare_records(std::int64_t step) {
     }
   }
   if (passed_before && !grade.passed()) grade.first_failing_step = step;
+  if (grade.lines.size() > CollisionGrade::kMaxLines) {
+    grade.lines_dropped +=
+        static_cast<std::int64_t>(grade.lines.size() - CollisionGrade::kMaxLines);
+    grade.lines.resize(CollisionGrade::kMaxLines);
+  }
 }
 
 void StepGrader::compare(const State& reference, const Vector& previous_q,
@@ -133,13 +147,18 @@ void StepGrader::compare(const State& reference, const Vector& previous_q,
       report_.first_divergence = std::move(d);
     }
   }
+  accumulate(residual);
+  report_.steps_graded = residual.step;
+  report_.last_step = residual;
+}
+
+void StepGrader::accumulate(const StepResidual& residual) {
   report_.accumulated_position += residual.sum_position;
   report_.accumulated_velocity += residual.sum_velocity;
   if (replaces_maximum(residual.max_position, report_.max_position))
     report_.max_position = residual.max_position;
   if (replaces_maximum(residual.max_velocity, report_.max_velocity))
     report_.max_velocity = residual.max_velocity;
-  report_.per_step.push_back(residual);
 }
 
 }  // namespace fosssim

@@ -24,7 +24,8 @@ namespace fosssim {
 /// step on their collisions (as sets, normals to 1e-9), their polynomial logs (up to a positive
 /// factor) and their sync records, against FOSSSim's own sync state (FOSSSim's addition: the
 /// course's grader adopts the file's sync record instead).
-/// The report accumulates over the steps graded so far.
+/// The report accumulates over the steps graded so far; after each step, report().last_step
+/// holds that step's residuals. Memory does not grow with the number of steps.
 class StepGrader {
  public:
   /// Starts grading. `scene` and `file` must outlive the grader. Throws Error (kBadInput) when
@@ -39,9 +40,7 @@ class StepGrader {
   /// True when there is nothing left to grade.
   bool finished() const;
   /// Number of steps graded so far.
-  std::int64_t steps_graded() const {
-    return report_.per_step.empty() ? 0 : report_.per_step.back().step;
-  }
+  std::int64_t steps_graded() const { return report_.steps_graded; }
 
   /// The report over the steps graded so far.
   const GradeReport& report() const { return report_; }
@@ -55,12 +54,15 @@ class StepGrader {
  private:
   StepGrader(const Scene& scene, TrajectoryReader& file, const GradingCriteria& criteria);
   void compare(const State& reference, const Vector& previous_q, const Vector& previous_v);
+  /// Adds one step's residuals to the report's criteria.
+  void accumulate(const StepResidual& residual);
   void compare_records(std::int64_t step);
 
   const Scene* scene_;
   TrajectoryReader* file_;
   StepPipeline pipeline_;
-  StepRecord record_;  // what the reference step reported
+  StepRecord record_;             // what the reference step reported
+  TrajectoryRecord sync_record_;  // the file's sync record of the step being graded
   GradeReport report_;
   State file_state_;
   std::vector<double> position_residuals_, velocity_residuals_;

@@ -48,7 +48,7 @@ class KeyOptions final : public OptionSource {
 
 class JsonSceneParser {
  public:
-  explicit JsonSceneParser(const std::string& name) : name_(name) {}
+  JsonSceneParser(const std::string& name, InputFiles& files) : name_(name), files_(files) {}
 
   Scene parse(const json& root) {
     if (!root.is_object())
@@ -131,8 +131,13 @@ class JsonSceneParser {
     if (!root.contains("obj")) fail("the required key \"obj\" (the OBJ mesh file) is missing");
     if (!root.at("obj").is_string())
       fail("\"obj\" must be a file name, found " + root.at("obj").dump());
-    return read_referenced_mesh(name_, root.at("obj").get<std::string>(), read_obj_file,
-                                "the \"obj\" of " + name_);
+    Mesh mesh = read_referenced_mesh(files_, name_, root.at("obj").get<std::string>(),
+                                     read_obj_text, "the \"obj\" of " + name_);
+    if (mesh.num_vertices() > files_.limits().max_particles) {
+      fail("the \"obj\" mesh has " + std::to_string(mesh.num_vertices()) + " vertices, " +
+           over_limit(files_.limits().max_particles, "particles", "--max-particles"));
+    }
+    return mesh;
   }
 
   /// The 0-based vertices of the 1-based list "b".
@@ -158,6 +163,7 @@ class JsonSceneParser {
   }
 
   const std::string& name_;
+  InputFiles& files_;
   Scene scene_;
 };
 
@@ -175,7 +181,7 @@ void KeyOptions::fail(std::string_view name, const std::string& problem) {
 
 }  // namespace
 
-Scene load_json_scene_text(std::string_view text, const std::string& name) {
+Scene load_json_scene_text(std::string_view text, const std::string& name, InputFiles& files) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
     throw SceneError(name, 0, "", "the file is empty (expected a JSON object)");
   }
@@ -188,12 +194,31 @@ Scene load_json_scene_text(std::string_view text, const std::string& name) {
       what = what.substr(colon);
     throw SceneError(name, line_of(text, error.byte == 0 ? 0 : error.byte - 1), "",
                      "not valid JSON: " + what);
+  } catch (const json::exception& error) {
+    // A number beyond the range of a double ("number overflow parsing '1e400'"), or any other
+    // reason nlohmann::json gives; it names the offending text, not its line.
+    std::string what = error.what();
+    if (const auto bracket = what.find("] "); bracket != std::string::npos)
+      what = what.substr(bracket + 2);
+    throw SceneError(name, 0, "", "not valid JSON: " + what);
   }
-  return JsonSceneParser(name).parse(root);
+  Scene scene = JsonSceneParser(name, files).parse(root);
+  scene.files = files.paths();
+  return scene;
+}
+
+Scene load_json_scene_text(std::string_view text, const std::string& name) {
+  InputFiles files;
+  return load_json_scene_text(text, name, files);
+}
+
+Scene load_json_scene_file(const std::string& path, InputFiles& files) {
+  return load_json_scene_text(files.read(path), path, files);
 }
 
 Scene load_json_scene_file(const std::string& path) {
-  return parse_text_file(path, load_json_scene_text);
+  InputFiles files;
+  return load_json_scene_file(path, files);
 }
 
 }  // namespace fosssim

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "core/scene.h"
+#include "io/input_files.h"
 #include "io/scene_error.h"
 
 namespace fosssim {
@@ -33,11 +34,16 @@ struct JsonSceneDefaults {
 /// penalty w = 1e10) and applies a force of -9.8 N along y to every vertex, pinned ones
 /// included (a constant force, not m·g, as in the assignment). Optional keys of ours: "h",
 /// "iterations", "start" (the local/global option), "duration". Other keys become warnings.
-/// Errors (SceneError) name the file (and, for malformed JSON, the line) and the problem.
+/// Errors (SceneError) name the file (and, for malformed JSON, the line) and the problem. The
+/// files are read through `files` (io/input_files.h), and Scene::files lists them.
+Scene load_json_scene_file(const std::string& path, InputFiles& files);
+/// The same with the default limits.
 Scene load_json_scene_file(const std::string& path);
 
 /// Reads JSON text; `name` stands for the file in messages and its directory is where a
-/// relative "obj" path starts.
+/// relative "obj" path starts; the mesh is read through `files`.
+Scene load_json_scene_text(std::string_view text, const std::string& name, InputFiles& files);
+/// The same with the default limits, the mesh read from the file system.
 Scene load_json_scene_text(std::string_view text, const std::string& name);
 
 }  // namespace fosssim

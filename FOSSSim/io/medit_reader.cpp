@@ -103,6 +103,9 @@ class MeditParser {
     return value;
   }
 
+  /// The count that starts a section. It is only ever looped over, each record consuming words
+  /// of the file, never used to size anything: a count the file cannot hold ends at the file's
+  /// end with a message, whatever it declares.
   int read_count(std::string_view section) {
     const int count = read_int("the number of " + std::string(section));
     if (count < 0)
@@ -114,7 +117,6 @@ class MeditParser {
   void read_vertices() {
     if (!mesh_.vertices.empty()) fail(previous_line(), "a second Vertices section");
     const int count = read_count("Vertices");
-    mesh_.vertices.reserve(count);
     for (int v = 1; v <= count; ++v) {
       const std::string what = "vertex " + std::to_string(v);
       Eigen::Vector3d x;

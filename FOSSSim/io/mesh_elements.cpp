@@ -48,7 +48,7 @@ bool flag_or(ElementReader& r, const char* name, bool fallback) {
   return r.has(name) ? r.flag(name) : fallback;
 }
 
-GeneratedMesh generate(ElementReader& r) {
+GeneratedMesh generate_mesh(ElementReader& r, std::int64_t max_vertices) {
   const std::string type = r.text("type");
   if (type == "cloth") {
     const std::string plane = r.has("plane") ? r.text("plane") : "xy";
@@ -56,36 +56,51 @@ GeneratedMesh generate(ElementReader& r) {
       r.fail("plane", "must be \"xy\" (hanging) or \"xz\" (flat), found \"" + plane + "\"");
     return generate_cloth(integer_at_least(r, "nx", 2), integer_at_least(r, "ny", 2),
                           positive_or(r, "width", 1.0), positive_or(r, "height", 1.0),
-                          plane == "xz", flag_or(r, "bend", true));
+                          plane == "xz", flag_or(r, "bend", true), max_vertices);
   }
   if (type == "chain")
-    return generate_chain(integer_at_least(r, "links", 1), positive_or(r, "length", 1.0));
+    return generate_chain(integer_at_least(r, "links", 1), positive_or(r, "length", 1.0),
+                          max_vertices);
   if (type == "net") {
     return generate_net(integer_at_least(r, "nx", 2), integer_at_least(r, "ny", 2),
-                        positive_or(r, "width", 1.0), positive_or(r, "depth", 1.0));
+                        positive_or(r, "width", 1.0), positive_or(r, "depth", 1.0), max_vertices);
   }
   if (type == "skirt") {
     const double top = positive_or(r, "top-radius", 0.25);
     return generate_skirt(integer_at_least(r, "segments", 3), integer_at_least(r, "rings", 2), top,
                           positive_or(r, "bottom-radius", 2.0 * top),
-                          r.non_negative_or("height", 1.0), flag_or(r, "bend", true));
+                          r.non_negative_or("height", 1.0), flag_or(r, "bend", true), max_vertices);
   }
   if (type == "tetbox") {
     return generate_tet_box(integer_at_least(r, "nx", 1), integer_at_least(r, "ny", 1),
                             integer_at_least(r, "nz", 1), positive_or(r, "sx", 1.0),
-                            positive_or(r, "sy", 1.0), positive_or(r, "sz", 1.0));
+                            positive_or(r, "sy", 1.0), positive_or(r, "sz", 1.0), max_vertices);
   }
   if (type == "tetball")
-    return generate_tet_ball(integer_at_least(r, "cells", 2), positive_or(r, "radius", 1.0));
+    return generate_tet_ball(integer_at_least(r, "cells", 2), positive_or(r, "radius", 1.0),
+                             max_vertices);
   r.fail("type", "names an unknown generator \"" + type +
                      "\" (expected cloth, chain, net, skirt, tetbox or tetball)");
 }
 
+/// The generated mesh of a <generate>, refused before it is generated when it would have more
+/// than `max_vertices` vertices.
+GeneratedMesh generate(ElementReader& r, std::int64_t max_vertices) {
+  try {
+    return generate_mesh(r, max_vertices);
+  } catch (const SceneError&) {
+    throw;
+  } catch (const Error& error) {
+    r.fail(error.what());
+  }
+}
+
 /// Reads a mesh file, re-throwing its error with the element that asked for it.
-template <typename Reader>
-Mesh read_mesh_file(ElementReader& r, const std::string& file, Reader reader) {
+template <typename ParseText>
+Mesh read_mesh_file(ElementReader& r, const std::string& file, InputFiles& files,
+                    ParseText parse_text) {
   const std::string name = r.text("file");
-  return read_referenced_mesh(file, name, reader,
+  return read_referenced_mesh(files, file, name, parse_text,
                               "the mesh of " + file + ":" + std::to_string(r.line()));
 }
 
@@ -146,7 +161,8 @@ bool is_mesh_element(std::string_view name) {
 }
 
 std::vector<std::unique_ptr<Force>> read_mesh_elements(const XMLElement& root, Scene& scene,
-                                                       const std::string& file) {
+                                                       const std::string& file, InputFiles& files) {
+  const std::int64_t max_particles = files.limits().max_particles;
   std::vector<std::unique_ptr<Force>> forces;
   std::map<std::string, int> count;
   for (const XMLElement* e = root.FirstChildElement(); e; e = e->NextSiblingElement()) {
@@ -158,11 +174,11 @@ std::vector<std::unique_ptr<Force>> read_mesh_elements(const XMLElement& root, S
     MeshDeclaration mesh;
     mesh.label = kind + " " + std::to_string(index);
     if (kind == "clothmesh") {
-      mesh.mesh = read_mesh_file(r, file, read_obj_file);
+      mesh.mesh = read_mesh_file(r, file, files, read_obj_text);
     } else if (kind == "tetmesh") {
-      mesh.mesh = read_mesh_file(r, file, read_medit_file);
+      mesh.mesh = read_mesh_file(r, file, files, read_medit_text);
     } else {
-      GeneratedMesh generated = generate(r);
+      GeneratedMesh generated = generate(r, max_particles);
       const std::string pins = r.has("pin") ? r.text("pin") : generated.default_pins;
       const std::vector<int>* set = generated.find_pins(pins);
       if (!set)
@@ -191,6 +207,13 @@ std::vector<std::unique_ptr<Force>> read_mesh_elements(const XMLElement& root, S
     }
     std::sort(mesh.pinned.begin(), mesh.pinned.end());
     mesh.pinned.erase(std::unique(mesh.pinned.begin(), mesh.pinned.end()), mesh.pinned.end());
+    const std::int64_t particles =
+        std::int64_t{scene.model.num_particles()} + mesh.mesh.num_vertices();
+    if (particles > max_particles) {
+      r.fail("its " + std::to_string(mesh.mesh.num_vertices()) + " vertices bring the scene to " +
+             std::to_string(particles) + " particles, " +
+             over_limit(max_particles, "particles", "--max-particles"));
+    }
     std::unique_ptr<Force> force;
     try {
       force = append_mesh(scene, mesh.mesh, material, mesh.pinned, mesh.label);

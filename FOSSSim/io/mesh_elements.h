@@ -8,6 +8,7 @@
 
 #include "core/force.h"
 #include "core/scene.h"
+#include "io/input_files.h"
 
 namespace tinyxml2 {
 class XMLElement;
@@ -22,9 +23,11 @@ bool is_mesh_element(std::string_view name);
 /// vertices as particles (after those of <particle> elements), its springs as edges (after
 /// those of <edge> elements) and its surface to the appearance, and yields one spring force.
 /// The forces are returned for the caller to sum right after the <springforce> group.
-/// Mesh files are found relative to the directory of `file`. Throws SceneError naming the
-/// scene file, line and element, or the mesh file and its line.
+/// Mesh files are found relative to the directory of `file` and read through `files`; a
+/// generator is refused before it takes the scene past files.limits().max_particles. Throws
+/// SceneError naming the scene file, line and element, or the mesh file and its line.
 std::vector<std::unique_ptr<Force>> read_mesh_elements(const tinyxml2::XMLElement& root,
-                                                       Scene& scene, const std::string& file);
+                                                       Scene& scene, const std::string& file,
+                                                       InputFiles& files);
 
 }  // namespace fosssim

@@ -1,6 +1,5 @@
 #include "io/output_file.h"
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -55,34 +54,37 @@ void OutputFile::discard() const {
   fs::remove(write_path_, ignored);
 }
 
-void write_output_file(const std::string& path, const std::string& content) {
+void stream_output_file(const std::string& path, const std::function<void(std::FILE*)>& body) {
   const OutputFile output(path);
   const std::string& name = output.write_path();
-  const auto fail = [&](const char* reason) {
-    throw Error(ErrorKind::kCannotWrite, "cannot write " + name + ": " + reason);
-  };
-  const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) {
+  std::FILE* file = std::fopen(name.c_str(), "wbe");
+  if (file == nullptr) {
     throw Error(ErrorKind::kCannotWrite, "cannot create " + name + ": " + std::strerror(errno));
   }
-  const auto fail_open = [&](const char* reason) {
-    ::close(fd);
+  const auto fail = [&](int error) {
     output.discard();
-    fail(reason);
+    throw Error(ErrorKind::kCannotWrite, "cannot write " + name + ": " + std::strerror(error));
   };
-  std::size_t written = 0;
-  while (written < content.size()) {
-    const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) fail_open(std::strerror(errno));
-    written += static_cast<std::size_t>(n);
-  }
-  if (!output.in_place() && ::fsync(fd) != 0) fail_open(std::strerror(errno));
-  if (::close(fd) != 0) {
+  try {
+    body(file);
+  } catch (...) {
+    std::fclose(file);
     output.discard();
-    fail(std::strerror(errno));
+    throw;
   }
+  if (std::fflush(file) != 0 || std::ferror(file) ||
+      (!output.in_place() && ::fsync(::fileno(file)) != 0)) {
+    const int error = errno != 0 ? errno : EIO;
+    std::fclose(file);
+    fail(error);
+  }
+  if (std::fclose(file) != 0) fail(errno);
   output.commit();
+}
+
+void write_output_file(const std::string& path, const std::string& content) {
+  stream_output_file(
+      path, [&content](std::FILE* file) { std::fwrite(content.data(), 1, content.size(), file); });
 }
 
 void write_output_file(const std::string& path, const std::function<void(std::ostream&)>& body) {

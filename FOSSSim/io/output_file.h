@@ -1,6 +1,7 @@
 #pragma once
 // Outputs appear whole or not at all, without ever replacing a device or a link.
 
+#include <cstdio>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -43,5 +44,10 @@ void write_output_file(const std::string& path, const std::string& content);
 
 /// The same for what `body` streams.
 void write_output_file(const std::string& path, const std::function<void(std::ostream&)>& body);
+
+/// The same for what `body` writes straight to the open file (with std::fwrite and the like),
+/// so that an output of any size is never held in memory. Write errors are found when the file
+/// is flushed; what `body` throws removes the temporary file and is thrown again.
+void stream_output_file(const std::string& path, const std::function<void(std::FILE*)>& body);
 
 }  // namespace fosssim

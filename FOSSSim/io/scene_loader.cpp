@@ -96,7 +96,8 @@ class AttributeOptions final : public OptionSource {
 /// Turns a parsed document into a Scene, throwing SceneError on the first problem.
 class SceneParser {
  public:
-  SceneParser(const std::string& file, std::vector<std::string> warnings) : file_(file) {
+  SceneParser(const std::string& file, InputFiles& files, std::vector<std::string> warnings)
+      : file_(file), files_(files) {
     scene_.warnings = std::move(warnings);
   }
 
@@ -107,7 +108,7 @@ class SceneParser {
     read_settings(root);
     read_particles();
     read_edges();
-    mesh_forces_ = read_mesh_elements(root, scene_, file_);
+    mesh_forces_ = read_mesh_elements(root, scene_, file_, files_);
     read_collision_elements(root, scene_, file_);
     read_forces();
     read_appearance();
@@ -250,6 +251,12 @@ class SceneParser {
   void read_particles() {
     SceneModel& model = scene_.model;
     const auto& particles = all("particle");
+    if (static_cast<std::int64_t>(particles.size()) > files_.limits().max_particles) {
+      throw SceneError(
+          file_, particles.front()->GetLineNum(), "<particle>",
+          "the scene declares " + std::to_string(particles.size()) + " particles, " +
+              over_limit(files_.limits().max_particles, "particles", "--max-particles"));
+    }
     const int n = static_cast<int>(particles.size());
     const int dim = model.dim;
     model.mass.resize(dim * n);
@@ -332,6 +339,7 @@ class SceneParser {
   }
 
   const std::string& file_;
+  InputFiles& files_;
   Scene scene_;
   std::map<std::string, std::vector<const XMLElement*>> elements_;
   std::vector<std::unique_ptr<Force>> mesh_forces_;
@@ -339,7 +347,7 @@ class SceneParser {
 
 }  // namespace
 
-Scene load_scene_text(std::string_view text, const std::string& name) {
+Scene load_scene_text(std::string_view text, const std::string& name, InputFiles& files) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
     throw SceneError(name, 0, "", "the file is empty (expected a <scene> element)");
   }
@@ -355,12 +363,24 @@ Scene load_scene_text(std::string_view text, const std::string& name) {
     throw SceneError(name, second->GetLineNum(), std::string("<") + second->Name() + ">",
                      "a second top-level element; a scene file holds one <scene>");
   }
-  return SceneParser(name, std::move(warnings)).parse(*root);
+  Scene scene = SceneParser(name, files, std::move(warnings)).parse(*root);
+  scene.files = files.paths();
+  return scene;
+}
+
+Scene load_scene_text(std::string_view text, const std::string& name) {
+  InputFiles files;
+  return load_scene_text(text, name, files);
+}
+
+Scene load_scene_file(const std::string& path, InputFiles& files) {
+  if (std::filesystem::path(path).extension() == ".json") return load_json_scene_file(path, files);
+  return load_scene_text(files.read(path), path, files);
 }
 
 Scene load_scene_file(const std::string& path) {
-  if (std::filesystem::path(path).extension() == ".json") return load_json_scene_file(path);
-  return load_scene_text(read_text_file(path), path);
+  InputFiles files;
+  return load_scene_file(path, files);
 }
 
 }  // namespace fosssim

@@ -1,12 +1,7 @@
 #include "io/text_lines.h"
 
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace fosssim {
 
@@ -15,32 +10,6 @@ bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
 }
 }  // namespace
-
-std::string read_text_file(const std::string& path) {
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored)) {
-    throw SceneError(path, 0, "", "is a directory, not a file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw SceneError(path, 0, "", std::string("cannot open the file: ") + std::strerror(errno));
-  }
-  // One read into a string of the file's size (a stream copy through rdbuf() is several times
-  // slower on scenes of megabytes), then whatever more there is (a file that grew, a pipe).
-  std::string content;
-  const std::uintmax_t size = std::filesystem::file_size(path, ignored);
-  if (size != static_cast<std::uintmax_t>(-1) && size > 0) {
-    content.resize(static_cast<std::size_t>(size));
-    in.read(content.data(), static_cast<std::streamsize>(size));
-    content.resize(static_cast<std::size_t>(in.gcount()));
-  }
-  char block[1 << 16];
-  while (in.read(block, sizeof block) || in.gcount() > 0) {
-    content.append(block, static_cast<std::size_t>(in.gcount()));
-  }
-  if (in.bad()) throw SceneError(path, 0, "", "cannot read the file");
-  return content;
-}
 
 std::vector<Word> split_words(std::string_view text, char comment) {
   std::vector<Word> words;

@@ -1,17 +1,15 @@
 #pragma once
-// Small helpers for line-oriented text formats (OBJ, MEDIT): whole-file reads, words with
-// their line numbers, strict number parsing.
+// Small helpers for line-oriented text formats (OBJ, MEDIT): words with their line numbers,
+// strict number parsing; whole-file reads come from io/input_files.h.
 
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "io/input_files.h"
 #include "io/scene_error.h"
 
 namespace fosssim {
-
-/// The whole content of a file. Throws SceneError naming it and the system's reason.
-std::string read_text_file(const std::string& path);
 
 /// A word of a text and the 1-based line it is on.
 struct Word {

@@ -5,7 +5,6 @@
 #include <bit>
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
 #include <stdexcept>
 #include <vector>
 
@@ -131,7 +130,8 @@ void TrajectoryWriter::write_int(std::int32_t value) {
                                   static_cast<unsigned char>(u >> 16),
                                   static_cast<unsigned char>(u >> 24)};
   if (std::fwrite(bytes, 1, 4, file_) != 4) {
-    throw std::runtime_error("cannot write " + output_.write_path() + ": " + system_reason());
+    throw Error(ErrorKind::kCannotWrite,
+                "cannot write " + output_.write_path() + ": " + system_reason());
   }
 }
 
@@ -189,117 +189,143 @@ std::string TrajectoryWriter::abandon() {
 
 // ---- TrajectoryReader -------------------------------------------------------------------------
 
-TrajectoryReader::TrajectoryReader(std::string path, std::FILE* file, int dofs, std::int64_t frames)
-    : path_(std::move(path)), file_(file), dofs_(dofs), num_frames_(frames) {}
-
-namespace {
-/// Opens `path` for reading and gives its size in bytes; throws Error (kBadInput) naming the
-/// path and the reason.
-std::FILE* open_for_reading(const std::string& path, std::int64_t& size) {
-  const auto fail = [](const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); };
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) fail(path + " is a directory, not a trajectory");
-  size = static_cast<std::int64_t>(std::filesystem::file_size(path, error));
-  if (error) fail("cannot read " + path + ": " + error.message());
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (file == nullptr) fail("cannot open " + path + ": " + system_reason());
-  return file;
+TrajectoryReader::TrajectoryReader(std::string path, RegularFile file, int dofs, int dim,
+                                   TrajectoryLayout layout)
+    : path_(std::move(path)), file_(std::move(file)), dofs_(dofs), dim_(dim), layout_(layout) {
+  const std::int64_t frame_bytes = trajectory_frame_bytes(dofs);
+  if (frame_bytes == 0) {
+    throw Error(ErrorKind::kBadInput,
+                path_ + ": the scene has no particles, so its trajectory has nothing to read");
+  }
+  if (layout_ != TrajectoryLayout::kFrames) {
+    check_records();
+    return;
+  }
+  if (file_.size % frame_bytes != 0) {
+    throw Error(ErrorKind::kBadInput,
+                path_ + " has " + std::to_string(file_.size) +
+                    " bytes, not a whole number of frames of " + std::to_string(frame_bytes) +
+                    " bytes (" + std::to_string(dofs) +
+                    " positions and velocities); it was cut short or is for another scene");
+  }
+  num_frames_ = file_.size / frame_bytes;
+  num_records_ = num_frames_;
 }
-}  // namespace
 
 TrajectoryReader TrajectoryReader::open(const std::string& path, int dofs) {
-  const auto fail = [](const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); };
-  std::int64_t size = 0;
-  std::FILE* file = open_for_reading(path, size);
-  const std::int64_t frame_bytes = trajectory_frame_bytes(dofs);
-  const std::int64_t bytes = size;
-  if (frame_bytes == 0 || bytes % frame_bytes != 0) {
-    std::fclose(file);
-    fail(path + " has " + std::to_string(bytes) + " bytes, not a whole number of frames of " +
-         std::to_string(frame_bytes) + " bytes (" + std::to_string(dofs) +
-         " positions and velocities); it was cut short or is for another scene");
-  }
-  return TrajectoryReader(path, file, dofs, bytes / frame_bytes);
+  return open(path, dofs, 2, TrajectoryLayout::kFrames);
 }
 
 TrajectoryReader TrajectoryReader::open(const std::string& path, int dofs, int dim,
                                         TrajectoryLayout layout) {
+  return TrajectoryReader(path, open_regular_file(path), dofs, dim, layout);
+}
+
+TrajectoryReader TrajectoryReader::from_bytes(std::string bytes, int dofs, const std::string& name,
+                                              int dim, TrajectoryLayout layout) {
+  auto held = std::make_shared<const std::string>(std::move(bytes));
+  RegularFile file;
+  file.size = static_cast<std::int64_t>(held->size());
+  // fmemopen of an empty buffer fails; a one-byte buffer read as empty stands in for it.
+  file.stream.reset(::fmemopen(const_cast<char*>(held->empty() ? "" : held->data()),
+                               held->empty() ? 1 : held->size(), "rb"));
+  if (file.stream == nullptr) {
+    throw Error(ErrorKind::kBadInput, "cannot read " + name + ": " + system_reason());
+  }
+  TrajectoryReader reader(name, std::move(file), dofs, dim, layout);
+  reader.bytes_ = std::move(held);
+  return reader;
+}
+
+std::int64_t TrajectoryReader::record_end(std::int64_t at, std::int64_t index) {
   const auto fail = [](const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); };
-  if (layout == TrajectoryLayout::kFrames) return open(path, dofs);
-  std::int64_t size = 0;
-  TrajectoryReader reader(path, open_for_reading(path, size), dofs, 0);
-  std::FILE* file = reader.file_.get();
-  reader.dim_ = dim;
-  reader.layout_ = layout;
-  const std::int64_t bytes = size;
-  const std::int64_t frame_bytes = trajectory_frame_bytes(dofs);
-  const std::int64_t record_bytes = collision_record_bytes(dim);
-  std::int64_t at = 0;
+  std::FILE* file = file_.stream.get();
+  const std::int64_t bytes = file_.size;
+  const std::string record = std::to_string(index);
   const auto cut_short = [&](const std::string& what) {
-    fail(path + " ends inside record " + std::to_string(reader.offsets_.size()) + " (" + what +
+    fail(path_ + " ends inside record " + record + " (" + what +
          "); it was cut short or is not a trajectory of this scene");
   };
-  while (at < bytes) {
-    reader.offsets_.push_back(at);
-    const std::string record = std::to_string(reader.offsets_.size() - 1);
-    at += frame_bytes;
-    std::int32_t count = 0;
-    if (at > bytes || std::fseek(file, static_cast<long>(at), SEEK_SET) != 0 ||
-        !read_int(file, count)) {
-      cut_short("its frame or its collision count");
+  const std::int64_t record_bytes = collision_record_bytes(dim_);
+  at += trajectory_frame_bytes(dofs_);
+  std::int32_t count = 0;
+  if (at > bytes || std::fseek(file, static_cast<long>(at), SEEK_SET) != 0 ||
+      !read_int(file, count)) {
+    cut_short("its frame or its collision count");
+  }
+  at += 4;
+  if (count < 0 || count > (bytes - at) / record_bytes) {
+    fail(path_ + ": record " + record + " claims " + std::to_string(count) +
+         " collisions, more than the file holds; it is not a trajectory of this scene");
+  }
+  for (std::int32_t c = 0; c < count; ++c) {
+    std::int32_t type = -1;
+    if (std::fseek(file, static_cast<long>(at + c * record_bytes), SEEK_SET) != 0 ||
+        !read_int(file, type)) {
+      cut_short("its collisions");
+    }
+    if (type < 0 || type > (dim_ == 3 ? 3 : 2)) {  // 3, particle-sphere, is 3D only
+      fail(path_ + ": record " + record + " has a collision of unknown type " +
+           std::to_string(type) +
+           (dim_ == 3 ? " (expected 0, 1, 2 or 3)" : " (expected 0, 1 or 2)"));
+    }
+  }
+  at += count * record_bytes;
+  if (layout_ == TrajectoryLayout::kCollisionsAndPolynomials) {
+    std::int32_t polynomials = 0;
+    if (std::fseek(file, static_cast<long>(at), SEEK_SET) != 0 || !read_int(file, polynomials)) {
+      cut_short("its polynomial count");
     }
     at += 4;
-    if (count < 0 || count > (bytes - at) / record_bytes) {
-      fail(path + ": record " + record + " claims " + std::to_string(count) +
-           " collisions, more than the file holds; it is not a trajectory of this scene");
+    if (polynomials < 0 || polynomials > (bytes - at) / 4) {
+      fail(path_ + ": record " + record + " claims " + std::to_string(polynomials) +
+           " polynomials, more than the file holds");
     }
-    for (std::int32_t c = 0; c < count; ++c) {
-      std::int32_t type = -1;
-      if (!read_int(file, type)) cut_short("its collisions");
-      if (type < 0 || type > (dim == 3 ? 3 : 2)) {  // 3, particle-sphere, is 3D only
-        fail(path + ": record " + record + " has a collision of unknown type " +
-             std::to_string(type) +
-             (dim == 3 ? " (expected 0, 1, 2 or 3)" : " (expected 0, 1 or 2)"));
-      }
-      std::fseek(file, static_cast<long>(record_bytes - 4), SEEK_CUR);
-    }
-    at += count * record_bytes;
-    if (layout == TrajectoryLayout::kCollisionsAndPolynomials) {
-      std::int32_t polynomials = 0;
-      if (std::fseek(file, static_cast<long>(at), SEEK_SET) != 0 || !read_int(file, polynomials)) {
-        cut_short("its polynomial count");
+    for (std::int32_t p = 0; p < polynomials; ++p) {
+      std::int32_t length = 0;
+      if (std::fseek(file, static_cast<long>(at), SEEK_SET) != 0 || !read_int(file, length)) {
+        cut_short("its polynomials");
       }
       at += 4;
-      if (polynomials < 0 || polynomials > (bytes - at) / 4) {
-        fail(path + ": record " + record + " claims " + std::to_string(polynomials) +
-             " polynomials, more than the file holds");
+      if (length < 0 || length > (bytes - at) / 8) {
+        fail(path_ + ": record " + record + " has a polynomial of length " +
+             std::to_string(length) + ", more than the file holds");
       }
-      for (std::int32_t p = 0; p < polynomials; ++p) {
-        std::int32_t length = 0;
-        if (!read_int(file, length)) cut_short("its polynomials");
-        at += 4;
-        if (length < 0 || length > (bytes - at) / 8) {
-          fail(path + ": record " + record + " has a polynomial of length " +
-               std::to_string(length) + ", more than the file holds");
-        }
-        at += 8 * static_cast<std::int64_t>(length);
-        std::fseek(file, static_cast<long>(at), SEEK_SET);
-      }
+      at += 8 * static_cast<std::int64_t>(length);
     }
-    if (at > bytes) cut_short("its collisions or polynomials");
   }
-  const auto records = static_cast<std::int64_t>(reader.offsets_.size());
-  if (layout == TrajectoryLayout::kCollisionsAndPolynomials) {
+  if (at > bytes) cut_short("its collisions or polynomials");
+  return at;
+}
+
+void TrajectoryReader::check_records() {
+  std::int64_t records = 0;
+  for (std::int64_t at = 0; at < file_.size; ++records) at = record_end(at, records);
+  num_records_ = records;
+  if (layout_ == TrajectoryLayout::kCollisionsAndPolynomials) {
     if (records % 2 == 0) {
-      fail(path + " holds " + std::to_string(records) +
-           " records, but a continuous-time or hybrid trajectory holds an odd number (the "
-           "initial state, then a sync record and an end-of-step record per step)");
+      throw Error(ErrorKind::kBadInput,
+                  path_ + " holds " + std::to_string(records) +
+                      " records, but a continuous-time or hybrid trajectory holds an odd number "
+                      "(the initial state, then a sync record and an end-of-step record per "
+                      "step)");
     }
-    reader.num_frames_ = (records + 1) / 2;
+    num_frames_ = (records + 1) / 2;
   } else {
-    reader.num_frames_ = records;
+    num_frames_ = records;
   }
-  return reader;
+}
+
+std::int64_t TrajectoryReader::record_offset(std::int64_t index) {
+  if (layout_ == TrajectoryLayout::kFrames) return index * trajectory_frame_bytes(dofs_);
+  if (index < cursor_index_) {
+    cursor_index_ = 0;
+    cursor_offset_ = 0;
+  }
+  for (; cursor_index_ < index; ++cursor_index_) {
+    cursor_offset_ = record_end(cursor_offset_, cursor_index_);
+  }
+  return cursor_offset_;
 }
 
 void TrajectoryReader::read_record_at(std::int64_t index, TrajectoryRecord& record) {
@@ -307,22 +333,22 @@ void TrajectoryReader::read_record_at(std::int64_t index, TrajectoryRecord& reco
   record.v.resize(dofs_);
   record.collisions.clear();
   record.polynomials.clear();
-  std::FILE* file = file_.get();
+  std::FILE* file = file_.stream.get();
   const auto count = static_cast<std::size_t>(dofs_);
   const auto fail = [&]() {
     throw Error(ErrorKind::kBadInput,
                 "cannot read record " + std::to_string(index) + " of " + path_);
   };
-  const std::int64_t offset = layout_ == TrajectoryLayout::kFrames
-                                  ? index * trajectory_frame_bytes(dofs_)
-                                  : offsets_.at(static_cast<std::size_t>(index));
+  if (index < 0 || index >= num_records_) fail();
+  const std::int64_t offset = record_offset(index);
   if (std::fseek(file, static_cast<long>(offset), SEEK_SET) != 0 ||
       !read_doubles(file, record.q.data(), count) || !read_doubles(file, record.v.data(), count)) {
     fail();
   }
   if (layout_ == TrajectoryLayout::kFrames) return;
+  // The counts were checked against the file's size when it was opened.
   std::int32_t collisions = 0;
-  if (!read_int(file, collisions)) fail();
+  if (!read_int(file, collisions) || collisions < 0) fail();
   for (std::int32_t c = 0; c < collisions; ++c) {
     CollisionRecord r;
     std::int32_t type = 0;
@@ -337,10 +363,10 @@ void TrajectoryReader::read_record_at(std::int64_t index, TrajectoryRecord& reco
   }
   if (layout_ != TrajectoryLayout::kCollisionsAndPolynomials) return;
   std::int32_t polynomials = 0;
-  if (!read_int(file, polynomials)) fail();
+  if (!read_int(file, polynomials) || polynomials < 0) fail();
   for (std::int32_t p = 0; p < polynomials; ++p) {
     std::int32_t length = 0;
-    if (!read_int(file, length)) fail();
+    if (!read_int(file, length) || length < 0) fail();
     std::vector<double> c(static_cast<std::size_t>(length));
     if (!read_doubles(file, c.data(), c.size())) fail();
     record.polynomials.push_back(Polynomial::as_written(std::move(c)));
@@ -362,18 +388,17 @@ void TrajectoryReader::read_sync_record(std::int64_t k, TrajectoryRecord& record
 void TrajectoryReader::read_frame(std::int64_t k, Vector& q, Vector& v) {
   q.resize(dofs_);
   v.resize(dofs_);
-  const std::int64_t offset =
-      layout_ == TrajectoryLayout::kFrames
-          ? k * trajectory_frame_bytes(dofs_)
-          : offsets_.at(static_cast<std::size_t>(has_sync_records() ? 2 * k : k));
   const auto count = static_cast<std::size_t>(dofs_);
-  if (std::fseek(file_.get(), static_cast<long>(offset), SEEK_SET) != 0 ||
-      std::fread(q.data(), sizeof(double), count, file_.get()) != count ||
-      std::fread(v.data(), sizeof(double), count, file_.get()) != count) {
+  const auto fail = [&]() {
     throw Error(ErrorKind::kBadInput, "cannot read frame " + std::to_string(k) + " of " + path_);
+  };
+  if (k < 0 || k >= num_frames_) fail();
+  const std::int64_t offset = record_offset(has_sync_records() ? 2 * k : k);
+  std::FILE* file = file_.stream.get();
+  if (std::fseek(file, static_cast<long>(offset), SEEK_SET) != 0 ||
+      !read_doubles(file, q.data(), count) || !read_doubles(file, v.data(), count)) {
+    fail();
   }
-  to_little_endian(q.data(), count);
-  to_little_endian(v.data(), count);
 }
 
 }  // namespace fosssim

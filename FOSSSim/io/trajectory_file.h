@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "core/scene_model.h"
 #include "core/state.h"
+#include "io/input_files.h"
 #include "io/output_file.h"
 
 namespace fosssim {
@@ -90,13 +91,19 @@ class TrajectoryWriter {
 class TrajectoryReader {
  public:
   /// Opens a trajectory whose frames hold `dofs` positions and `dofs` velocities. Throws Error
-  /// (kBadInput) when the file is missing or its size is not a whole number of frames.
+  /// (kBadInput) when the file is missing, is not a regular file (a FIFO, a device: see
+  /// open_regular_file in io/input_files.h) or its size is not a whole number of frames.
   static TrajectoryReader open(const std::string& path, int dofs);
   /// Opens a trajectory of `layout` for particles in `dim` dimensions (dofs = dim·particles).
-  /// Records with collisions have no fixed size: the file is read through once to find them,
+  /// Records with collisions have no fixed size: the file is read through once to check them,
   /// and Error (kBadInput) names the record and what is wrong when the file ends inside a
   /// record, holds a negative or impossible count, or an unknown collision type.
   static TrajectoryReader open(const std::string& path, int dofs, int dim, TrajectoryLayout layout);
+  /// The same for a trajectory held in memory (fuzzers, tests); `name` stands for the file in
+  /// messages.
+  static TrajectoryReader from_bytes(std::string bytes, int dofs, const std::string& name,
+                                     int dim = 2,
+                                     TrajectoryLayout layout = TrajectoryLayout::kFrames);
 
   /// The number of end-of-step frames, the initial state included: steps + 1.
   std::int64_t num_frames() const { return num_frames_; }
@@ -114,20 +121,29 @@ class TrajectoryReader {
   void read_sync_record(std::int64_t k, TrajectoryRecord& record);
 
  private:
-  TrajectoryReader(std::string path, std::FILE* file, int dofs, std::int64_t frames);
+  TrajectoryReader(std::string path, RegularFile file, int dofs, int dim, TrajectoryLayout layout);
+  /// Checks the records of a layout with collisions and counts the frames.
+  void check_records();
+  /// The offset just past the record that starts at `at` (record number `index`), checking its
+  /// counts against the file's size; throws Error (kBadInput) naming the record otherwise.
+  std::int64_t record_end(std::int64_t at, std::int64_t index);
+  /// The offset of record `index` (0-based over all records) in a layout with collisions.
+  /// Records are found by walking from the last one read (from the start when going back), so
+  /// reading in order costs one step per record and memory does not grow with the file.
+  std::int64_t record_offset(std::int64_t index);
   /// Reads the record at position `index` in the file (0-based over all records).
   void read_record_at(std::int64_t index, TrajectoryRecord& record);
 
-  struct FileCloser {
-    void operator()(std::FILE* f) const { std::fclose(f); }
-  };
   std::string path_;
-  std::unique_ptr<std::FILE, FileCloser> file_;
+  std::shared_ptr<const std::string> bytes_;  ///< what file_ reads, for from_bytes
+  RegularFile file_;
   int dofs_ = 0;
   int dim_ = 2;
   std::int64_t num_frames_ = 0;
+  std::int64_t num_records_ = 0;
   TrajectoryLayout layout_ = TrajectoryLayout::kFrames;
-  std::vector<std::int64_t> offsets_;  // start of every record, for layouts with collisions
+  std::int64_t cursor_index_ = 0;   ///< a record whose offset is known: the last one found
+  std::int64_t cursor_offset_ = 0;  ///< its offset
 };
 
 /// Opens a trajectory of `model`'s scene in the layout of its collision method.

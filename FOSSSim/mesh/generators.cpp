@@ -2,11 +2,33 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <string>
+
+#include "core/error.h"
 
 namespace fosssim {
 
 namespace {
+
+/// Throws Error (kBadInput) when `vertices` (counted in 64 bits, saturating) is more than
+/// `max_vertices`; `what` describes the mesh asked for ("a tetbox of 2 × 3 × 4 cubes").
+void check_vertex_count(std::int64_t vertices, std::int64_t max_vertices, const std::string& what) {
+  if (vertices <= max_vertices) return;
+  const std::string count = vertices == std::numeric_limits<std::int64_t>::max()
+                                ? "more than " + std::to_string(vertices)
+                                : std::to_string(vertices);
+  throw Error(ErrorKind::kBadInput, what + " has " + count + " vertices, " +
+                                        over_limit(max_vertices, "particles", "--max-particles"));
+}
+
+/// "a × b × c", for messages.
+std::string sizes(std::initializer_list<int> counts) {
+  std::string out;
+  for (const int count : counts) out += (out.empty() ? "" : " × ") + std::to_string(count);
+  return out;
+}
 
 /// A lattice of (nx+1)(ny+1)(nz+1) points with spacing h, lowest corner at `origin`, and the
 /// Kuhn tets of the cubes `keep` accepts (by the cube's centre); unused points dropped.
@@ -73,7 +95,9 @@ std::string GeneratedMesh::pin_set_names() const {
 }
 
 GeneratedMesh generate_cloth(int nx, int ny, double width, double height, bool horizontal,
-                             bool bend) {
+                             bool bend, std::int64_t max_vertices) {
+  check_vertex_count(saturating_product({nx, ny}), max_vertices,
+                     "a cloth of " + sizes({nx, ny}) + " vertices");
   GeneratedMesh out;
   Mesh& mesh = out.mesh;
   const auto id = [nx](int r, int c) { return r * nx + c; };
@@ -109,7 +133,9 @@ GeneratedMesh generate_cloth(int nx, int ny, double width, double height, bool h
   return out;
 }
 
-GeneratedMesh generate_chain(int links, double length) {
+GeneratedMesh generate_chain(int links, double length, std::int64_t max_vertices) {
+  check_vertex_count(std::int64_t{links} + 1, max_vertices,
+                     "a chain of " + std::to_string(links) + " links");
   GeneratedMesh out;
   for (int k = 0; k <= links; ++k) out.mesh.vertices.emplace_back(length * k / links, 0.0, 0.0);
   for (int k = 0; k < links; ++k) out.mesh.segments.push_back({k, k + 1});
@@ -118,7 +144,9 @@ GeneratedMesh generate_chain(int links, double length) {
   return out;
 }
 
-GeneratedMesh generate_net(int nx, int ny, double width, double depth) {
+GeneratedMesh generate_net(int nx, int ny, double width, double depth, std::int64_t max_vertices) {
+  check_vertex_count(saturating_product({nx, ny}), max_vertices,
+                     "a net of " + sizes({nx, ny}) + " vertices");
   GeneratedMesh out;
   Mesh& mesh = out.mesh;
   const auto id = [nx](int r, int c) { return r * nx + c; };
@@ -140,7 +168,9 @@ GeneratedMesh generate_net(int nx, int ny, double width, double depth) {
 }
 
 GeneratedMesh generate_skirt(int segments, int rings, double top_radius, double bottom_radius,
-                             double height, bool bend) {
+                             double height, bool bend, std::int64_t max_vertices) {
+  check_vertex_count(saturating_product({segments, rings}), max_vertices,
+                     "a skirt of " + sizes({rings, segments}) + " vertices (rings × segments)");
   GeneratedMesh out;
   Mesh& mesh = out.mesh;
   const auto id = [segments](int ring, int k) { return ring * segments + (k % segments); };
@@ -172,8 +202,11 @@ GeneratedMesh generate_skirt(int segments, int rings, double top_radius, double 
   return out;
 }
 
-GeneratedMesh generate_tet_box(int nx, int ny, int nz, double size_x, double size_y,
-                               double size_z) {
+GeneratedMesh generate_tet_box(int nx, int ny, int nz, double size_x, double size_y, double size_z,
+                               std::int64_t max_vertices) {
+  check_vertex_count(
+      saturating_product({nx + std::int64_t{1}, ny + std::int64_t{1}, nz + std::int64_t{1}}),
+      max_vertices, "a tetbox of " + sizes({nx, ny, nz}) + " cubes");
   const Eigen::Vector3d size(size_x, size_y, size_z);
   GeneratedMesh out;
   out.mesh = kuhn_lattice(nx, ny, nz, size.cwiseQuotient(Eigen::Vector3d(nx, ny, nz)), -0.5 * size,
@@ -186,7 +219,11 @@ GeneratedMesh generate_tet_box(int nx, int ny, int nz, double size_x, double siz
   return out;
 }
 
-GeneratedMesh generate_tet_ball(int cells, double radius) {
+GeneratedMesh generate_tet_ball(int cells, double radius, std::int64_t max_vertices) {
+  // The lattice of (cells + 1)³ points is indexed whole, so it is what is counted.
+  const std::int64_t points = cells + std::int64_t{1};
+  check_vertex_count(saturating_product({points, points, points}), max_vertices,
+                     "a tetball of " + std::to_string(cells) + " cells across");
   const double spacing = 2.0 * radius / cells;
   GeneratedMesh out;
   out.mesh = kuhn_lattice(

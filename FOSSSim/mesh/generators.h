@@ -5,9 +5,14 @@
 #include <utility>
 #include <vector>
 
+#include "core/limits.h"
 #include "mesh/mesh.h"
 
 namespace fosssim {
+
+// Every generator refuses sizes that would make more than `max_vertices` vertices by throwing
+// Error (kBadInput) before it allocates anything ("a tetbox of 2000 × 2000 × 2000 cubes has
+// 8012006001 vertices, more than the limit of ..."); counts are computed in 64 bits.
 
 /// A generated mesh with named sets of vertices to pin ("corners", "top-row", ...). Every
 /// generator offers "none".
@@ -31,16 +36,18 @@ struct GeneratedMesh {
 /// row 0, the default), "top-row" (all of row 0), "left-column" (all of column 0: a flag on
 /// its pole), "none".
 GeneratedMesh generate_cloth(int nx, int ny, double width, double height, bool horizontal,
-                             bool bend);
+                             bool bend, std::int64_t max_vertices = Limits{}.max_particles);
 
 /// A chain of `links` ≥ 1 springs (links + 1 vertices) along +x from the origin, total length
 /// `length`, as segments. Pin sets: "first" (vertex 0, the default), "ends", "none".
-GeneratedMesh generate_chain(int links, double length);
+GeneratedMesh generate_chain(int links, double length,
+                             std::int64_t max_vertices = Limits{}.max_particles);
 
 /// A net: an nx × ny grid (≥ 2 each) lying flat at y = 0, centred on the origin, width along x
 /// and depth along z, with springs only along the grid lines (segments, no faces). Pin sets:
 /// "corners" (the default), "border", "none".
-GeneratedMesh generate_net(int nx, int ny, double width, double depth);
+GeneratedMesh generate_net(int nx, int ny, double width, double depth,
+                           std::int64_t max_vertices = Limits{}.max_particles);
 
 /// A skirt: `rings` ≥ 2 circles of `segments` ≥ 3 vertices around the y axis, the top ring of
 /// radius top_radius at y = 0, the bottom one of radius bottom_radius at y = -height (≥ 0; 0
@@ -48,17 +55,20 @@ GeneratedMesh generate_net(int nx, int ny, double width, double depth);
 /// between rings (wrapping around); with bend, segments join every vertex to the one two steps
 /// along its ring and two rings down. Pin sets: "top" (the top ring, the default), "none".
 GeneratedMesh generate_skirt(int segments, int rings, double top_radius, double bottom_radius,
-                             double height, bool bend);
+                             double height, bool bend,
+                             std::int64_t max_vertices = Limits{}.max_particles);
 
 /// A box of nx × ny × nz cubes (≥ 1 each) spanning size_x × size_y × size_z, centred on the
 /// origin, each cube split into six positively oriented tets around its main diagonal (Kuhn's
 /// subdivision, which is conforming across cubes). Pin sets: "none" (the default), "bottom"
 /// (the lowest layer, y minimal), "left" (x minimal: a cantilever).
-GeneratedMesh generate_tet_box(int nx, int ny, int nz, double size_x, double size_y, double size_z);
+GeneratedMesh generate_tet_box(int nx, int ny, int nz, double size_x, double size_y, double size_z,
+                               std::int64_t max_vertices = Limits{}.max_particles);
 
 /// A ball of radius `radius` centred on the origin: the cubes of a grid with `cells` ≥ 2
 /// cubes along the diameter whose centres lie inside the sphere, each split as in
 /// generate_tet_box. Pin sets: "none" (the default), "bottom" (the lowest layer of vertices).
-GeneratedMesh generate_tet_ball(int cells, double radius);
+GeneratedMesh generate_tet_ball(int cells, double radius,
+                                std::int64_t max_vertices = Limits{}.max_particles);
 
 }  // namespace fosssim

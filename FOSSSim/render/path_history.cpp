@@ -6,7 +6,9 @@ namespace fosssim {
 
 std::size_t trail_capacity(double duration, double dt) {
   if (!(duration > 0.0) || !(dt > 0.0)) return 0;
-  return static_cast<std::size_t>(std::ceil(duration / dt));
+  const double points = std::ceil(duration / dt);  // may be infinite
+  return points < static_cast<double>(kMaxTrailPoints) ? static_cast<std::size_t>(points)
+                                                       : kMaxTrailPoints;
 }
 
 PathHistory::PathHistory(const Scene& scene) {

@@ -19,12 +19,12 @@ struct Point3 {
 struct Trail {
   int particle = 0;
   Color color;
-  std::size_t capacity = 0;  ///< ceil(path duration / dt) positions
+  std::size_t capacity = 0;  ///< trail_capacity(path duration, dt) positions
   std::deque<Point3> points;
 };
 
 /// Records, for every <particlepath>, the last ceil(duration/dt) positions of its particle
-/// (docs/scene-format.md), one per recorded state.
+/// (docs/scene-format.md), one per recorded state, up to kMaxTrailPoints.
 class PathHistory {
  public:
   /// One trail per path of the scene, sized with the scene's current time step.
@@ -42,7 +42,12 @@ class PathHistory {
   std::vector<Trail> trails_;
 };
 
-/// ceil(duration / dt) in double precision, 0 for a non-positive duration.
+/// The most positions a trail keeps, whatever its duration: a million points already draw
+/// the same picture as more, and a run of a billion steps must not keep them all.
+constexpr std::size_t kMaxTrailPoints = 1'000'000;
+
+/// ceil(duration / dt) in double precision, 0 for a non-positive duration, and at most
+/// kMaxTrailPoints (a ratio beyond any integer, as from duration 1e300 at dt 1e-300, included).
 std::size_t trail_capacity(double duration, double dt);
 
 }  // namespace fosssim

@@ -54,8 +54,8 @@ Overlay GradingStepper::overlay() const {
                 static_cast<long long>(grader_.file_state().step),
                 static_cast<long long>(report.steps), overlay.marks.size());
   overlay.status.push_back(line);
-  if (!report.per_step.empty()) {
-    const StepResidual& last = report.per_step.back();
+  if (report.last_step) {
+    const StepResidual& last = *report.last_step;
     std::snprintf(line, sizeof line, "step residual: position %.2e, velocity %.2e",
                   last.max_position, last.max_velocity);
     overlay.status.push_back(line);

@@ -9,6 +9,7 @@
 
 #include "child_process.h"
 #include "core/error.h"
+#include "core/limits.h"
 #include "core/scene_model.h"
 #include "core/text.h"
 #include "io/trajectory_file.h"
@@ -196,11 +197,11 @@ std::int64_t expected_trajectory_bytes(const SceneModel& model) {
     case TrajectoryLayout::kFrames:
       break;
     case TrajectoryLayout::kCollisions:
-      return frames * (frame + 4);
+      return saturating_product({frames, frame + 4});
     case TrajectoryLayout::kCollisionsAndPolynomials:  // sync and end record per step
-      return (2 * frames - 1) * (frame + 8);
+      return saturating_product({saturating_product({2, frames}) - 1, frame + 8});
   }
-  return frames * frame;
+  return saturating_product({frames, frame});
 }
 
 bool trajectory_size_is_exact(const SceneModel& model) {

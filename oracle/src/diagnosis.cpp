@@ -33,19 +33,6 @@ std::string diagnosis_text(const SceneResult& result) {
   return out.str();
 }
 
-std::string residual_table_tsv(const GradeReport& report, double dt) {
-  std::ostringstream out;
-  out << "step\ttime\tmax_position\tposition_particle\tmax_velocity\tvelocity_particle"
-         "\tsum_position\tsum_velocity\n";
-  for (const StepResidual& r : report.per_step) {
-    out << r.step << '\t' << to_text(static_cast<double>(r.step) * dt) << '\t'
-        << to_text(r.max_position) << '\t' << r.max_position_particle << '\t'
-        << to_text(r.max_velocity) << '\t' << r.max_velocity_particle << '\t'
-        << to_text(r.sum_position) << '\t' << to_text(r.sum_velocity) << '\n';
-  }
-  return out.str();
-}
-
 std::string diagnosis_stem(const std::string& folder, const std::string& scene_name) {
   std::string stem = scene_name;
   if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".xml") == 0)
@@ -54,17 +41,17 @@ std::string diagnosis_stem(const std::string& folder, const std::string& scene_n
 }
 
 void write_diagnosis(const std::string& folder, const SceneResult& result,
-                     const GradeReport* report) {
+                     const GradeReport* report, const ResidualHistory& history) {
   const std::string stem = diagnosis_stem(folder, result.name);
   write_file_atomically(stem + ".diagnosis.txt", diagnosis_text(result));
   if (report == nullptr) return;
-  write_file_atomically(stem + ".residuals.tsv", residual_table_tsv(*report, result.dt));
+  history.write_table(stem + ".residuals.tsv");
   ResidualPlotOptions plot;
   plot.title = result.name + ": largest residual per step (" + result.integrator + ")";
   plot.dt = result.dt;
   plot.limit = report->criteria.maximum_limit;
   if (report->first_divergence) plot.marked_step = report->first_divergence->step;
-  write_line_plot(residual_plot(report->per_step, plot), stem + ".residuals.svg");
+  write_line_plot(residual_plot(history.columns(), plot), stem + ".residuals.svg");
 }
 
 }  // namespace fosssim

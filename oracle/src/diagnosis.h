@@ -6,6 +6,7 @@
 #include <string>
 
 #include "grading/grader.h"
+#include "residual_history.h"
 #include "scene_result.h"
 
 namespace fosssim {
@@ -14,15 +15,12 @@ namespace fosssim {
 /// state, the reference step's result and the file's frame), and the candidate's standard error.
 std::string diagnosis_text(const SceneResult& result);
 
-/// The per-step residuals as tab-separated columns: step, time, max position residual and its
-/// particle, max velocity residual and its particle, sums over particles.
-std::string residual_table_tsv(const GradeReport& report, double dt);
-
 /// Writes the diagnosis files of a failing scene under `folder`, named after the scene (its
 /// name without ".xml"): NAME.diagnosis.txt always, and when the trajectory was graded
-/// (`report` not null) NAME.residuals.tsv and NAME.residuals.svg. Throws Error (kCannotWrite).
+/// (`report` not null) NAME.residuals.tsv (the table of every step of `history`, which must keep
+/// it) and NAME.residuals.svg. Throws Error (kCannotWrite).
 void write_diagnosis(const std::string& folder, const SceneResult& result,
-                     const GradeReport* report);
+                     const GradeReport* report, const ResidualHistory& history);
 
 /// The path without extension that write_diagnosis uses for a scene: "<folder>/assets/t1m1/x".
 std::string diagnosis_stem(const std::string& folder, const std::string& scene_name);

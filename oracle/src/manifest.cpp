@@ -7,6 +7,7 @@
 
 #include "atomic_file.h"
 #include "batch.h"
+#include "core/limits.h"
 #include "core/text.h"
 #include "diagnosis.h"
 #include "io/scene_loader.h"
@@ -34,6 +35,7 @@ ManifestEntry compute_entry(const SceneEntry& scene, const CandidateRunOptions& 
   std::optional<Scene> loaded;
   try {
     loaded.emplace(load_scene_file(scene.path));
+    check_step_count(loaded->model, Limits{});
   } catch (const Error&) {
     entry.status = "scene-error";
     return entry;

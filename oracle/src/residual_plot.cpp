@@ -9,31 +9,6 @@ namespace fosssim {
 
 namespace {
 
-/// One plotted column: the time and the largest residual of the steps it stands for.
-struct Column {
-  double time = 0.0;
-  double position = 0.0;
-  double velocity = 0.0;
-};
-
-std::vector<Column> reduce(const std::vector<StepResidual>& per_step, double dt, int max_points) {
-  const std::size_t n = per_step.size();
-  const std::size_t columns = std::min<std::size_t>(n, std::max(max_points, 2));
-  std::vector<Column> out(columns);
-  for (std::size_t c = 0; c < columns; ++c) {
-    const std::size_t begin = c * n / columns, end = (c + 1) * n / columns;
-    Column& column = out[c];
-    column.time = static_cast<double>(per_step[end - 1].step) * dt;
-    for (std::size_t i = begin; i < end; ++i) {
-      if (i == begin || replaces_maximum(per_step[i].max_position, column.position))
-        column.position = per_step[i].max_position;
-      if (i == begin || replaces_maximum(per_step[i].max_velocity, column.velocity))
-        column.velocity = per_step[i].max_velocity;
-    }
-  }
-  return out;
-}
-
 std::string short_number(double value) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.4g", value);
@@ -42,9 +17,10 @@ std::string short_number(double value) {
 
 /// The decades shown: from below the smallest positive residual (or the limit) to above the
 /// largest finite one, at least two decades.
-std::pair<int, int> decade_range(const std::vector<Column>& columns, double limit) {
+std::pair<int, int> decade_range(const std::vector<ResidualColumns::Column>& columns,
+                                 double limit) {
   double smallest = limit, largest = limit;
-  for (const Column& c : columns) {
+  for (const ResidualColumns::Column& c : columns) {
     for (double v : {c.position, c.velocity}) {
       if (std::isfinite(v) && v > 0.0) {
         smallest = std::min(smallest, v);
@@ -60,12 +36,42 @@ std::pair<int, int> decade_range(const std::vector<Column>& columns, double limi
 
 }  // namespace
 
+ResidualColumns::ResidualColumns(std::int64_t steps, int max_points) {
+  max_columns_ = std::min<std::int64_t>(steps, std::max(max_points, 2));
+  if (max_columns_ > 0) {
+    base_size_ = steps / max_columns_;
+    larger_ = steps % max_columns_;
+  }
+}
+
+void ResidualColumns::add(const StepResidual& residual) {
+  const auto column_size = [this](std::int64_t c) { return base_size_ + (c < larger_ ? 1 : 0); };
+  const auto count = static_cast<std::int64_t>(columns_.size());
+  if (columns_.empty() || (in_last_ >= column_size(count - 1) && count < max_columns_)) {
+    columns_.push_back({residual.step, residual.max_position, residual.max_velocity});
+    in_last_ = 1;
+    return;
+  }
+  Column& column = columns_.back();  // more steps than announced join the last column
+  column.last_step = residual.step;
+  if (replaces_maximum(residual.max_position, column.position))
+    column.position = residual.max_position;
+  if (replaces_maximum(residual.max_velocity, column.velocity))
+    column.velocity = residual.max_velocity;
+  ++in_last_;
+}
+
 LinePlot residual_plot(const std::vector<StepResidual>& per_step,
                        const ResidualPlotOptions& options) {
-  const std::vector<Column> columns =
-      per_step.empty() ? std::vector<Column>{} : reduce(per_step, options.dt, options.max_points);
+  ResidualColumns columns(static_cast<std::int64_t>(per_step.size()), options.max_points);
+  for (const StepResidual& residual : per_step) columns.add(residual);
+  return residual_plot(columns, options);
+}
+
+LinePlot residual_plot(const ResidualColumns& reduced, const ResidualPlotOptions& options) {
+  const std::vector<ResidualColumns::Column>& columns = reduced.columns();
   bool has_zero = false, has_non_finite = false;
-  for (const Column& c : columns) {
+  for (const ResidualColumns::Column& c : columns) {
     for (double v : {c.position, c.velocity}) {
       has_zero = has_zero || v == 0.0;
       has_non_finite = has_non_finite || !std::isfinite(v);
@@ -76,9 +82,9 @@ LinePlot residual_plot(const std::vector<StepResidual>& per_step,
   plot.height = 460;
   plot.title = options.title;
   plot.x.title = "simulated time (s)";
-  plot.x.high = per_step.empty()
+  plot.x.high = columns.empty()
                     ? options.dt
-                    : std::max(static_cast<double>(per_step.back().step) * options.dt, 1e-300);
+                    : std::max(static_cast<double>(columns.back().last_step) * options.dt, 1e-300);
   const auto [low, high] = decade_range(columns, options.limit);
   plot.y.title = "largest residual of the step";
   plot.y.scale = AxisScale::kLog10;
@@ -104,9 +110,10 @@ LinePlot residual_plot(const std::vector<StepResidual>& per_step,
   };
   PlotCurve position{"position", {0.122, 0.467, 0.706}, 1.5, {}};
   PlotCurve velocity{"velocity", {1.0, 0.498, 0.055}, 1.5, {}};
-  for (const Column& c : columns) {
-    position.points.push_back({c.time, top_if_nan(c.position)});
-    velocity.points.push_back({c.time, top_if_nan(c.velocity)});
+  for (const ResidualColumns::Column& c : columns) {
+    const double time = static_cast<double>(c.last_step) * options.dt;
+    position.points.push_back({time, top_if_nan(c.position)});
+    velocity.points.push_back({time, top_if_nan(c.velocity)});
   }
   plot.curves = {std::move(position), std::move(velocity)};
   if (has_zero) plot.note = "Exact zeros are drawn on the bottom line.";

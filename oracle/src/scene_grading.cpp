@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/limits.h"
 #include "core/text.h"
 #include "diagnosis.h"
 #include "grading/step_grader.h"
@@ -21,7 +22,8 @@ std::string vector_text(const Vector& x, int begin, int dim) {
   return text + ")";
 }
 
-void take_grade(const GradeReport& report, int dim, SceneResult& result) {
+void take_grade(const GradeReport& report, const ResidualHistory& history, int dim,
+                SceneResult& result) {
   result.residuals = Residuals{report.accumulated_position, report.accumulated_velocity,
                                report.max_position, report.max_velocity};
   if (const auto& d = report.first_divergence) {
@@ -31,7 +33,7 @@ void take_grade(const GradeReport& report, int dim, SceneResult& result) {
   result.verdict = report.passed() ? Verdict::kPassed : Verdict::kFailed;
   if (!report.passed()) {
     result.reason = failure_reason(report);
-    result.details = failure_details(report, dim);
+    result.details = failure_details(report, history, dim);
   }
 }
 
@@ -52,16 +54,17 @@ std::optional<std::string> non_finite_in_frame(std::int64_t k, const Vector& q, 
 }
 
 /// Replays the file with `grader`, reading every frame once and checking it as it is read, so
-/// that the reference integrator never starts from a non-finite frame. Returns where the file
-/// first holds a non-finite value, if it does.
+/// that the reference integrator never starts from a non-finite frame, and hands each step's
+/// residuals to `history`. Returns where the file first holds a non-finite value, if it does.
 std::optional<std::string> replay_checking_frames(StepGrader& grader, TrajectoryReader& file,
-                                                  int dim) {
+                                                  int dim, ResidualHistory& history) {
   const auto check_last_frame = [&grader, dim] {
     const State& frame = grader.file_state();
     return non_finite_in_frame(frame.step, frame.q, frame.v, dim);
   };
   if (auto bad = check_last_frame()) return bad;
   while (grader.grade_next_step()) {
+    history.add(*grader.report().last_step);
     if (auto bad = check_last_frame()) return bad;
   }
   // A reference failure stops the replay early; a non-finite value after it is still the
@@ -69,10 +72,10 @@ std::optional<std::string> replay_checking_frames(StepGrader& grader, Trajectory
   return find_non_finite(file, dim, grader.file_state().step + 1);
 }
 
-/// Grades the checked trajectory of a run; fills verdict, residuals and explanation. Returns the
-/// report when the trajectory could be graded.
+/// Grades the checked trajectory of a run, each step's residuals into `history`; fills verdict,
+/// residuals and explanation. Returns the report when the trajectory could be graded.
 std::optional<GradeReport> grade_file(const Scene& scene, const std::string& path,
-                                      SceneResult& result) {
+                                      ResidualHistory& history, SceneResult& result) {
   const int dim = scene.model.dim;
   std::optional<TrajectoryReader> file;
   try {
@@ -89,7 +92,8 @@ std::optional<GradeReport> grade_file(const Scene& scene, const std::string& pat
   } catch (const Error& error) {
     cannot_grade = error.what();
   }
-  auto bad = grader ? replay_checking_frames(*grader, *file, dim) : find_non_finite(*file, dim);
+  auto bad =
+      grader ? replay_checking_frames(*grader, *file, dim, history) : find_non_finite(*file, dim);
   if (bad) {
     result.verdict = Verdict::kGarbage;
     result.reason = "the trajectory holds a non-finite value: " + *bad;
@@ -100,7 +104,7 @@ std::optional<GradeReport> grade_file(const Scene& scene, const std::string& pat
     result.reason = cannot_grade;
     return std::nullopt;
   }
-  take_grade(grader->report(), dim, result);
+  take_grade(grader->report(), history, dim, result);
   return grader->report();
 }
 
@@ -140,31 +144,17 @@ std::string failure_reason(const GradeReport& report) {
   return reason;
 }
 
-std::string failure_details(const GradeReport& report, int dim) {
+std::string failure_details(const GradeReport& report, const ResidualHistory& history, int dim) {
   std::ostringstream out;
   out << describe_failure(report, dim);
-  std::int64_t over = 0, first_over = 0, last_over = 0, worst_step = 0;
-  double worst = -1.0;
-  for (const StepResidual& r : report.per_step) {
-    const bool exceeds = !(below_limit(r.max_position, report.criteria.maximum_limit) &&
-                           below_limit(r.max_velocity, report.criteria.maximum_limit));
-    if (exceeds) {
-      if (over++ == 0) first_over = r.step;
-      last_over = r.step;
-    }
-    for (double m : {r.max_position, r.max_velocity}) {
-      if (replaces_maximum(m, worst)) {
-        worst = m;
-        worst_step = r.step;
-      }
-    }
+  if (history.steps_over_limit() > 0) {
+    out << "Steps at or above the maximum limit: " << history.steps_over_limit() << " of "
+        << report.steps << " (from step " << history.first_step_over_limit() << " to step "
+        << history.last_step_over_limit() << ")\n";
   }
-  if (over > 0) {
-    out << "Steps at or above the maximum limit: " << over << " of " << report.steps
-        << " (from step " << first_over << " to step " << last_over << ")\n";
-  }
-  if (worst_step > 0) {
-    out << "Largest single residual: " << to_text(worst) << " at step " << worst_step << "\n";
+  if (history.worst_step() > 0) {
+    out << "Largest single residual: " << to_text(history.worst_residual()) << " at step "
+        << history.worst_step() << "\n";
   }
   return out.str();
 }
@@ -176,6 +166,7 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
   std::optional<Scene> loaded;
   try {
     loaded.emplace(load_scene_file(entry.path));
+    check_step_count(loaded->model, Limits{});
   } catch (const Error& error) {
     result.verdict = Verdict::kSceneError;
     result.details = printable_text(error.what());
@@ -192,6 +183,8 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
   const std::int64_t expected_bytes = expected_trajectory_bytes(model);
 
   std::optional<GradeReport> report;
+  ResidualHistory history(result.steps, result.dt, GradingCriteria{}.maximum_limit,
+                          !options.diagnose_dir.empty());
   try {
     WorkFolder work(options.work_dir);
     if (options.keep_work) work.keep();
@@ -204,7 +197,7 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
       result.reason = run.reason;
     } else {
       const auto start = std::chrono::steady_clock::now();
-      report = grade_file(scene, run.trajectory_path, result);
+      report = grade_file(scene, run.trajectory_path, history, result);
       result.grade_seconds = seconds_since(start);
     }
     if (options.keep_work)
@@ -215,7 +208,7 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
   }
   if (!result.passed() && !options.diagnose_dir.empty()) {
     try {
-      write_diagnosis(options.diagnose_dir, result, report ? &*report : nullptr);
+      write_diagnosis(options.diagnose_dir, result, report ? &*report : nullptr, history);
     } catch (const Error& error) {
       result.details +=
           std::string("(could not write the diagnosis files: ") + error.what() + ")\n";

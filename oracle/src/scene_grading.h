@@ -9,6 +9,7 @@
 #include "candidate_run.h"
 #include "grading/grader.h"
 #include "io/trajectory_file.h"
+#include "residual_history.h"
 #include "scene_list.h"
 #include "scene_result.h"
 
@@ -35,7 +36,7 @@ std::optional<std::string> find_non_finite(TrajectoryReader& file, int dim,
 std::string failure_reason(const GradeReport& report);
 
 /// Several lines for a graded failure: describe_failure() of the grading library, then how many
-/// steps exceed the maximum limit and which step is worst.
-std::string failure_details(const GradeReport& report, int dim);
+/// steps exceed the maximum limit and which step is worst (from the steps' `history`).
+std::string failure_details(const GradeReport& report, const ResidualHistory& history, int dim);
 
 }  // namespace fosssim

@@ -124,6 +124,18 @@ TEST_F(CommandLine3D, GeneratesMeshesAndJsonScenesThatRun) {
   const ProgramResult bad_pins = run(kGenerate + " -o " + path("c2.obj") + " --json " +
                                      path("c2.json") + " --pins middle cloth");
   EXPECT_EQ(bad_pins.status, 2);
+  // Sizes over the limit are refused before anything is generated, and the limit can be set.
+  const ProgramResult huge =
+      run(kGenerate + " -o " + path("h.mesh") + " tetbox --nx 2000 --ny 2000 --nz 2000");
+  EXPECT_EQ(huge.status, 2);
+  EXPECT_NE(huge.output().find("FOSSSim-generate: error: a tetbox of 2000 × 2000 × 2000 cubes has "
+                               "8012006001 vertices, more than the limit of 1000000 particles"),
+            std::string::npos)
+      << huge.output();
+  EXPECT_FALSE(std::filesystem::exists(path("h.mesh")));
+  EXPECT_EQ(
+      run(kGenerate + " -o " + path("c3.obj") + " --max-particles 23 cloth --nx 6 --ny 4").status,
+      2);
 }
 
 TEST_F(CommandLine3D, SparseSolversGiveTheSameBitsFromRunToRunOnTwoThreads) {

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "core/step/simulation.h"
+#include "grading/step_grader.h"
 #include "io/scene_loader.h"
 #include "support/scratch_folder.h"
 #include "support/thrown.h"
@@ -75,7 +76,9 @@ TEST_F(Grader, PassesItsOwnTrajectoryWithZeroResidual) {
   auto report = grade();
   EXPECT_TRUE(report.passed());
   EXPECT_EQ(report.steps, 50);
-  EXPECT_EQ(report.per_step.size(), 50u);
+  EXPECT_EQ(report.steps_graded, 50);
+  ASSERT_TRUE(report.last_step.has_value());
+  EXPECT_EQ(report.last_step->step, 50);
   EXPECT_EQ(report.accumulated_position, 0.0);
   EXPECT_EQ(report.accumulated_velocity, 0.0);
   EXPECT_EQ(report.max_position, 0.0);
@@ -92,8 +95,17 @@ TEST_F(Grader, FailsAPositionPerturbedBy1e9AtExactlyThatStepAndParticle) {
   EXPECT_EQ(report.first_divergence->step, 17);
   EXPECT_EQ(report.first_divergence->particle, 2);
   EXPECT_NEAR(report.first_divergence->position_residual, 1e-9, 1e-15);
-  for (std::int64_t k = 1; k < 17; ++k) EXPECT_EQ(report.per_step[k - 1].max_position, 0.0) << k;
-  EXPECT_EQ(report.per_step[16].max_position_particle, 2);
+  // Step by step, each step's residuals are the report's last_step.
+  auto reader = TrajectoryReader::open(file_, scene_->model.num_dofs());
+  StepGrader grader = StepGrader::open(*scene_, reader);
+  for (std::int64_t k = 1; k <= 17; ++k) {
+    ASSERT_TRUE(grader.grade_next_step());
+    ASSERT_EQ(grader.report().last_step->step, k);
+    if (k < 17) {
+      EXPECT_EQ(grader.report().last_step->max_position, 0.0) << k;
+    }
+  }
+  EXPECT_EQ(grader.report().last_step->max_position_particle, 2);
 }
 
 TEST_F(Grader, FailsAVelocityPerturbationOnTheVelocityCriterion) {
@@ -161,6 +173,34 @@ TEST_F(Grader, ReportsAReferenceStepThatCannotBeTaken) {
       report.reference_failure->find("step 1: implicit Euler: Newton's method did not converge"),
       std::string::npos)
       << *report.reference_failure;
+}
+
+// A trajectory of zeros makes the springs' lengths zero: the reference step cannot be taken.
+// Its residuals are undefined, so every criterion fails, in the printed report and in the
+// residual file alike (they once said "Passed" four times over an overall failure).
+TEST_F(Grader, AStepTheReferenceCannotTakeFailsEveryCriterionInTheReportAndTheResidualFile) {
+  fs::resize_file(file_, 0);
+  fs::resize_file(file_, 51 * 2 * 6 * 8);  // 51 frames of zeros
+  const GradeReport report = grade();
+  ASSERT_TRUE(report.reference_failure.has_value()) << "the zeros were graded";
+  EXPECT_FALSE(report.passed());
+  for (const Criterion& c : criteria_of(report)) {
+    EXPECT_FALSE(c.passed) << c.name;
+    EXPECT_TRUE(std::isnan(c.value)) << c.name;
+  }
+  std::ostringstream printed;
+  print_grade_report(printed, report);
+  EXPECT_EQ(printed.str(),
+            "Accumulated Position Residual: nan   Failed.\n"
+            "Accumulated Velocity Residual: nan   Failed.\n"
+            "Maximum Position Residual: nan   Failed.\n"
+            "Maximum Velocity Residual: nan   Failed.\n"
+            "Overall success: Failed.\n");
+  const std::string residuals = folder_ / "residual.txt";
+  write_residual_file(residuals, report);
+  std::ifstream in(residuals);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}),
+            "0   nan\n0   nan\n0   nan\n0   nan\n");
 }
 
 TEST(GradeReport, CriteriaAreStrict) {

@@ -154,6 +154,54 @@ TEST_F(TrajectoryFile, CollisionRecordsAndPolynomialsRoundTripInTheCoursesLayout
   EXPECT_EQ(q, state(2).q);
 }
 
+// The reader keeps no table of record offsets (its memory must not grow with the file): it
+// walks from the last record it found, and from the start when asked for an earlier one. Any
+// order of reads gives the records written, whether the file is on disk or in memory.
+TEST_F(TrajectoryFile, RecordsWithCollisionsReadAlikeInAnyOrder) {
+  const auto layout = TrajectoryLayout::kCollisionsAndPolynomials;
+  constexpr int kSteps = 6;
+  {
+    TrajectoryWriter writer = TrajectoryWriter::open(path("c.bin"));
+    for (int r = 0; r <= 2 * kSteps; ++r) {
+      const State s = state(r);
+      std::vector<CollisionRecord> hits(
+          static_cast<std::size_t>(r % 3),
+          {CollisionKind::kParticleParticle, r, 0, Eigen::Vector2d(1, 0), 0.5});
+      std::vector<Polynomial> polys(static_cast<std::size_t>(r % 2),
+                                    Polynomial::as_written({1.0 * r, 2.0}));
+      writer.write_record(layout, s.q, s.v, hits, polys);
+    }
+    writer.commit();
+  }
+  TrajectoryReader file = TrajectoryReader::open(path("c.bin"), 4, 2, layout);
+  TrajectoryReader memory =
+      TrajectoryReader::from_bytes(testing::read_file(path("c.bin")), 4, "c.bin", 2, layout);
+  ASSERT_EQ(file.num_frames(), kSteps + 1);
+  ASSERT_EQ(memory.num_frames(), kSteps + 1);
+  const auto check = [&](TrajectoryReader& reader, std::int64_t k) {
+    TrajectoryRecord end;
+    reader.read_record(k, end);
+    EXPECT_EQ(end.q, state(2.0 * k).q) << k;
+    EXPECT_EQ(end.collisions.size(), static_cast<std::size_t>(2 * k % 3)) << k;
+    EXPECT_EQ(end.polynomials.size(), 0u) << k;
+    if (k == 0) return;
+    TrajectoryRecord sync;
+    reader.read_sync_record(k, sync);
+    EXPECT_EQ(sync.q, state(2.0 * k - 1).q) << k;
+    EXPECT_EQ(sync.collisions.size(), static_cast<std::size_t>((2 * k - 1) % 3)) << k;
+    ASSERT_EQ(sync.polynomials.size(), 1u) << k;
+    EXPECT_EQ(sync.polynomials[0].coefficients()[0], 2.0 * k - 1) << k;
+  };
+  for (TrajectoryReader* reader : {&file, &memory}) {
+    for (std::int64_t k = 0; k <= kSteps; ++k) check(*reader, k);
+    for (std::int64_t k = kSteps; k >= 0; --k) check(*reader, k);
+    for (std::int64_t k : {3, 0, 6, 1, 5}) check(*reader, k);
+    Vector q, v;
+    EXPECT_THROW(reader->read_frame(kSteps + 1, q, v), Error);
+    EXPECT_THROW(reader->read_frame(-1, q, v), Error);
+  }
+}
+
 TEST_F(TrajectoryFile, SphereRecordsAre3DOnlyAndUnknownTypesAreNamed) {
   // A particle-sphere record (type 3) reads back in 3D; in 2D, type 3 is no collision type.
   const CollisionRecord hit{CollisionKind::kParticleSphere, 1, 0, Eigen::Vector3d(0, -1, 0.5), 0.0};

@@ -107,6 +107,27 @@ TEST(ResidualPlot, LongRunsAreReducedKeepingTheLargestResidual) {
   EXPECT_TRUE(contains(plot.note, "NaN or infinite residuals are drawn on the top edge"));
 }
 
+// Grading streams its steps: columns are filled as steps come, sized from the steps announced,
+// and a grading that stops early plots the columns it reached.
+TEST(ResidualColumns, ReduceStepsAsTheyComeAndStopWhereTheGradingStopped) {
+  ResidualColumns columns(10, 4);  // columns of 3, 3, 2 and 2 steps
+  for (const StepResidual& r : ramp(5)) columns.add(r);
+  ASSERT_EQ(columns.columns().size(), 2u);
+  EXPECT_EQ(columns.columns()[0].last_step, 3);
+  EXPECT_EQ(columns.columns()[1].last_step, 5);
+  EXPECT_EQ(columns.columns()[1].velocity, 1e-12);
+  for (const StepResidual& r : ramp(10)) {
+    if (r.step > 5) columns.add(r);
+  }
+  ASSERT_EQ(columns.columns().size(), 4u);
+  EXPECT_EQ(columns.columns()[2].last_step, 8);
+  EXPECT_EQ(columns.columns()[3].last_step, 10);
+  EXPECT_EQ(columns.columns()[3].position, std::pow(10.0, -16.0 + 0.1 * 10));  // the larger
+  const LinePlot plot = residual_plot(columns, ramp_options());
+  EXPECT_EQ(plot.curves[0].points.size(), 4u);
+  EXPECT_DOUBLE_EQ(plot.x.high, 0.1);
+}
+
 TEST(ResidualPlot, IsDrawnWithTheLimitTheMarkerAndBothCurvesWhereTheyBelong) {
   const testing::TemporaryFolder folder;
   const LinePlot plot = residual_plot(ramp(100), ramp_options());

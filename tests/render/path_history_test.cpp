@@ -14,6 +14,15 @@ TEST(TrailCapacity, IsCeilOfDurationOverTimeStep) {
   EXPECT_EQ(trail_capacity(-1.0, 0.01), 0u);
 }
 
+// A ratio beyond any integer (or merely beyond what a picture needs) is capped, not converted
+// with undefined behaviour.
+TEST(TrailCapacity, IsCappedForHugeRatios) {
+  EXPECT_EQ(trail_capacity(1e300, 1e-300), kMaxTrailPoints);  // infinite in double
+  EXPECT_EQ(trail_capacity(5.0, 1e-320), kMaxTrailPoints);
+  EXPECT_EQ(trail_capacity(1e9, 1.0), kMaxTrailPoints);
+  EXPECT_EQ(trail_capacity(999999.0, 1.0), 999999u);
+}
+
 TEST(PathHistory, KeepsTheLastPositionsOfEachTracedParticle) {
   auto scene = load_scene_text(R"(<scene>
     <duration time="1"/><integrator type="explicit-euler" dt="0.1"/>

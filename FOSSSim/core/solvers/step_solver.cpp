@@ -84,6 +84,9 @@ void StepSolver::take_pattern(const SparseMatrix& A) {
 }
 
 std::optional<Vector> StepSolver::solve(const SparseMatrix& A, const Vector& b) {
+  // A scene with no free degree of freedom (no particles, or only fixed ones) has nothing to
+  // solve; Eigen's factorizations and norms assert on 0×0 matrices in Debug builds.
+  if (A.rows() == 0) return Vector(0);
   ++statistics_.solves;
   if (!same_pattern(A)) take_pattern(A);
   if (suitesparse_) return solve_suitesparse(A, b);
