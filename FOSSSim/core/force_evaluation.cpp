@@ -2,6 +2,18 @@
 
 namespace fosssim {
 
+Vector gradient_of(const Force& force, const Vector& q, const Vector& v, const Vector& mass) {
+  Vector g = Vector::Zero(q.size());
+  force.add_gradient({q, v, mass}, g);
+  return g;
+}
+
+double energy_of(const Force& force, const Vector& q, const Vector& v, const Vector& mass) {
+  double energy = 0.0;
+  force.add_energy({q, v, mass}, energy);
+  return energy;
+}
+
 Vector compute_gradient(const ForceSet& forces, const Vector& q, const Vector& v) {
   Vector gradient = Vector::Zero(q.size());
   const ForceInput in{q, v, forces.mass()};

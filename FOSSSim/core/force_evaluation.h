@@ -16,6 +16,12 @@ Vector compute_force(const ForceSet& forces, const Vector& q, const Vector& v);
 /// Total potential energy U(q) of the conservative parts of the forces.
 double compute_potential_energy(const ForceSet& forces, const Vector& q, const Vector& v);
 
+/// One force's gradient of energy at (q, v) with per-coordinate masses `mass`.
+Vector gradient_of(const Force& force, const Vector& q, const Vector& v, const Vector& mass);
+
+/// One force's energy at (q, v) with per-coordinate masses `mass`.
+double energy_of(const Force& force, const Vector& q, const Vector& v, const Vector& mass);
+
 /// T = ½ Σ m_p |v_p|².
 double compute_kinetic_energy(const SceneModel& model, const Vector& v);
 

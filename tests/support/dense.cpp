@@ -18,18 +18,6 @@ Eigen::MatrixXd dense_pair_pattern(int n, int dim, int i, int j, const Eigen::Ma
   return out;
 }
 
-Vector gradient_of(const Force& force, const Vector& q, const Vector& v, const Vector& mass) {
-  Vector g = Vector::Zero(q.size());
-  force.add_gradient({q, v, mass}, g);
-  return g;
-}
-
-double energy_of(const Force& force, const Vector& q, const Vector& v, const Vector& mass) {
-  double energy = 0.0;
-  force.add_energy({q, v, mass}, energy);
-  return energy;
-}
-
 Eigen::MatrixXd hessian_x_of(const Force& force, const Vector& q, const Vector& v,
                              const Vector& mass) {
   HessianBuilder builder;

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 
 #include "core/force.h"
+#include "core/force_evaluation.h"
 #include "core/types.h"
 
 namespace fosssim::testing {
@@ -20,10 +21,8 @@ double asymmetry(const Eigen::MatrixXd& A);
 /// expected values.
 Eigen::MatrixXd dense_pair_pattern(int n, int dim, int i, int j, const Eigen::MatrixXd& H);
 
-/// The force's gradient of energy, energy, hessX and hessV at (q, v) with per-coordinate masses,
-/// assembled densely.
-Vector gradient_of(const Force& force, const Vector& q, const Vector& v, const Vector& mass);
-double energy_of(const Force& force, const Vector& q, const Vector& v, const Vector& mass);
+/// The force's hessX and hessV at (q, v) with per-coordinate masses, assembled densely (its
+/// gradient and energy: gradient_of and energy_of of core/force_evaluation.h).
 Eigen::MatrixXd hessian_x_of(const Force& force, const Vector& q, const Vector& v,
                              const Vector& mass);
 Eigen::MatrixXd hessian_v_of(const Force& force, const Vector& q, const Vector& v,

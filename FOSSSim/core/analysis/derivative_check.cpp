@@ -6,6 +6,7 @@
 #include <limits>
 #include <random>
 
+#include "core/force_evaluation.h"
 #include "core/force_set.h"
 
 namespace fosssim {
@@ -65,18 +66,6 @@ std::vector<Vector> check_directions(int n, const DerivativeCheckOptions& option
   return directions;
 }
 
-Vector gradient_at(const Force& force, const Vector& q, const Vector& v, const Vector& mass) {
-  Vector g = Vector::Zero(q.size());
-  force.add_gradient({q, v, mass}, g);
-  return g;
-}
-
-double energy_at(const Force& force, const Vector& q, const Vector& v, const Vector& mass) {
-  double energy = 0.0;
-  force.add_energy({q, v, mass}, energy);
-  return energy;
-}
-
 /// Keeps the direction whose error uses most of its allowance rtol·scale + floor. A NaN error
 /// or allowance counts as an infinite excess, so a NaN derivative cannot pass.
 void record(DerivativeCheck& check, double error, double scale, double floor, double rtol) {
@@ -98,11 +87,11 @@ DerivativeCheck check_gradient(const Force& force, const Vector& q, const Vector
                                const DerivativeCheckOptions& options) {
   DerivativeCheck check{force.label(), Derivative::kGradient};
   const Vector rest = Vector::Zero(q.size());
-  const Vector g = gradient_at(force, q, rest, mass);
-  const double energy_size = std::abs(energy_at(force, q, rest, mass)) + g.norm() * options.step;
+  const Vector g = gradient_of(force, q, rest, mass);
+  const double energy_size = std::abs(energy_of(force, q, rest, mass)) + g.norm() * options.step;
   const double size = q.lpNorm<Eigen::Infinity>();
   const std::function<double(const Vector&)> energy = [&](const Vector& x) {
-    return energy_at(force, x, rest, mass);
+    return energy_of(force, x, rest, mass);
   };
   const std::function<double(const Vector&)> apply = [&](const Vector& delta) {
     return g.dot(delta);
@@ -114,7 +103,7 @@ DerivativeCheck check_gradient(const Force& force, const Vector& q, const Vector
     // (a spring at its rest length), where gradE itself is round-off.
     const Stencil s = make_stencil(q, u, options.step);
     const double curvature =
-        (gradient_at(force, s.plus, rest, mass) - gradient_at(force, s.minus, rest, mass)).norm() /
+        (gradient_of(force, s.plus, rest, mass) - gradient_of(force, s.minus, rest, mass)).norm() /
         (2.0 * options.step);
     const double floor = 1e3 * kMachineEpsilon * (energy_size / options.step + curvature * size);
     record(check, std::abs(analytic - numeric), std::max(std::abs(analytic), std::abs(numeric)),
@@ -145,9 +134,9 @@ DerivativeCheck check_hessian(const Force& force, Derivative which, const Vector
   const double step = in_q ? options.step : options.velocity_step;
   const double size = (in_q ? q : v).lpNorm<Eigen::Infinity>();
   const double floor =
-      1e3 * kMachineEpsilon * (gradient_at(force, q, v, mass).norm() / step + H.norm() * size);
+      1e3 * kMachineEpsilon * (gradient_of(force, q, v, mass).norm() / step + H.norm() * size);
   const std::function<Vector(const Vector&)> gradient = [&](const Vector& x) {
-    return in_q ? gradient_at(force, x, v, mass) : gradient_at(force, q, x, mass);
+    return in_q ? gradient_of(force, x, v, mass) : gradient_of(force, q, x, mass);
   };
   const std::function<Vector(const Vector&)> apply = [&](const Vector& delta) {
     return Vector(H * delta);
