@@ -37,6 +37,8 @@ int HessianPattern::find_slot(int row, int col, const SparseMatrix& matrix) cons
 }
 
 bool HessianPattern::finish(SparseMatrix& matrix) {
+  // Recording grew the list by doubling: its spare room would be kept for the whole run.
+  writes_.shrink_to_fit();
   const int D = dim_;
   const auto map_dof = [&](int dof) {
     const int p = map_[dof / D];

@@ -33,25 +33,6 @@ bool is_accurate(const SparseMatrix& A, const Vector& x, const Vector& b) {
   return (A * x - b).norm() <= kResidualTolerance * residual_scale(A, x, b);
 }
 
-/// The slot of entry (j, i) for every entry (i, j) of A's pattern, or empty when some (j, i)
-/// is missing (A is not structurally symmetric).
-std::vector<int> transposed_slots(const SparseMatrix& A) {
-  const auto* outer = A.outerIndexPtr();
-  const auto* inner = A.innerIndexPtr();
-  std::vector<int> slots(static_cast<std::size_t>(A.nonZeros()));
-  for (Eigen::Index j = 0; j < A.outerSize(); ++j) {
-    for (auto k = outer[j]; k < outer[j + 1]; ++k) {
-      const auto i = inner[k];
-      const auto* begin = inner + outer[i];
-      const auto* end = inner + outer[i + 1];
-      const auto* found = std::lower_bound(begin, end, static_cast<int>(j));
-      if (found == end || *found != j) return {};
-      slots[static_cast<std::size_t>(k)] = static_cast<int>(found - inner);
-    }
-  }
-  return slots;
-}
-
 }  // namespace
 
 bool StepSolver::same_pattern(const SparseMatrix& A) const {
@@ -70,16 +51,15 @@ void StepSolver::take_pattern(const SparseMatrix& A) {
   lu_analysed_ = false;
   cholesky_.reset();
   umfpack_.reset();
-  transposed_.clear();
   skip_cholesky_ = 0;
   refactor_due_ = true;
   suitesparse_ = false;
   if (choice_ != SolverChoice::kEigen && A.rows() > 0 &&
       (choice_ == SolverChoice::kCholmod || A.rows() >= kCholmodFromSize)) {
-    transposed_ = transposed_slots(A);
     // A pattern that is not structurally symmetric has no symmetric part of its own pattern;
     // step matrices always are (pair blocks come in pairs).
-    suitesparse_ = !transposed_.empty();
+    suitesparse_ = symmetric_ ? LowerSymmetricPart::is_structurally_symmetric(A)
+                              : symmetric_part_.take_pattern(A);
   }
 }
 
@@ -132,23 +112,9 @@ std::optional<Vector> StepSolver::solve_lu(const SparseMatrix& A, const Vector& 
   return x;
 }
 
-void StepSolver::symmetrize(const SparseMatrix& A) {
-  if (symmetric_part_.nonZeros() != A.nonZeros() || symmetric_part_.rows() != A.rows()) {
-    symmetric_part_ = A;
-  }
-  const double* value = A.valuePtr();
-  double* out = symmetric_part_.valuePtr();
-  for (std::size_t k = 0; k < transposed_.size(); ++k) {
-    out[k] = 0.5 * (value[k] + value[transposed_[k]]);
-  }
-}
-
 bool StepSolver::factor_cholesky(const SparseMatrix& A) {
-  const SparseMatrix* target = &A;
-  if (!symmetric_) {
-    symmetrize(A);
-    target = &symmetric_part_;
-  }
+  // CHOLMOD reads only the lower triangle: of A, or of its symmetric part.
+  const SparseMatrix* target = symmetric_ ? &A : &symmetric_part_.update(A);
   if (!cholesky_) {
     cholesky_.emplace(CholeskyOptions{});
     cholesky_->analyze(*target);

@@ -10,6 +10,7 @@
 #include "core/solvers/cholesky_factor.h"
 #include "core/solvers/gmres.h"
 #include "core/solvers/lu_factor.h"
+#include "core/solvers/symmetric_part.h"
 #include "core/types.h"
 
 namespace fosssim {
@@ -94,8 +95,6 @@ class StepSolver {
   bool factor_lu(const SparseMatrix& A);
   /// z = M⁻¹ r with the current factor.
   void precondition(const double* r, double* z) const;
-  /// symmetric_part_ = (A + Aᵀ)/2 over A's pattern.
-  void symmetrize(const SparseMatrix& A);
 
   bool symmetric_;
   SolverChoice choice_;
@@ -110,9 +109,8 @@ class StepSolver {
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
 
   // The SuiteSparse path.
-  bool suitesparse_ = false;     // the pattern goes to SuiteSparse
-  std::vector<int> transposed_;  // slot of entry (j, i) for the entry (i, j) in slot k
-  SparseMatrix symmetric_part_;
+  bool suitesparse_ = false;           // the pattern goes to SuiteSparse
+  LowerSymmetricPart symmetric_part_;  // of a non-symmetric A, for CHOLMOD
   std::optional<CholeskyFactor> cholesky_;
   std::optional<LuFactor> umfpack_;
   Factorization factor_ = Factorization::kCholesky;  // which one preconditions now

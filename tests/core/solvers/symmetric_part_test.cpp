@@ -1,0 +1,89 @@
+// Tests of LowerSymmetricPart (core/solvers/symmetric_part.h): the lower triangle of
+// (A + Aᵀ)/2 over A's pattern, and the check of structural symmetry.
+//
+// Math checked: for a random non-symmetric A with a symmetric pattern (some stored zeros, an
+// empty column), L holds exactly the entries (i, j), i ≥ j, of A's pattern, each equal to
+// 0.5 (A(i, j) + A(j, i)) bit for bit; new values of the same pattern give the new part; a
+// pattern missing one transposed entry, above or below the diagonal, is refused.
+
+#include "core/solvers/symmetric_part.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "support/random.h"
+
+namespace fosssim::testing {
+namespace {
+
+/// A random n×n matrix whose pattern is symmetric and whose values are not; every third
+/// stored entry of the upper triangle is a stored zero, and column `empty` has no entries.
+SparseMatrix random_matrix(int n, int empty, unsigned seed) {
+  Random rng(seed);
+  std::vector<Triplet> triplets;
+  for (int j = 0; j < n; ++j) {
+    for (int i = j; i < n; ++i) {
+      if (i == empty || j == empty || (i != j && rng.uniform(0.0, 1.0) < 0.6)) continue;
+      triplets.emplace_back(i, j, rng.uniform(-1.0, 1.0));
+      if (i != j) triplets.emplace_back(j, i, (i + j) % 3 == 0 ? 0.0 : rng.uniform(-1.0, 1.0));
+    }
+  }
+  SparseMatrix A(n, n);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  return A;
+}
+
+void expect_lower_symmetric_part(const SparseMatrix& L, const SparseMatrix& A) {
+  ASSERT_EQ(L.rows(), A.rows());
+  int expected_entries = 0;
+  for (int j = 0; j < A.outerSize(); ++j) {
+    for (SparseMatrix::InnerIterator it(A, j); it; ++it) {
+      if (it.row() < j) continue;
+      ++expected_entries;
+      const double expected = 0.5 * (it.value() + A.coeff(j, static_cast<int>(it.row())));
+      EXPECT_EQ(L.coeff(it.row(), j), expected) << "(" << it.row() << ", " << j << ")";
+    }
+  }
+  EXPECT_EQ(L.nonZeros(), expected_entries);
+}
+
+TEST(LowerSymmetricPart, IsTheLowerTriangleOfTheSymmetricPartOverThePattern) {
+  SparseMatrix A = random_matrix(40, 17, 3);
+  LowerSymmetricPart part;
+  ASSERT_TRUE(LowerSymmetricPart::is_structurally_symmetric(A));
+  ASSERT_TRUE(part.take_pattern(A));
+  expect_lower_symmetric_part(part.update(A), A);
+
+  for (int k = 0; k < A.nonZeros(); ++k) A.valuePtr()[k] = std::sin(3.0 * k);  // same pattern
+  expect_lower_symmetric_part(part.update(A), A);
+  EXPECT_EQ(&part.matrix(), &part.update(A));
+}
+
+TEST(LowerSymmetricPart, RefusesAPatternMissingATransposedEntry) {
+  for (const bool drop_upper : {false, true}) {
+    const SparseMatrix A = random_matrix(30, 5, 11);
+    std::vector<Triplet> kept;
+    bool dropped = false;
+    for (int j = 0; j < A.outerSize(); ++j) {
+      for (SparseMatrix::InnerIterator it(A, j); it; ++it) {
+        const bool upper = it.row() < j;
+        if (!dropped && it.row() != j && upper == drop_upper && j > 10) {
+          dropped = true;
+          continue;
+        }
+        kept.emplace_back(static_cast<int>(it.row()), j, it.value());
+      }
+    }
+    ASSERT_TRUE(dropped);
+    SparseMatrix B(A.rows(), A.cols());
+    B.setFromTriplets(kept.begin(), kept.end());
+    LowerSymmetricPart part;
+    EXPECT_FALSE(LowerSymmetricPart::is_structurally_symmetric(B)) << drop_upper;
+    EXPECT_FALSE(part.take_pattern(B)) << drop_upper;
+  }
+}
+
+}  // namespace
+}  // namespace fosssim::testing
