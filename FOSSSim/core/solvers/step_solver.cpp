@@ -58,7 +58,7 @@ void StepSolver::take_pattern(const SparseMatrix& A) {
       (choice_ == SolverChoice::kCholmod || A.rows() >= kCholmodFromSize)) {
     // A pattern that is not structurally symmetric has no symmetric part of its own pattern;
     // step matrices always are (pair blocks come in pairs).
-    suitesparse_ = symmetric_ ? LowerSymmetricPart::is_structurally_symmetric(A)
+    suitesparse_ = symmetric_ ? UpperSymmetricPart::is_structurally_symmetric(A)
                               : symmetric_part_.take_pattern(A);
   }
 }
@@ -113,10 +113,11 @@ std::optional<Vector> StepSolver::solve_lu(const SparseMatrix& A, const Vector& 
 }
 
 bool StepSolver::factor_cholesky(const SparseMatrix& A) {
-  // CHOLMOD reads only the lower triangle: of A, or of its symmetric part.
+  // CHOLMOD reads one triangle: A's lower one, or the upper one of its symmetric part.
   const SparseMatrix* target = symmetric_ ? &A : &symmetric_part_.update(A);
   if (!cholesky_) {
-    cholesky_.emplace(CholeskyOptions{});
+    cholesky_.emplace(CholeskyOptions{.triangle = symmetric_ ? CholeskyOptions::Triangle::kLower
+                                                             : CholeskyOptions::Triangle::kUpper});
     cholesky_->analyze(*target);
     ++statistics_.analyses;
   }

@@ -110,7 +110,7 @@ class StepSolver {
 
   // The SuiteSparse path.
   bool suitesparse_ = false;           // the pattern goes to SuiteSparse
-  LowerSymmetricPart symmetric_part_;  // of a non-symmetric A, for CHOLMOD
+  UpperSymmetricPart symmetric_part_;  // of a non-symmetric A, for CHOLMOD
   std::optional<CholeskyFactor> cholesky_;
   std::optional<LuFactor> umfpack_;
   Factorization factor_ = Factorization::kCholesky;  // which one preconditions now

@@ -9,26 +9,24 @@ namespace {
 
 using Index = SparseMatrix::StorageIndex;
 
-/// Walks A's lower triangle in column order, finding A(j, i) for each A(i, j); with `values`,
-/// writes the lower triangle of (A + Aᵀ)/2 there. False when A is not structurally symmetric.
+/// Walks A's upper triangle in column order, finding A(j, i) for each A(i, j); with `values`,
+/// writes the upper triangle of (A + Aᵀ)/2 there. False when A is not structurally symmetric.
 ///
-/// Column j of A holds A(r, j) for r < j (its head), then its lower entries A(i, j), i ≥ j.
-/// The transpose of a lower entry A(i, j), i > j, is A(j, i), in the head of column i, whose
-/// rows j come in increasing order as the columns j are walked in order: one cursor per
-/// column, starting at its first entry, finds every transpose, and when column j is reached
-/// the earlier columns have moved its cursor past its whole head.
+/// Column j of A holds its upper entries A(i, j), i ≤ j (its head), then A(r, j) for r > j
+/// (its tail). The transpose of an upper entry A(i, j), i < j, is A(j, i), in the tail of
+/// column i, whose rows j come in increasing order as the columns j are walked in order: one
+/// cursor per column, set to the start of its tail once its head is walked, finds every
+/// transpose. A tail entry left unvisited at the end has no transpose in a head.
 bool walk(const SparseMatrix& A, std::vector<Index>& cursor, double* values) {
   const auto* outer = A.outerIndexPtr();
   const auto* inner = A.innerIndexPtr();
   const double* a = A.valuePtr();
   const Eigen::Index n = A.outerSize();
-  cursor.assign(outer, outer + n);
+  cursor.resize(static_cast<std::size_t>(n));
   std::size_t slot = 0;
   for (Eigen::Index j = 0; j < n; ++j) {
-    const auto first = cursor[j];
-    // An upper entry A(r, j) left unvisited has no lower entry A(j, r).
-    if (first < outer[j + 1] && inner[first] < j) return false;
-    for (auto k = first; k < outer[j + 1]; ++k) {
+    auto k = outer[j];
+    for (; k < outer[j + 1] && inner[k] <= j; ++k) {
       const auto i = inner[k];
       auto t = k;
       if (i != j) {
@@ -38,47 +36,50 @@ bool walk(const SparseMatrix& A, std::vector<Index>& cursor, double* values) {
       if (values != nullptr) values[slot] = 0.5 * (a[k] + a[t]);
       ++slot;
     }
+    cursor[j] = k;
+  }
+  for (Eigen::Index j = 0; j < n; ++j) {
+    if (cursor[j] != outer[j + 1]) return false;
   }
   return true;
 }
 
 }  // namespace
 
-bool LowerSymmetricPart::is_structurally_symmetric(const SparseMatrix& A) {
+bool UpperSymmetricPart::is_structurally_symmetric(const SparseMatrix& A) {
   std::vector<Index> cursor;
   return A.rows() == A.cols() && walk(A, cursor, nullptr);
 }
 
-bool LowerSymmetricPart::take_pattern(const SparseMatrix& A) {
-  if (A.rows() != A.cols()) throw std::logic_error("LowerSymmetricPart: the matrix is not square");
+bool UpperSymmetricPart::take_pattern(const SparseMatrix& A) {
+  if (A.rows() != A.cols()) throw std::logic_error("UpperSymmetricPart: the matrix is not square");
   if (!walk(A, cursor_, nullptr)) {
-    lower_ = SparseMatrix();
+    upper_ = SparseMatrix();
     return false;
   }
-  // Column j's lower entries are its last ones, from the first row ≥ j on.
+  // Column j's upper entries are its first ones, up to row j.
   const auto* outer = A.outerIndexPtr();
   const auto* inner = A.innerIndexPtr();
   const Eigen::Index n = A.outerSize();
-  const auto first_lower = [&](Eigen::Index j) {
-    return std::lower_bound(inner + outer[j], inner + outer[j + 1], j);
+  const auto head_end = [&](Eigen::Index j) {
+    return std::upper_bound(inner + outer[j], inner + outer[j + 1], j);
   };
-  SparseMatrix lower(n, n);
-  auto* starts = lower.outerIndexPtr();
+  upper_ = SparseMatrix(n, n);
+  auto* starts = upper_.outerIndexPtr();
   starts[0] = 0;
   for (Eigen::Index j = 0; j < n; ++j) {
-    starts[j + 1] = starts[j] + static_cast<int>(inner + outer[j + 1] - first_lower(j));
+    starts[j + 1] = starts[j] + static_cast<Index>(head_end(j) - (inner + outer[j]));
   }
-  lower.resizeNonZeros(starts[n]);
-  auto* rows = lower.innerIndexPtr();
-  for (Eigen::Index j = 0; j < n; ++j) rows = std::copy(first_lower(j), inner + outer[j + 1], rows);
-  std::fill_n(lower.valuePtr(), lower.nonZeros(), 0.0);
-  lower_ = std::move(lower);
+  upper_.resizeNonZeros(starts[n]);
+  auto* rows = upper_.innerIndexPtr();
+  for (Eigen::Index j = 0; j < n; ++j) rows = std::copy(inner + outer[j], head_end(j), rows);
+  std::fill_n(upper_.valuePtr(), upper_.nonZeros(), 0.0);
   return true;
 }
 
-const SparseMatrix& LowerSymmetricPart::update(const SparseMatrix& A) {
-  walk(A, cursor_, lower_.valuePtr());
-  return lower_;
+const SparseMatrix& UpperSymmetricPart::update(const SparseMatrix& A) {
+  walk(A, cursor_, upper_.valuePtr());
+  return upper_;
 }
 
 }  // namespace fosssim

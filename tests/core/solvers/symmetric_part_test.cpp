@@ -1,8 +1,8 @@
-// Tests of LowerSymmetricPart (core/solvers/symmetric_part.h): the lower triangle of
+// Tests of UpperSymmetricPart (core/solvers/symmetric_part.h): the upper triangle of
 // (A + Aᵀ)/2 over A's pattern, and the check of structural symmetry.
 //
 // Math checked: for a random non-symmetric A with a symmetric pattern (some stored zeros, an
-// empty column), L holds exactly the entries (i, j), i ≥ j, of A's pattern, each equal to
+// empty column), U holds exactly the entries (i, j), i ≤ j, of A's pattern, each equal to
 // 0.5 (A(i, j) + A(j, i)) bit for bit; new values of the same pattern give the new part; a
 // pattern missing one transposed entry, above or below the diagonal, is refused.
 
@@ -35,33 +35,33 @@ SparseMatrix random_matrix(int n, int empty, unsigned seed) {
   return A;
 }
 
-void expect_lower_symmetric_part(const SparseMatrix& L, const SparseMatrix& A) {
-  ASSERT_EQ(L.rows(), A.rows());
+void expect_upper_symmetric_part(const SparseMatrix& U, const SparseMatrix& A) {
+  ASSERT_EQ(U.rows(), A.rows());
   int expected_entries = 0;
   for (int j = 0; j < A.outerSize(); ++j) {
     for (SparseMatrix::InnerIterator it(A, j); it; ++it) {
-      if (it.row() < j) continue;
+      if (it.row() > j) continue;
       ++expected_entries;
       const double expected = 0.5 * (it.value() + A.coeff(j, static_cast<int>(it.row())));
-      EXPECT_EQ(L.coeff(it.row(), j), expected) << "(" << it.row() << ", " << j << ")";
+      EXPECT_EQ(U.coeff(it.row(), j), expected) << "(" << it.row() << ", " << j << ")";
     }
   }
-  EXPECT_EQ(L.nonZeros(), expected_entries);
+  EXPECT_EQ(U.nonZeros(), expected_entries);
 }
 
-TEST(LowerSymmetricPart, IsTheLowerTriangleOfTheSymmetricPartOverThePattern) {
+TEST(UpperSymmetricPart, IsTheUpperTriangleOfTheSymmetricPartOverThePattern) {
   SparseMatrix A = random_matrix(40, 17, 3);
-  LowerSymmetricPart part;
-  ASSERT_TRUE(LowerSymmetricPart::is_structurally_symmetric(A));
+  UpperSymmetricPart part;
+  ASSERT_TRUE(UpperSymmetricPart::is_structurally_symmetric(A));
   ASSERT_TRUE(part.take_pattern(A));
-  expect_lower_symmetric_part(part.update(A), A);
+  expect_upper_symmetric_part(part.update(A), A);
 
   for (int k = 0; k < A.nonZeros(); ++k) A.valuePtr()[k] = std::sin(3.0 * k);  // same pattern
-  expect_lower_symmetric_part(part.update(A), A);
+  expect_upper_symmetric_part(part.update(A), A);
   EXPECT_EQ(&part.matrix(), &part.update(A));
 }
 
-TEST(LowerSymmetricPart, RefusesAPatternMissingATransposedEntry) {
+TEST(UpperSymmetricPart, RefusesAPatternMissingATransposedEntry) {
   for (const bool drop_upper : {false, true}) {
     const SparseMatrix A = random_matrix(30, 5, 11);
     std::vector<Triplet> kept;
@@ -79,8 +79,8 @@ TEST(LowerSymmetricPart, RefusesAPatternMissingATransposedEntry) {
     ASSERT_TRUE(dropped);
     SparseMatrix B(A.rows(), A.cols());
     B.setFromTriplets(kept.begin(), kept.end());
-    LowerSymmetricPart part;
-    EXPECT_FALSE(LowerSymmetricPart::is_structurally_symmetric(B)) << drop_upper;
+    UpperSymmetricPart part;
+    EXPECT_FALSE(UpperSymmetricPart::is_structurally_symmetric(B)) << drop_upper;
     EXPECT_FALSE(part.take_pattern(B)) << drop_upper;
   }
 }
