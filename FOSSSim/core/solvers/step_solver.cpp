@@ -36,6 +36,8 @@ bool is_accurate(const SparseMatrix& A, const Vector& x, const Vector& b) {
 }  // namespace
 
 bool StepSolver::same_pattern(const SparseMatrix& A) const {
+  // With a symmetric part, its pattern (half of A's) is the only copy kept.
+  if (suitesparse_ && !symmetric_) return symmetric_part_.has_pattern(A);
   const auto* outer = A.outerIndexPtr();
   const auto* inner = A.innerIndexPtr();
   return static_cast<Eigen::Index>(outer_.size()) == A.outerSize() + 1 &&
@@ -45,8 +47,6 @@ bool StepSolver::same_pattern(const SparseMatrix& A) const {
 }
 
 void StepSolver::take_pattern(const SparseMatrix& A) {
-  outer_.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
-  inner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
   ldlt_analysed_ = false;
   lu_analysed_ = false;
   cholesky_.reset();
@@ -60,6 +60,13 @@ void StepSolver::take_pattern(const SparseMatrix& A) {
     // step matrices always are (pair blocks come in pairs).
     suitesparse_ = symmetric_ ? UpperSymmetricPart::is_structurally_symmetric(A)
                               : symmetric_part_.take_pattern(A);
+  }
+  if (suitesparse_ && !symmetric_) {
+    outer_ = {};
+    inner_ = {};
+  } else {
+    outer_.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
+    inner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
   }
 }
 

@@ -100,7 +100,8 @@ class StepSolver {
   SolverChoice choice_;
   Factorization last_ = Factorization::kLU;
   SolveStatistics statistics_;
-  std::vector<SparseMatrix::StorageIndex> outer_, inner_;  // pattern of the analysed matrix
+  std::vector<SparseMatrix::StorageIndex> outer_,
+      inner_;  // A's pattern, unless symmetric_part_ has it
 
   // The Eigen path.
   bool ldlt_analysed_ = false;

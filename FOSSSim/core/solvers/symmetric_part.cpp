@@ -77,6 +77,24 @@ bool UpperSymmetricPart::take_pattern(const SparseMatrix& A) {
   return true;
 }
 
+bool UpperSymmetricPart::has_pattern(const SparseMatrix& A) const {
+  if (A.rows() != upper_.rows() || A.cols() != upper_.cols()) return false;
+  const auto* outer = A.outerIndexPtr();
+  const auto* inner = A.innerIndexPtr();
+  const auto* starts = upper_.outerIndexPtr();
+  const auto* rows = upper_.innerIndexPtr();
+  // Column j of A starts with exactly the rows of U's column j...
+  for (Eigen::Index j = 0; j < A.outerSize(); ++j) {
+    const auto head_end = outer[j] + (starts[j + 1] - starts[j]);
+    if (head_end > outer[j + 1] || (head_end < outer[j + 1] && inner[head_end] <= j) ||
+        !std::equal(rows + starts[j], rows + starts[j + 1], inner + outer[j])) {
+      return false;
+    }
+  }
+  // ... and the rest of A is their transpose.
+  return walk(A, cursor_, nullptr);
+}
+
 const SparseMatrix& UpperSymmetricPart::update(const SparseMatrix& A) {
   walk(A, cursor_, upper_.valuePtr());
   return upper_;

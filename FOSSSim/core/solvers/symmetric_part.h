@@ -20,13 +20,15 @@ class UpperSymmetricPart {
   /// Takes A's pattern (square). False when A is not structurally symmetric: the pattern is
   /// then not taken.
   bool take_pattern(const SparseMatrix& A);
+  /// Whether A has the taken pattern (exactly: A's stored entries are those of U and Uᵀ).
+  bool has_pattern(const SparseMatrix& A) const;
   /// U for A, which must have the taken pattern.
   const SparseMatrix& update(const SparseMatrix& A);
   const SparseMatrix& matrix() const { return upper_; }
 
  private:
   SparseMatrix upper_;
-  std::vector<SparseMatrix::StorageIndex> cursor_;  // workspace of a pass over A
+  mutable std::vector<SparseMatrix::StorageIndex> cursor_;  // workspace of a pass over A
 };
 
 }  // namespace fosssim

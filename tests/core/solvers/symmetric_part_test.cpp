@@ -61,6 +61,54 @@ TEST(UpperSymmetricPart, IsTheUpperTriangleOfTheSymmetricPartOverThePattern) {
   EXPECT_EQ(&part.matrix(), &part.update(A));
 }
 
+/// A with the entry pair (i, j), (j, i) added (stored zeros) or removed.
+SparseMatrix with_pair(const SparseMatrix& A, int i, int j, bool add) {
+  std::vector<Triplet> triplets;
+  for (int c = 0; c < A.outerSize(); ++c) {
+    for (SparseMatrix::InnerIterator it(A, c); it; ++it) {
+      const bool in_pair = (it.row() == i && c == j) || (it.row() == j && c == i);
+      if (add || !in_pair) triplets.emplace_back(static_cast<int>(it.row()), c, it.value());
+    }
+  }
+  if (add) {
+    triplets.emplace_back(i, j, 0.0);
+    triplets.emplace_back(j, i, 0.0);
+  }
+  SparseMatrix B(A.rows(), A.cols());
+  B.setFromTriplets(triplets.begin(), triplets.end());
+  return B;
+}
+
+TEST(UpperSymmetricPart, RecognisesExactlyTheTakenPattern) {
+  SparseMatrix A = random_matrix(30, 7, 5);
+  UpperSymmetricPart part;
+  ASSERT_TRUE(part.take_pattern(A));
+  EXPECT_TRUE(part.has_pattern(A));
+  for (int k = 0; k < A.nonZeros(); ++k) A.valuePtr()[k] = 2.0 * k;
+  EXPECT_TRUE(part.has_pattern(A));
+
+  int i = 3, j = 0;  // an entry pair of A below and above the diagonal
+  while (A.coeff(i, j) == 0.0 && A.coeff(j, i) == 0.0) ++i;
+  const SparseMatrix removed = with_pair(A, i, j, false);
+  ASSERT_EQ(removed.nonZeros(), A.nonZeros() - 2);
+  EXPECT_FALSE(part.has_pattern(removed));
+  const SparseMatrix added = with_pair(A, 7, 2, true);  // column 7 is empty
+  ASSERT_EQ(added.nonZeros(), A.nonZeros() + 2);
+  EXPECT_FALSE(part.has_pattern(added));
+  // A lower entry without its upper transpose: the same upper triangle.
+  std::vector<Triplet> triplets = {{7, 2, 1.0}};
+  for (int c = 0; c < A.outerSize(); ++c) {
+    for (SparseMatrix::InnerIterator it(A, c); it; ++it) {
+      triplets.emplace_back(static_cast<int>(it.row()), c, it.value());
+    }
+  }
+  SparseMatrix lopsided(A.rows(), A.cols());
+  lopsided.setFromTriplets(triplets.begin(), triplets.end());
+  EXPECT_FALSE(part.has_pattern(lopsided));
+  const SparseMatrix bigger = random_matrix(31, 7, 5);
+  EXPECT_FALSE(part.has_pattern(bigger));
+}
+
 TEST(UpperSymmetricPart, RefusesAPatternMissingATransposedEntry) {
   for (const bool drop_upper : {false, true}) {
     const SparseMatrix A = random_matrix(30, 5, 11);
