@@ -29,6 +29,8 @@ void LocalGlobal<D>::prepare() {
     springs_.push_back({s.i, s.j, fi, fj, s.k, s.l0, s.b});
   }
   d_ = Points<D>::Zero(static_cast<Eigen::Index>(springs_.size()), D);
+  kd_ = d_;
+  list_incidences();
   // Q for the anchors there are now (the pins; the drag spring, if already grabbed). The pins'
   // targets only enter the right side, so they can wait for the first step.
   anchors_.clear();
@@ -39,6 +41,24 @@ void LocalGlobal<D>::prepare() {
   for (int p : pinned_) anchors_.push_back({p, settings_.penalty_weight, Eigen::Vector3d::Zero()});
   for (const AnchorTerm& a : anchors_) factored_anchors_.emplace_back(a.i, a.k);
   factor();
+}
+
+template <int D>
+void LocalGlobal<D>::list_incidences() {
+  const int n = free_.num_particles();
+  incidence_start_.assign(n + 1, 0);
+  for (const Spring& s : springs_) {
+    if (s.fi >= 0) ++incidence_start_[s.fi + 1];
+    if (s.fj >= 0) ++incidence_start_[s.fj + 1];
+  }
+  for (int f = 0; f < n; ++f) incidence_start_[f + 1] += incidence_start_[f];
+  incidence_.resize(incidence_start_[n]);
+  std::vector<int> next(incidence_start_.begin(), incidence_start_.end() - 1);
+  for (std::size_t k = 0; k < springs_.size(); ++k) {  // in spring order
+    const int id = static_cast<int>(k) + 1;
+    if (springs_[k].fi >= 0) incidence_[next[springs_[k].fi]++] = id;
+    if (springs_[k].fj >= 0) incidence_[next[springs_[k].fj]++] = -id;
+  }
 }
 
 template <int D>
@@ -229,16 +249,41 @@ void LocalGlobal<D>::assemble_constant_rhs(const State& state) {
 }
 
 template <int D>
-void LocalGlobal<D>::add_spring_directions(Points<D>& rhs) {
-  for (std::size_t s = 0; s < springs_.size(); ++s) {
+void LocalGlobal<D>::project_springs(std::size_t first, std::size_t last) {
+  for (std::size_t s = first; s < last; ++s) {
     const Spring& spring = springs_[s];
     const Vec<D> delta = (p_.row(spring.i) - p_.row(spring.j)).transpose();
     const double length = delta.norm();
     // Local step: the rest-length vector nearest the current one (kept when the length is 0).
     if (length > 0.0) d_.row(s) = (spring.l0 / length) * delta.transpose();
-    if (spring.fi >= 0) rhs.row(spring.fi) += spring.k * d_.row(s);
-    if (spring.fj >= 0) rhs.row(spring.fj) -= spring.k * d_.row(s);
+    kd_.row(s) = spring.k * d_.row(s);
   }
+}
+
+template <int D>
+void LocalGlobal<D>::gather_spring_terms(Points<D>& rhs, int first, int last) const {
+  for (int f = first; f < last; ++f) {
+    // The same sums, in the same order, as adding each spring's term to both its ends in
+    // spring order: every row's springs are listed in increasing order.
+    Eigen::Matrix<double, 1, D> sum = rhs.row(f);
+    for (int e = incidence_start_[f]; e < incidence_start_[f + 1]; ++e) {
+      const int end = incidence_[e];
+      if (end > 0) {
+        sum += kd_.row(end - 1);
+      } else {
+        sum -= kd_.row(-end - 1);
+      }
+    }
+    rhs.row(f) = sum;
+  }
+}
+
+template <int D>
+void LocalGlobal<D>::add_spring_directions(Points<D>& rhs) {
+  // Every spring's projection is independent of the others, and so is every row's sum: the
+  // projections are all computed first, so that their square roots and divisions overlap.
+  project_springs(0, springs_.size());
+  gather_spring_terms(rhs, 0, free_.num_particles());
 }
 
 template <int D>

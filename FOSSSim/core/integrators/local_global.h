@@ -134,6 +134,13 @@ class LocalGlobal final : public Integrator {
   /// Assembles and factors Q for anchors_ and contacts_.
   void factor();
   void assemble_constant_rhs(const State& state);
+  /// Lists every free particle's springs (incidence_start_, incidence_).
+  void list_incidences();
+  /// The local step of springs [first, last): their rows of d_ and kd_.
+  void project_springs(std::size_t first, std::size_t last);
+  /// Adds to rows [first, last) of `rhs` the k_s d_s of their springs (minus at a spring's j).
+  void gather_spring_terms(Points<D>& rhs, int first, int last) const;
+  /// The local step of every spring, then k_s d_s added to each end's row of `rhs`.
   void add_spring_directions(Points<D>& rhs);
   /// The local step of the obstacle contacts: k times each one's target.
   void add_contact_targets(Points<D>& rhs) const;
@@ -172,9 +179,13 @@ class LocalGlobal final : public Integrator {
   SpdSolver solver_;
   Vector start_q_;  // qⁿ, for the energy of accelerated iterations
   AndersonAcceleration anderson_;
-  Points<D> y_;             // pⁿ + h vⁿ, every particle
-  Points<D> p_;             // the current iterate, every particle
-  Points<D> d_;             // spring directions times rest lengths, kept between iterations
+  Points<D> y_;   // pⁿ + h vⁿ, every particle
+  Points<D> p_;   // the current iterate, every particle
+  Points<D> d_;   // spring directions times rest lengths, kept between iterations
+  Points<D> kd_;  // d_ times the springs' stiffnesses
+  // The springs of free particle f: incidence_[incidence_start_[f] .. incidence_start_[f+1]),
+  // s + 1 where it is the spring's i, -(s + 1) where it is its j, in increasing s.
+  std::vector<int> incidence_start_, incidence_;
   Points<D> constant_rhs_;  // the right side without the springs' directions
   Points<D> rhs_;
   Vector explicit_gradient_;
