@@ -136,7 +136,7 @@ class LocalGlobal final : public Integrator {
   void assemble_constant_rhs(const State& state);
   /// Lists every free particle's springs (incidence_start_, incidence_).
   void list_incidences();
-  /// The local step of springs [first, last): their rows of d_ and kd_.
+  /// The local step of springs [first, last): their rows of kd_.
   void project_springs(std::size_t first, std::size_t last);
   /// Adds to rows [first, last) of `rhs` the k_s d_s of their springs (minus at a spring's j).
   void gather_spring_terms(Points<D>& rhs, int first, int last) const;
@@ -179,10 +179,11 @@ class LocalGlobal final : public Integrator {
   SpdSolver solver_;
   Vector start_q_;  // qⁿ, for the energy of accelerated iterations
   AndersonAcceleration anderson_;
-  Points<D> y_;   // pⁿ + h vⁿ, every particle
-  Points<D> p_;   // the current iterate, every particle
-  Points<D> d_;   // spring directions times rest lengths, kept between iterations
-  Points<D> kd_;  // d_ times the springs' stiffnesses
+  Points<D> y_;  // pⁿ + h vⁿ, every particle
+  Points<D> p_;  // the current iterate, every particle
+  // k_s d_s: the springs' directions times rest lengths and stiffnesses, kept between
+  // iterations (a spring of length 0 keeps its last direction)
+  Points<D> kd_;
   // The springs of free particle f: incidence_[incidence_start_[f] .. incidence_start_[f+1]),
   // s + 1 where it is the spring's i, -(s + 1) where it is its j, in increasing s.
   std::vector<int> incidence_start_, incidence_;
