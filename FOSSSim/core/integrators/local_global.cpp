@@ -99,9 +99,7 @@ void LocalGlobal<D>::iterate() {
   if (settings_.acceleration == Acceleration::kAnderson) return iterate_anderson();
   if (settings_.acceleration == Acceleration::kChebyshev) return iterate_chebyshev();
   for (int iteration = 1; iteration <= settings_.iterations; ++iteration) {
-    rhs_ = constant_rhs_;
-    add_spring_directions(rhs_);
-    add_contact_targets(rhs_);
+    local_step(rhs_);
     last_change_ = global_solve(rhs_);
     last_iterations_ = iteration;
     if (settings_.tolerance > 0.0 && last_change_ <= settings_.tolerance) break;
@@ -298,7 +296,7 @@ void LocalGlobal<D>::gather_spring_terms(Points<D>& rhs, int first, int last) co
   for (int f = first; f < last; ++f) {
     // The same sums, in the same order, as adding each spring's term to both its ends in
     // spring order: every row's springs are listed in increasing order.
-    Eigen::Matrix<double, 1, D> sum = rhs.row(f);
+    Eigen::Matrix<double, 1, D> sum = constant_rhs_.row(f);
     for (int e = incidence_start_[f]; e < incidence_start_[f + 1]; ++e) {
       const int end = incidence_[e];
       if (end > 0) {
@@ -312,11 +310,13 @@ void LocalGlobal<D>::gather_spring_terms(Points<D>& rhs, int first, int last) co
 }
 
 template <int D>
-void LocalGlobal<D>::add_spring_directions(Points<D>& rhs) {
+void LocalGlobal<D>::local_step(Points<D>& rhs) {
   // Every spring's projection is independent of the others, and so is every row's sum: the
   // projections are all computed first, so that their square roots and divisions overlap.
   project_springs(0, springs_.size());
+  rhs.resize(constant_rhs_.rows(), D);
   gather_spring_terms(rhs, 0, free_.num_particles());
+  add_contact_targets(rhs);
 }
 
 template <int D>

@@ -138,10 +138,12 @@ class LocalGlobal final : public Integrator {
   void list_incidences();
   /// The local step of springs [first, last): their rows of kd_.
   void project_springs(std::size_t first, std::size_t last);
-  /// Adds to rows [first, last) of `rhs` the k_s d_s of their springs (minus at a spring's j).
+  /// Rows [first, last) of `rhs`: those of constant_rhs_ plus the k_s d_s of their springs
+  /// (minus at a spring's j).
   void gather_spring_terms(Points<D>& rhs, int first, int last) const;
-  /// The local step of every spring, then k_s d_s added to each end's row of `rhs`.
-  void add_spring_directions(Points<D>& rhs);
+  /// The local step at p_, and the global step's right side it makes: constant_rhs_, every
+  /// spring's k_s d_s added to its ends' rows, and the obstacle contacts' targets.
+  void local_step(Points<D>& rhs);
   /// The local step of the obstacle contacts: k times each one's target.
   void add_contact_targets(Points<D>& rhs) const;
   double global_solve(Points<D>& rhs);
