@@ -250,8 +250,9 @@ void LocalGlobal<D>::assemble_constant_rhs(const State& state) {
 }
 
 template <int D>
-void LocalGlobal<D>::project_springs(std::size_t first, std::size_t last) {
-  std::size_t s = first;
+void LocalGlobal<D>::project_springs() {
+  const std::size_t last = springs_.size();
+  std::size_t s = 0;
 #if defined(__SSE2__)
   // Two springs at a time: one packed square root and one packed division for both (they
   // bound the scalar loop's speed). Each lane does the scalar loop's operations in its order,
@@ -292,8 +293,9 @@ void LocalGlobal<D>::project_springs(std::size_t first, std::size_t last) {
 }
 
 template <int D>
-void LocalGlobal<D>::gather_spring_terms(Points<D>& rhs, int first, int last) const {
-  for (int f = first; f < last; ++f) {
+void LocalGlobal<D>::gather_spring_terms(Points<D>& rhs) const {
+  rhs.resize(constant_rhs_.rows(), D);
+  for (int f = 0; f < free_.num_particles(); ++f) {
     // The same sums, in the same order, as adding each spring's term to both its ends in
     // spring order: every row's springs are listed in increasing order.
     Eigen::Matrix<double, 1, D> sum = constant_rhs_.row(f);
@@ -311,11 +313,10 @@ void LocalGlobal<D>::gather_spring_terms(Points<D>& rhs, int first, int last) co
 
 template <int D>
 void LocalGlobal<D>::local_step(Points<D>& rhs) {
-  // Every spring's projection is independent of the others, and so is every row's sum: the
-  // projections are all computed first, so that their square roots and divisions overlap.
-  project_springs(0, springs_.size());
-  rhs.resize(constant_rhs_.rows(), D);
-  gather_spring_terms(rhs, 0, free_.num_particles());
+  // Every spring's term first, then every row's sum of its springs' terms: a scatter of each
+  // term into both its ends' rows would chain each row's additions through memory.
+  project_springs();
+  gather_spring_terms(rhs);
   add_contact_targets(rhs);
 }
 

@@ -136,11 +136,10 @@ class LocalGlobal final : public Integrator {
   void assemble_constant_rhs(const State& state);
   /// Lists every free particle's springs (incidence_start_, incidence_).
   void list_incidences();
-  /// The local step of springs [first, last): their rows of kd_.
-  void project_springs(std::size_t first, std::size_t last);
-  /// Rows [first, last) of `rhs`: those of constant_rhs_ plus the k_s d_s of their springs
-  /// (minus at a spring's j).
-  void gather_spring_terms(Points<D>& rhs, int first, int last) const;
+  /// The local step of every spring: kd_.
+  void project_springs();
+  /// `rhs` = constant_rhs_ plus, in every row, the k_s d_s of its springs (minus at a spring's j).
+  void gather_spring_terms(Points<D>& rhs) const;
   /// The local step at p_, and the global step's right side it makes: constant_rhs_, every
   /// spring's k_s d_s added to its ends' rows, and the obstacle contacts' targets.
   void local_step(Points<D>& rhs);
