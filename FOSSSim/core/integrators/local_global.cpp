@@ -260,7 +260,7 @@ void LocalGlobal<D>::project_springs() {
   for (; s + 1 < last; s += 2) {
     const Spring& a = springs_[s];
     const Spring& b = springs_[s + 1];
-    std::array<__m128d, D> delta;
+    __m128d delta[D];  // (std::array would drop the type's alignment attribute)
     for (int c = 0; c < D; ++c) {
       delta[c] = _mm_sub_pd(_mm_set_pd(p_(b.i, c), p_(a.i, c)), _mm_set_pd(p_(b.j, c), p_(a.j, c)));
     }
