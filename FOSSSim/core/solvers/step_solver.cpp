@@ -244,7 +244,8 @@ std::optional<Vector> StepSolver::solve_suitesparse(const SparseMatrix& A, const
     const int most =
         fresh ? kMaxKrylovIterations
               : std::min(kMaxKrylovIterations, fresh_iterations_ + static_cast<int>(affordable));
-    const KrylovResult result = gmres_.solve(A, b, x, precondition, tolerance, most);
+    // A kept factor that stops paying is dropped as soon as GMRES's rate shows it.
+    const KrylovResult result = gmres_.solve(A, b, x, precondition, tolerance, most, !fresh);
     statistics_.krylov_iterations += result.iterations;
     const double x_norm = x.norm();
     if (result.converged && x.allFinite() &&
