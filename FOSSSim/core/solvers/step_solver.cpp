@@ -51,6 +51,7 @@ void StepSolver::take_pattern(const SparseMatrix& A) {
   lu_analysed_ = false;
   cholesky_.reset();
   umfpack_.reset();
+  mumps_.reset();
   skip_cholesky_ = 0;
   refactor_due_ = true;
   suitesparse_ = false;
@@ -120,11 +121,11 @@ std::optional<Vector> StepSolver::solve_lu(const SparseMatrix& A, const Vector& 
 }
 
 bool StepSolver::factor_cholesky(const SparseMatrix& A) {
-  // CHOLMOD reads one triangle: A's lower one, or the upper one of its symmetric part.
-  const SparseMatrix* target = symmetric_ ? &A : &symmetric_part_.update(A);
+  // Only non-symmetric matrices come here (symmetric ones go to MUMPS): factor their
+  // symmetric part, of which CHOLMOD reads the upper triangle.
+  const SparseMatrix* target = &symmetric_part_.update(A);
   if (!cholesky_) {
-    cholesky_.emplace(CholeskyOptions{.triangle = symmetric_ ? CholeskyOptions::Triangle::kLower
-                                                             : CholeskyOptions::Triangle::kUpper});
+    cholesky_.emplace(CholeskyOptions{.triangle = CholeskyOptions::Triangle::kUpper});
     cholesky_->analyze(*target);
     ++statistics_.analyses;
   }
@@ -152,11 +153,27 @@ bool StepSolver::factor_lu(const SparseMatrix& A) {
   return true;
 }
 
+bool StepSolver::factor_ldlt(const SparseMatrix& A) {
+  if (!mumps_) {
+    mumps_.emplace();
+    mumps_->analyze(A);
+    ++statistics_.analyses;
+  }
+  ++statistics_.factorizations;
+  ++statistics_.ldlt_factorizations;
+  if (!mumps_->factorize(A)) return false;
+  factor_ = Factorization::kMumps;
+  factor_cost_ = kBlockedFlopWeight * mumps_->factor_flops();
+  iteration_cost_ = 4.0 * mumps_->factor_nonzeros() + 2.0 * static_cast<double>(A.nonZeros());
+  return true;
+}
+
 bool StepSolver::refactor(const SparseMatrix& A) {
   refactor_due_ = false;
   charged_ = 0.0;
   first_after_factor_ = true;
-  const bool try_cholesky = symmetric_ || kSymmetricPartForNonSymmetric;
+  if (symmetric_) return factor_ldlt(A);
+  const bool try_cholesky = kSymmetricPartForNonSymmetric;
   if (try_cholesky && skip_cholesky_ == 0) {
     if (factor_cholesky(A)) return true;
     skip_cholesky_ = kLuAfterIndefinite;
@@ -169,6 +186,8 @@ bool StepSolver::refactor(const SparseMatrix& A) {
 void StepSolver::precondition(const double* r, double* z) const {
   if (factor_ == Factorization::kCholesky) {
     cholesky_->solve(r, z, 1);
+  } else if (factor_ == Factorization::kMumps) {
+    mumps_->solve(r, z);
   } else {
     umfpack_->solve(r, z);
   }
@@ -200,7 +219,8 @@ std::optional<Vector> StepSolver::solve_suitesparse(const SparseMatrix& A, const
     const int most =
         fresh ? kMaxKrylovIterations
               : std::min(kMaxKrylovIterations, fresh_iterations_ + static_cast<int>(affordable));
-    const KrylovResult result = gmres_.solve(A, b, x, precondition, tolerance, most);
+    // A kept factor that stops paying is dropped as soon as GMRES's rate shows it.
+    const KrylovResult result = gmres_.solve(A, b, x, precondition, tolerance, most, !fresh);
     statistics_.krylov_iterations += result.iterations;
     const double x_norm = x.norm();
     if (result.converged && x.allFinite() &&
