@@ -48,7 +48,9 @@ TEST(Gmres, SolvesInOneIterationWithAnExactPreconditionerAndInAFewWithANearbyOne
     Vector x = Vector::Zero(50);
     const KrylovResult result = gmres.solve(A, b, x, precondition, 1e-12 * b.norm(), 30);
     EXPECT_TRUE(result.converged);
-    if (nearby == 3.0) EXPECT_EQ(result.iterations, 1);
+    if (nearby == 3.0) {
+      EXPECT_EQ(result.iterations, 1);
+    }
     EXPECT_LE(result.iterations, 8);
     EXPECT_LE((x - reference).norm(), 1e-10 * reference.norm());
   }

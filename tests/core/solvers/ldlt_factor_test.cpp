@@ -63,8 +63,12 @@ TEST(LdltFactor, CountsNegativePivotsAsTheMatrixHasNegativeEigenvalues) {
     SCOPED_TRACE(shift);
     const SparseMatrix A = grid_matrix(12, shift, 301);
     const int expected = negative_eigenvalues(A);
-    if (shift > 4.0) ASSERT_EQ(expected, 0) << "precondition: definite";
-    if (shift < 0.0) ASSERT_GT(expected, 40) << "precondition: strongly indefinite";
+    if (shift > 4.0) {
+      ASSERT_EQ(expected, 0) << "precondition: definite";
+    }
+    if (shift < 0.0) {
+      ASSERT_GT(expected, 40) << "precondition: strongly indefinite";
+    }
     LdltFactor factor;
     factor.analyze(A);
     ASSERT_TRUE(factor.factorize(A));

@@ -176,7 +176,9 @@ TEST(StepSolver, SparseDirectPathFactorsSymmetricMatricesByLdltDefiniteOrNot) {
     const SparseMatrix A = chain_step_matrix<3>(40, l0_factor, 0.0, 1.0, 161, /*gravity=*/true);
     const auto eigenvalues =
         Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Eigen::MatrixXd(A)).eigenvalues();
-    if (l0_factor > 1.0) ASSERT_LT(eigenvalues.minCoeff(), 0.0) << "precondition: indefinite";
+    if (l0_factor > 1.0) {
+      ASSERT_LT(eigenvalues.minCoeff(), 0.0) << "precondition: indefinite";
+    }
     const Vector b = Random(162).uniform_vector(120, -1.0, 1.0);
     StepSolver solver(true, SolverChoice::kCholmod);
     expect_solves(A, solver.solve(A, b), b);
