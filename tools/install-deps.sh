@@ -3,10 +3,12 @@
 # Idempotent: installs only what is missing, and touches the network only then.
 set -eu
 
+# libmumps-seq-dev: the symmetric indefinite factorization of step matrices (sequential MUMPS).
 # clang, libclang-rt-14-dev (libFuzzer and clang's sanitizer runtimes) and llvm (the symbolizer
 # of sanitizer reports) build and run the fuzz targets of fuzz/.
 PACKAGES="cmake ninja-build g++ pkg-config
   libeigen3-dev libtinyxml2-dev libcli11-dev nlohmann-json3-dev libsuitesparse-dev libopenblas-dev
+  libmumps-seq-dev
   libgtest-dev libbenchmark-dev python3
   libcairo2-dev libssl-dev freeglut3-dev ffmpeg xvfb xauth
   clang libclang-rt-14-dev llvm"

@@ -5,6 +5,10 @@
 #include <cmath>
 #include <string_view>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "core/collisions/proximity.h"
 #include "core/error.h"
 
@@ -28,7 +32,8 @@ void LocalGlobal<D>::prepare() {
     if (fi < 0 && fj < 0) continue;  // both ends eliminated: no effect on the unknowns
     springs_.push_back({s.i, s.j, fi, fj, s.k, s.l0, s.b});
   }
-  d_ = Points<D>::Zero(static_cast<Eigen::Index>(springs_.size()), D);
+  kd_ = Points<D>::Zero(static_cast<Eigen::Index>(springs_.size()), D);
+  list_incidences();
   // Q for the anchors there are now (the pins; the drag spring, if already grabbed). The pins'
   // targets only enter the right side, so they can wait for the first step.
   anchors_.clear();
@@ -39,6 +44,24 @@ void LocalGlobal<D>::prepare() {
   for (int p : pinned_) anchors_.push_back({p, settings_.penalty_weight, Eigen::Vector3d::Zero()});
   for (const AnchorTerm& a : anchors_) factored_anchors_.emplace_back(a.i, a.k);
   factor();
+}
+
+template <int D>
+void LocalGlobal<D>::list_incidences() {
+  const int n = free_.num_particles();
+  incidence_start_.assign(n + 1, 0);
+  for (const Spring& s : springs_) {
+    if (s.fi >= 0) ++incidence_start_[s.fi + 1];
+    if (s.fj >= 0) ++incidence_start_[s.fj + 1];
+  }
+  for (int f = 0; f < n; ++f) incidence_start_[f + 1] += incidence_start_[f];
+  incidence_.resize(incidence_start_[n]);
+  std::vector<int> next(incidence_start_.begin(), incidence_start_.end() - 1);
+  for (std::size_t k = 0; k < springs_.size(); ++k) {  // in spring order
+    const int id = static_cast<int>(k) + 1;
+    if (springs_[k].fi >= 0) incidence_[next[springs_[k].fi]++] = id;
+    if (springs_[k].fj >= 0) incidence_[next[springs_[k].fj]++] = -id;
+  }
 }
 
 template <int D>
@@ -76,9 +99,7 @@ void LocalGlobal<D>::iterate() {
   if (settings_.acceleration == Acceleration::kAnderson) return iterate_anderson();
   if (settings_.acceleration == Acceleration::kChebyshev) return iterate_chebyshev();
   for (int iteration = 1; iteration <= settings_.iterations; ++iteration) {
-    rhs_ = constant_rhs_;
-    add_spring_directions(rhs_);
-    add_contact_targets(rhs_);
+    local_step(rhs_);
     last_change_ = global_solve(rhs_);
     last_iterations_ = iteration;
     if (settings_.tolerance > 0.0 && last_change_ <= settings_.tolerance) break;
@@ -229,16 +250,74 @@ void LocalGlobal<D>::assemble_constant_rhs(const State& state) {
 }
 
 template <int D>
-void LocalGlobal<D>::add_spring_directions(Points<D>& rhs) {
-  for (std::size_t s = 0; s < springs_.size(); ++s) {
+void LocalGlobal<D>::project_springs() {
+  const std::size_t last = springs_.size();
+  std::size_t s = 0;
+#if defined(__SSE2__)
+  // Two springs at a time: one packed square root and one packed division for both (they
+  // bound the scalar loop's speed). Each lane does the scalar loop's operations in its order,
+  // so the bits are the same.
+  for (; s + 1 < last; s += 2) {
+    const Spring& a = springs_[s];
+    const Spring& b = springs_[s + 1];
+    __m128d delta[D];  // (std::array would drop the type's alignment attribute)
+    for (int c = 0; c < D; ++c) {
+      delta[c] = _mm_sub_pd(_mm_set_pd(p_(b.i, c), p_(a.i, c)), _mm_set_pd(p_(b.j, c), p_(a.j, c)));
+    }
+    __m128d squared = _mm_mul_pd(delta[0], delta[0]);
+    for (int c = 1; c < D; ++c) squared = _mm_add_pd(squared, _mm_mul_pd(delta[c], delta[c]));
+    const __m128d length = _mm_sqrt_pd(squared);
+    const __m128d scale = _mm_div_pd(_mm_set_pd(b.l0, a.l0), length);
+    alignas(16) std::array<double, 2> lengths;
+    alignas(16) std::array<std::array<double, 2>, D> terms;
+    _mm_store_pd(lengths.data(), length);
+    const __m128d k = _mm_set_pd(b.k, a.k);
+    for (int c = 0; c < D; ++c) {
+      _mm_store_pd(terms[c].data(), _mm_mul_pd(k, _mm_mul_pd(scale, delta[c])));
+    }
+    for (int lane = 0; lane < 2; ++lane) {
+      if (lengths[lane] > 0.0) {
+        for (int c = 0; c < D; ++c) kd_(s + lane, c) = terms[c][lane];
+      }
+    }
+  }
+#endif
+  for (; s < last; ++s) {
     const Spring& spring = springs_[s];
     const Vec<D> delta = (p_.row(spring.i) - p_.row(spring.j)).transpose();
     const double length = delta.norm();
-    // Local step: the rest-length vector nearest the current one (kept when the length is 0).
-    if (length > 0.0) d_.row(s) = (spring.l0 / length) * delta.transpose();
-    if (spring.fi >= 0) rhs.row(spring.fi) += spring.k * d_.row(s);
-    if (spring.fj >= 0) rhs.row(spring.fj) -= spring.k * d_.row(s);
+    // Local step: the rest-length vector nearest the current one d_s (kept when the length is
+    // 0), times k_s.
+    if (length > 0.0) kd_.row(s) = spring.k * ((spring.l0 / length) * delta.transpose());
   }
+}
+
+template <int D>
+void LocalGlobal<D>::gather_spring_terms(Points<D>& rhs) const {
+  rhs.resize(constant_rhs_.rows(), D);
+  for (int f = 0; f < free_.num_particles(); ++f) {
+    // The same sums, in the same order, as adding each spring's term to both its ends in
+    // spring order: every row's springs are listed in increasing order.
+    Eigen::Matrix<double, 1, D> sum = constant_rhs_.row(f);
+    for (int e = incidence_start_[f]; e < incidence_start_[f + 1]; ++e) {
+      const int end = incidence_[e];
+      if (end > 0) {
+        sum += kd_.row(end - 1);
+      } else {
+        sum -= kd_.row(-end - 1);
+      }
+    }
+    rhs.row(f) = sum;
+  }
+}
+
+template <int D>
+void LocalGlobal<D>::local_step(Points<D>& rhs) {
+  // Every spring's term first, then every row's sum of its springs' terms: a scatter of each
+  // term into both its ends' rows would chain each row's additions through memory.
+  project_springs();
+  gather_spring_terms(rhs);
+  add_contact_targets(rhs);
 }
 
 template <int D>

@@ -134,7 +134,15 @@ class LocalGlobal final : public Integrator {
   /// Assembles and factors Q for anchors_ and contacts_.
   void factor();
   void assemble_constant_rhs(const State& state);
-  void add_spring_directions(Points<D>& rhs);
+  /// Lists every free particle's springs (incidence_start_, incidence_).
+  void list_incidences();
+  /// The local step of every spring: kd_.
+  void project_springs();
+  /// `rhs` = constant_rhs_ plus, in every row, the k_s d_s of its springs (minus at a spring's j).
+  void gather_spring_terms(Points<D>& rhs) const;
+  /// The local step at p_, and the global step's right side it makes: constant_rhs_, every
+  /// spring's k_s d_s added to its ends' rows, and the obstacle contacts' targets.
+  void local_step(Points<D>& rhs);
   /// The local step of the obstacle contacts: k times each one's target.
   void add_contact_targets(Points<D>& rhs) const;
   double global_solve(Points<D>& rhs);
@@ -172,9 +180,14 @@ class LocalGlobal final : public Integrator {
   SpdSolver solver_;
   Vector start_q_;  // qⁿ, for the energy of accelerated iterations
   AndersonAcceleration anderson_;
-  Points<D> y_;             // pⁿ + h vⁿ, every particle
-  Points<D> p_;             // the current iterate, every particle
-  Points<D> d_;             // spring directions times rest lengths, kept between iterations
+  Points<D> y_;  // pⁿ + h vⁿ, every particle
+  Points<D> p_;  // the current iterate, every particle
+  // k_s d_s: the springs' directions times rest lengths and stiffnesses, kept between
+  // iterations (a spring of length 0 keeps its last direction)
+  Points<D> kd_;
+  // The springs of free particle f: incidence_[incidence_start_[f] .. incidence_start_[f+1]),
+  // s + 1 where it is the spring's i, -(s + 1) where it is its j, in increasing s.
+  std::vector<int> incidence_start_, incidence_;
   Points<D> constant_rhs_;  // the right side without the springs' directions
   Points<D> rhs_;
   Vector explicit_gradient_;

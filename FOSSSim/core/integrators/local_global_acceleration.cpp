@@ -78,17 +78,13 @@ void LocalGlobal<D>::iterate_anderson() {
   Vector fallback;
   double accepted = std::numeric_limits<double>::infinity();
   for (int iteration = 1; iteration <= settings_.iterations; ++iteration) {
-    rhs_ = constant_rhs_;
-    add_spring_directions(rhs_);
-    add_contact_targets(rhs_);
+    local_step(rhs_);
     double round_off = 0.0;
     double value = energy(&round_off);
     if (iteration > 1 && !(value < accepted + round_off)) {
       set_free_positions(fallback);
       anderson_.reset();
-      rhs_ = constant_rhs_;
-      add_spring_directions(rhs_);
-      add_contact_targets(rhs_);
+      local_step(rhs_);
       value = energy(&round_off);
     }
     accepted = value;
@@ -116,9 +112,7 @@ void LocalGlobal<D>::iterate_chebyshev() {
   double omega = 1.0;
   for (int iteration = 1; iteration <= settings_.iterations; ++iteration) {
     const Vector current = free_positions();
-    rhs_ = constant_rhs_;
-    add_spring_directions(rhs_);
-    add_contact_targets(rhs_);
+    local_step(rhs_);
     last_change_ = global_solve(rhs_);
     last_iterations_ = iteration;
     if (settings_.tolerance > 0.0 && last_change_ <= settings_.tolerance) break;

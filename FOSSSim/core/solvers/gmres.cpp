@@ -5,8 +5,8 @@
 namespace fosssim {
 
 KrylovResult Gmres::solve(const SparseMatrix& A, const Vector& b, Vector& x,
-                          const Preconditioner& precondition, double tolerance,
-                          int max_iterations) {
+                          const Preconditioner& precondition, double tolerance, int max_iterations,
+                          bool give_up_early) {
   const Eigen::Index n = b.size();
   const int m = max_iterations;
   KrylovResult result;
@@ -48,6 +48,12 @@ KrylovResult Gmres::solve(const SparseMatrix& A, const Vector& b, Vector& x,
     g[j + 1] = -sines[j] * g[j];
     g[j] = cosines[j] * g[j];
     if (std::abs(g[j + 1]) <= tolerance || next == 0.0) break;
+    if (give_up_early && k >= 3) {
+      // ‖r_k‖ = |g[k]|; at the mean rate so far, ‖r_m‖ ≈ ‖r_k‖ (‖r_k‖ / β)^((m - k) / k).
+      const double reduction = std::abs(g[j + 1]) / beta;
+      const double projected = std::abs(g[j + 1]) * std::pow(reduction, double(m - k) / k);
+      if (projected > tolerance) break;
+    }
   }
   // x += Z y with H y = g (upper triangular, k × k).
   const Vector y = hessenberg.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(g.head(k));

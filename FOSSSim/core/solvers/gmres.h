@@ -28,9 +28,13 @@ class Gmres {
   using Preconditioner = std::function<void(const double* r, double* z)>;
 
   /// Improves x (in/out, the start) until ‖b - A x‖ ≤ tolerance, for at most max_iterations
-  /// (≥ 1) iterations without restarting.
+  /// (≥ 1) iterations without restarting. With `give_up_early`, stops as soon as (from the
+  /// third iteration on) the residual's mean rate of decrease so far would not reach the
+  /// tolerance within max_iterations: a preconditioner far from A is dropped after a few
+  /// iterations rather than after all of them.
   KrylovResult solve(const SparseMatrix& A, const Vector& b, Vector& x,
-                     const Preconditioner& precondition, double tolerance, int max_iterations);
+                     const Preconditioner& precondition, double tolerance, int max_iterations,
+                     bool give_up_early = false);
 
  private:
   Eigen::MatrixXd basis_;           // V: orthonormal basis of the Krylov space, n × (k+1)

@@ -70,6 +70,7 @@ void StepSolver::take_pattern(const SparseMatrix& A) {
   lu_analysed_ = false;
   cholesky_.reset();
   umfpack_.reset();
+  mumps_.reset();
   transposed_.clear();
   skip_cholesky_ = 0;
   refactor_due_ = true;
@@ -144,11 +145,10 @@ void StepSolver::symmetrize(const SparseMatrix& A) {
 }
 
 bool StepSolver::factor_cholesky(const SparseMatrix& A) {
-  const SparseMatrix* target = &A;
-  if (!symmetric_) {
-    symmetrize(A);
-    target = &symmetric_part_;
-  }
+  // Only non-symmetric matrices come here (symmetric ones go to MUMPS): factor their
+  // symmetric part.
+  symmetrize(A);
+  const SparseMatrix* target = &symmetric_part_;
   if (!cholesky_) {
     cholesky_.emplace(CholeskyOptions{});
     cholesky_->analyze(*target);
@@ -178,11 +178,27 @@ bool StepSolver::factor_lu(const SparseMatrix& A) {
   return true;
 }
 
+bool StepSolver::factor_ldlt(const SparseMatrix& A) {
+  if (!mumps_) {
+    mumps_.emplace();
+    mumps_->analyze(A);
+    ++statistics_.analyses;
+  }
+  ++statistics_.factorizations;
+  ++statistics_.ldlt_factorizations;
+  if (!mumps_->factorize(A)) return false;
+  factor_ = Factorization::kMumps;
+  factor_cost_ = kBlockedFlopWeight * mumps_->factor_flops();
+  iteration_cost_ = 4.0 * mumps_->factor_nonzeros() + 2.0 * static_cast<double>(A.nonZeros());
+  return true;
+}
+
 bool StepSolver::refactor(const SparseMatrix& A) {
   refactor_due_ = false;
   charged_ = 0.0;
   first_after_factor_ = true;
-  const bool try_cholesky = symmetric_ || kSymmetricPartForNonSymmetric;
+  if (symmetric_) return factor_ldlt(A);
+  const bool try_cholesky = kSymmetricPartForNonSymmetric;
   if (try_cholesky && skip_cholesky_ == 0) {
     if (factor_cholesky(A)) return true;
     skip_cholesky_ = kLuAfterIndefinite;
@@ -195,6 +211,8 @@ bool StepSolver::refactor(const SparseMatrix& A) {
 void StepSolver::precondition(const double* r, double* z) const {
   if (factor_ == Factorization::kCholesky) {
     cholesky_->solve(r, z, 1);
+  } else if (factor_ == Factorization::kMumps) {
+    mumps_->solve(r, z);
   } else {
     umfpack_->solve(r, z);
   }
@@ -226,7 +244,8 @@ std::optional<Vector> StepSolver::solve_suitesparse(const SparseMatrix& A, const
     const int most =
         fresh ? kMaxKrylovIterations
               : std::min(kMaxKrylovIterations, fresh_iterations_ + static_cast<int>(affordable));
-    const KrylovResult result = gmres_.solve(A, b, x, precondition, tolerance, most);
+    // A kept factor that stops paying is dropped as soon as GMRES's rate shows it.
+    const KrylovResult result = gmres_.solve(A, b, x, precondition, tolerance, most, !fresh);
     statistics_.krylov_iterations += result.iterations;
     const double x_norm = x.norm();
     if (result.converged && x.allFinite() &&

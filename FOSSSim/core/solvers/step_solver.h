@@ -9,6 +9,7 @@
 
 #include "core/solvers/cholesky_factor.h"
 #include "core/solvers/gmres.h"
+#include "core/solvers/ldlt_factor.h"
 #include "core/solvers/lu_factor.h"
 #include "core/types.h"
 
@@ -18,7 +19,7 @@ namespace fosssim {
 enum class SolverChoice {
   kAuto,     ///< Eigen below StepSolver::kCholmodFromSize unknowns, SuiteSparse from there on
   kEigen,    ///< Eigen's sparse LDLᵀ and LU, factored at every solve
-  kCholmod,  ///< SuiteSparse: CHOLMOD's Cholesky or UMFPACK's LU, reused through GMRES
+  kCholmod,  ///< sparse direct libraries (MUMPS, CHOLMOD, UMFPACK), reused through GMRES
 };
 
 /// What solved the last system.
@@ -27,16 +28,18 @@ enum class Factorization {
   kLU,        ///< Eigen's LU of A
   kCholesky,  ///< GMRES on A with a CHOLMOD Cholesky factor of A (or of a nearby matrix)
   kUmfpack,   ///< GMRES on A with an UMFPACK LU factor of A (or of a nearby matrix)
+  kMumps,     ///< GMRES on A with a MUMPS LDLᵀ factor of A (or of a nearby matrix)
 };
 
 /// Counts of the work done so far, for tests and benchmarks.
 struct SolveStatistics {
   std::int64_t solves = 0;
-  std::int64_t factorizations = 0;     ///< numeric factorizations (any library), tried or done
-  std::int64_t analyses = 0;           ///< symbolic analyses (new patterns)
-  std::int64_t krylov_iterations = 0;  ///< GMRES iterations over all solves
-  std::int64_t lu_factorizations = 0;  ///< of them, UMFPACK's (A was not positive definite)
-  std::int64_t direct_fallbacks = 0;   ///< GMRES did not converge: Eigen's LU or LDLᵀ solved
+  std::int64_t factorizations = 0;       ///< numeric factorizations (any library), tried or done
+  std::int64_t analyses = 0;             ///< symbolic analyses (new patterns)
+  std::int64_t krylov_iterations = 0;    ///< GMRES iterations over all solves
+  std::int64_t lu_factorizations = 0;    ///< of them, UMFPACK's (after a failed Cholesky)
+  std::int64_t ldlt_factorizations = 0;  ///< of them, MUMPS's (A symmetric)
+  std::int64_t direct_fallbacks = 0;     ///< GMRES did not converge: Eigen's LU or LDLᵀ solved
 };
 
 /// Solves the systems A x = b of an implicit integrator: one step matrix
@@ -51,18 +54,19 @@ struct SolveStatistics {
 ///   accuracy); otherwise, and as the fallback, sparse LU with partial pivoting (correct for
 ///   the non-symmetric A of damped springs and vortices). The symbolic analysis is reused
 ///   while the pattern stays the same; the numbers are factored at every solve.
-/// - SuiteSparse (large systems): GMRES on A itself, preconditioned by a factor of an earlier
-///   step matrix or of this one: CHOLMOD's supernodal Cholesky factor when A is symmetric
-///   positive definite, and UMFPACK's LU factor otherwise (a compressed spring makes A
-///   indefinite, damping and vortices make it non-symmetric). After Cholesky fails, the next
-///   few factorizations go straight to LU. The factor is kept across solves, Newton iterations
-///   and steps while GMRES converges fast with it: the iterations beyond those a fresh factor
-///   needs are charged at their cost, and A is factored again once they have cost as much as
-///   a factorization (a rent-or-buy rule: a run never pays more than about twice what the best
-///   choice of refactorizations would). When a kept factor fails (the matrices change too much
-///   between solves, as for a cloth falling at h = 1/30 s), the next 1, 2, 4, ... 16 solves
-///   factor at once without trying it. The cost model counts operations, never clocks, so the
-///   same input gives the same bits. Each library's symbolic analysis is done once per pattern.
+/// - Sparse direct libraries (large systems): GMRES on A itself, preconditioned by a factor of
+///   an earlier step matrix or of this one. A symmetric A, positive definite or not (a
+///   compressed spring makes it indefinite), is factored L D Lᵀ by MUMPS; a non-symmetric one
+///   (damping, vortices) by CHOLMOD's supernodal Cholesky of its symmetric part, or by
+///   UMFPACK's LU of A when that part is not positive definite or does not precondition well
+///   (after Cholesky fails, the next few factorizations go straight to LU). The factor is kept
+///   across solves, Newton iterations and steps while GMRES converges fast with it: the iterations
+///   beyond those a fresh factor needs are charged at their cost, and A is factored again once they
+///   have cost as much as a factorization (a rent-or-buy rule: a run never pays more than about
+///   twice what the best choice of refactorizations would). When a kept factor fails (the matrices
+///   change too much between solves, as for a cloth falling at h = 1/30 s), the next 1, 2, 4, ...
+///   16 solves factor at once without trying it. The cost model counts operations, never clocks, so
+///   the same input gives the same bits. Each library's symbolic analysis is done once per pattern.
 class StepSolver {
  public:
   /// Systems of at least this many unknowns go to SuiteSparse under SolverChoice::kAuto
@@ -92,6 +96,7 @@ class StepSolver {
   bool refactor(const SparseMatrix& A);
   bool factor_cholesky(const SparseMatrix& A);
   bool factor_lu(const SparseMatrix& A);
+  bool factor_ldlt(const SparseMatrix& A);
   /// z = M⁻¹ r with the current factor.
   void precondition(const double* r, double* z) const;
   /// symmetric_part_ = (A + Aᵀ)/2 over A's pattern.
@@ -115,6 +120,7 @@ class StepSolver {
   SparseMatrix symmetric_part_;
   std::optional<CholeskyFactor> cholesky_;
   std::optional<LuFactor> umfpack_;
+  std::optional<LdltFactor> mumps_;
   Factorization factor_ = Factorization::kCholesky;  // which one preconditions now
   int skip_cholesky_ = 0;                            // factorizations left that go straight to LU
   Gmres gmres_;

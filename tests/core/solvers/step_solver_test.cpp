@@ -12,7 +12,12 @@
 //   pivoting loses every digit, falls back to LU through the residual check;
 // - singular matrices give nullopt;
 // - the symbolic analysis is reused for a second matrix of the same pattern, and a new pattern
-//   (same size and number of nonzeros, other positions; or another size) is analysed afresh.
+//   (same size and number of nonzeros, other positions; or another size) is analysed afresh;
+// - the sparse direct path (SolverChoice::kCholmod, taken from 1000 unknowns under kAuto):
+//   symmetric matrices, definite or indefinite, are factored L D Lᵀ by MUMPS and non-symmetric
+//   ones through CHOLMOD or UMFPACK, every answer to round-off; along a sequence of nearby
+//   matrices a factor is kept (fewer factorizations than solves, GMRES making up the
+//   difference) and the answers stay at round-off; singular matrices give nullopt.
 
 #include "core/solvers/step_solver.h"
 
@@ -162,6 +167,64 @@ TEST(StepSolver, ReusesTheAnalysisForTheSamePatternAndRedoesItForANewOne) {
     const SparseMatrix bigger = chain_step_matrix<2>(5, 0.5, 0.0, 0.1, 158);
     const Vector b10 = Vector::LinSpaced(10, -1.0, 1.0);
     expect_solves(bigger, solver.solve(bigger, b10), b10);
+  }
+}
+
+TEST(StepSolver, SparseDirectPathFactorsSymmetricMatricesByLdltDefiniteOrNot) {
+  for (const double l0_factor : {0.5, 3.0}) {  // stretched: definite; compressed: indefinite
+    SCOPED_TRACE(l0_factor);
+    const SparseMatrix A = chain_step_matrix<3>(40, l0_factor, 0.0, 1.0, 161, /*gravity=*/true);
+    const auto eigenvalues =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Eigen::MatrixXd(A)).eigenvalues();
+    if (l0_factor > 1.0) ASSERT_LT(eigenvalues.minCoeff(), 0.0) << "precondition: indefinite";
+    const Vector b = Random(162).uniform_vector(120, -1.0, 1.0);
+    StepSolver solver(true, SolverChoice::kCholmod);
+    expect_solves(A, solver.solve(A, b), b);
+    EXPECT_EQ(solver.last_factorization(), Factorization::kMumps);
+    EXPECT_EQ(solver.statistics().ldlt_factorizations, 1);
+  }
+}
+
+TEST(StepSolver, SparseDirectPathSolvesNonSymmetricMatrices) {
+  const SparseMatrix A = chain_step_matrix<2>(40, 0.5, 3.0, 0.1, 163);
+  ASSERT_GT(asymmetry(Eigen::MatrixXd(A)), 1e-3) << "precondition: A is not symmetric";
+  const Vector b = Random(164).uniform_vector(80, -1.0, 1.0);
+  StepSolver solver(false, SolverChoice::kCholmod);
+  expect_solves(A, solver.solve(A, b), b);
+  EXPECT_TRUE(solver.last_factorization() == Factorization::kCholesky ||
+              solver.last_factorization() == Factorization::kUmfpack);
+  EXPECT_EQ(solver.statistics().ldlt_factorizations, 0);
+}
+
+TEST(StepSolver, SparseDirectPathKeepsAFactorForNearbyMatrices) {
+  for (const bool symmetric : {true, false}) {
+    SCOPED_TRACE(symmetric);
+    const SparseMatrix base =
+        chain_step_matrix<3>(60, 3.0, symmetric ? 0.0 : 3.0, 0.5, 165, /*gravity=*/true);
+    StepSolver solver(symmetric, SolverChoice::kCholmod);
+    Random random(166);
+    for (int k = 0; k < 12; ++k) {
+      SparseMatrix A = base;
+      // As close as the matrices of successive Newton iterations near convergence.
+      for (int e = 0; e < A.nonZeros(); ++e) A.valuePtr()[e] *= 1.0 + 1e-8 * k;
+      A.diagonal() += Vector::Constant(A.rows(), 1e-8 * k);
+      const Vector b = random.uniform_vector(static_cast<int>(A.rows()), -1.0, 1.0);
+      expect_solves(A, solver.solve(A, b), b);
+    }
+    EXPECT_LT(solver.statistics().factorizations, 12) << "a factor is kept for nearby matrices";
+    EXPECT_GT(solver.statistics().krylov_iterations, 12);
+    EXPECT_EQ(solver.statistics().direct_fallbacks, 0);
+  }
+}
+
+TEST(StepSolver, SparseDirectPathReportsSingularMatrices) {
+  Eigen::MatrixXd zero_row = Eigen::MatrixXd::Identity(4, 4) * 2.0;
+  zero_row(0, 1) = zero_row(1, 0) = 1.0;
+  for (bool symmetric : {true, false}) {
+    StepSolver solver(symmetric, SolverChoice::kCholmod);
+    SparseMatrix with_zero = sparse(zero_row);
+    with_zero.coeffRef(3, 3) = 0.0;  // an explicit zero on the diagonal, as in a real pattern
+    EXPECT_FALSE(solver.solve(with_zero, Vector::Ones(4)).has_value()) << symmetric;
   }
 }
 

@@ -1,0 +1,104 @@
+// Tests of LdltFactor (core/solvers/ldlt_factor.h), MUMPS's L D Lᵀ of symmetric matrices.
+//
+// Math checked:
+// - solutions of symmetric positive definite and indefinite systems agree with dense LU of
+//   the same matrix to round-off;
+// - Sylvester's law of inertia: the number of negative pivots of D equals the number of
+//   negative eigenvalues of A (counted by a dense symmetric eigensolver), on matrices with
+//   none, a few and many;
+// - one analysis serves any number of factorizations of the pattern, with new values;
+// - a singular matrix is reported, not solved.
+
+#include "core/solvers/ldlt_factor.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "support/random.h"
+
+namespace fosssim::testing {
+namespace {
+
+/// A random symmetric matrix with the sparsity of a 2D grid's 5-point Laplacian (n × n
+/// points), diagonal `shift` + a random number in [0, 1), off-diagonal in [-1, 1): `shift`
+/// controls how many eigenvalues are negative.
+SparseMatrix grid_matrix(int n, double shift, unsigned seed) {
+  Random random(seed);
+  std::vector<Triplet> triplets;
+  const auto index = [n](int i, int j) { return i * n + j; };
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      triplets.emplace_back(index(i, j), index(i, j), shift + random.uniform(0.0, 1.0));
+      for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{0, 1}}) {
+        if (i + di >= n || j + dj >= n) continue;
+        const double value = random.uniform(-1.0, 1.0);
+        triplets.emplace_back(index(i, j), index(i + di, j + dj), value);
+        triplets.emplace_back(index(i + di, j + dj), index(i, j), value);
+      }
+    }
+  }
+  SparseMatrix A(n * n, n * n);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  return A;
+}
+
+int negative_eigenvalues(const SparseMatrix& A) {
+  const Eigen::VectorXd eigenvalues =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Eigen::MatrixXd(A)).eigenvalues();
+  return static_cast<int>((eigenvalues.array() < 0.0).count());
+}
+
+void expect_solves(const LdltFactor& factor, const SparseMatrix& A, unsigned seed) {
+  const Vector b = Random(seed).uniform_vector(static_cast<int>(A.rows()), -1.0, 1.0);
+  Vector x(b.size());
+  factor.solve(b.data(), x.data());
+  const Vector reference = Eigen::MatrixXd(A).partialPivLu().solve(b);
+  EXPECT_LE((A * x - b).norm(), 1e-11 * (b.norm() + Eigen::MatrixXd(A).norm() * x.norm()));
+  EXPECT_LE((x - reference).norm(), 1e-9 * reference.norm());
+}
+
+TEST(LdltFactor, CountsNegativePivotsAsTheMatrixHasNegativeEigenvalues) {
+  for (const double shift : {4.5, 0.5, -1.0}) {  // definite, a few negative, many negative
+    SCOPED_TRACE(shift);
+    const SparseMatrix A = grid_matrix(12, shift, 301);
+    const int expected = negative_eigenvalues(A);
+    if (shift > 4.0) ASSERT_EQ(expected, 0) << "precondition: definite";
+    if (shift < 0.0) ASSERT_GT(expected, 40) << "precondition: strongly indefinite";
+    LdltFactor factor;
+    factor.analyze(A);
+    ASSERT_TRUE(factor.factorize(A));
+    EXPECT_EQ(factor.negative_pivots(), expected);
+    expect_solves(factor, A, 302);
+    EXPECT_GT(factor.factor_nonzeros(), A.nonZeros() / 2.0);
+    EXPECT_GT(factor.factor_flops(), 0.0);
+  }
+}
+
+TEST(LdltFactor, OneAnalysisServesNewValuesOfThePattern) {
+  LdltFactor factor;
+  factor.analyze(grid_matrix(10, 4.5, 303));
+  for (unsigned seed = 304; seed < 308; ++seed) {
+    const SparseMatrix A = grid_matrix(10, seed % 2 == 0 ? 4.5 : -0.5, seed);
+    ASSERT_TRUE(factor.factorize(A));
+    EXPECT_EQ(factor.negative_pivots(), negative_eigenvalues(A));
+    expect_solves(factor, A, seed + 100);
+  }
+}
+
+TEST(LdltFactor, ReportsASingularMatrix) {
+  SparseMatrix A = grid_matrix(6, 3.0, 309);
+  // Make row and column 7 zero, keeping the entries in the pattern.
+  for (int k = 0; k < A.outerSize(); ++k) {
+    for (SparseMatrix::InnerIterator it(A, k); it; ++it) {
+      if (it.row() == 7 || it.col() == 7) it.valueRef() = 0.0;
+    }
+  }
+  LdltFactor factor;
+  factor.analyze(A);
+  EXPECT_FALSE(factor.factorize(A));
+  EXPECT_FALSE(factor.is_factored());
+}
+
+}  // namespace
+}  // namespace fosssim::testing
