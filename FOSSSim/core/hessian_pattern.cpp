@@ -23,6 +23,8 @@ HessianPattern::HessianPattern(int dim, std::vector<int> particle_map, int size)
 
 void HessianPattern::clear() {
   writes_.clear();
+  first_pass_ = kNoPass;
+  repeated_ = false;
   outer_.clear();
   diagonal_slots_.clear();
   begin_scatter();
@@ -37,6 +39,14 @@ int HessianPattern::find_slot(int row, int col, const SparseMatrix& matrix) cons
 }
 
 bool HessianPattern::finish(SparseMatrix& matrix) {
+  // A second pass that repeats the first is kept once; the list loses the spare room that
+  // recording left by doubling it (it would be kept for the whole run).
+  const auto same_write = [](const Write& a, const Write& b) { return a.i == b.i && a.j == b.j; };
+  repeated_ = first_pass_ != kNoPass && writes_.size() == 2 * first_pass_ &&
+              std::equal(writes_.begin(), writes_.begin() + first_pass_,
+                         writes_.begin() + first_pass_, same_write);
+  if (repeated_) writes_.resize(first_pass_);
+  writes_.shrink_to_fit();
   const int D = dim_;
   const auto map_dof = [&](int dof) {
     const int p = map_[dof / D];
@@ -114,6 +124,12 @@ bool HessianPattern::finish(SparseMatrix& matrix) {
   for (int i = 0; i < size_; ++i) diagonal_slots_[i] = find_slot(i, i, matrix);
   begin_scatter();
   return true;
+}
+
+void HessianPattern::begin_second_pass() {
+  if (first_pass_ == kNoPass || cursor_ != first_pass_) broken_ = true;
+  if (repeated_) cursor_ = 0;
+  second_pass_ = true;
 }
 
 void HessianPattern::scatter_entry(int row, int col, double value, double* values) {

@@ -18,6 +18,10 @@ namespace fosssim {
 /// (the fixed-particle rules of core/systems/step_matrix.h). Every diagonal entry of the matrix
 /// is in the pattern, for the mass the assembler adds last.
 ///
+/// An assembly may write in two passes (StepMatrix: hessX, then hessV). When the second pass
+/// writes the same blocks in the same order as the first (springs with damping do), the
+/// sequence is kept once and walked twice.
+///
 /// Values of one entry are summed in write order, starting from -0.0 (the exact identity of
 /// floating-point addition), which is how Eigen's setFromTriplets sums duplicates: an
 /// assembly gives the same bits either way. A block's D×D values must occupy D consecutive
@@ -38,6 +42,8 @@ class HessianPattern {
   void record_block(int pi, int pj) { writes_.push_back({pi, pj, -1}); }
   /// Recording: the next write is the single entry (row, col).
   void record_entry(int row, int col) { writes_.push_back({-1 - row, col, -1}); }
+  /// Recording: the writes that follow are the second pass.
+  void mark_second_pass() { first_pass_ = writes_.size(); }
   /// Builds the pattern of the recorded writes and every diagonal entry into `matrix` (size ×
   /// size, values -0.0) and finds every write's slot. Returns false when a block does not sit
   /// as described above: the pattern cannot be used (assemble from triplets instead).
@@ -47,14 +53,19 @@ class HessianPattern {
   void begin_scatter() {
     cursor_ = 0;
     broken_ = false;
+    second_pass_ = false;
   }
+  /// Scattering: the writes that follow are the second pass, as when recording.
+  void begin_second_pass();
   /// Adds scale·H to the slots of the next write, which must be the block (pi, pj).
   template <int D>
   void scatter_block(int pi, int pj, double scale, const Mat<D>& H, double* values);
   /// Adds value to the slot of the next write, which must be the entry (row, col).
   void scatter_entry(int row, int col, double value, double* values);
   /// True when every recorded write was made, in order, and no other: the values are complete.
-  bool scattered_all() const { return !broken_ && cursor_ == writes_.size(); }
+  bool scattered_all() const {
+    return !broken_ && cursor_ == writes_.size() && second_pass_ == (first_pass_ != kNoPass);
+  }
 
   /// The slot of the diagonal entry (i, i) of the matrix.
   int diagonal_slot(int i) const { return diagonal_slots_[i]; }
@@ -76,8 +87,12 @@ class HessianPattern {
   std::vector<Write> writes_;
   std::vector<SparseMatrix::StorageIndex> outer_;  // the matrix's column starts
   std::vector<int> diagonal_slots_;
+  static constexpr std::size_t kNoPass = static_cast<std::size_t>(-1);
+  std::size_t first_pass_ = kNoPass;  // writes of the first pass, when a second was marked
+  bool repeated_ = false;             // the second pass is the first again: kept once
   std::size_t cursor_ = 0;
   bool broken_ = false;
+  bool second_pass_ = false;
 };
 
 template <int D>

@@ -31,8 +31,8 @@ struct CholeskyFactor::Cholmod {
 
 namespace {
 
-/// A's storage as CHOLMOD's matrix, without copying; stype -1: only the lower triangle is read.
-cholmod_sparse view_lower(const SparseMatrix& A) {
+/// A's storage as CHOLMOD's matrix, without copying, of which CHOLMOD reads one triangle.
+cholmod_sparse view_triangle(const SparseMatrix& A, CholeskyOptions::Triangle triangle) {
   cholmod_sparse view{};
   view.nrow = static_cast<std::size_t>(A.rows());
   view.ncol = static_cast<std::size_t>(A.cols());
@@ -40,7 +40,7 @@ cholmod_sparse view_lower(const SparseMatrix& A) {
   view.p = const_cast<SparseMatrix::StorageIndex*>(A.outerIndexPtr());
   view.i = const_cast<SparseMatrix::StorageIndex*>(A.innerIndexPtr());
   view.x = const_cast<double*>(A.valuePtr());
-  view.stype = -1;
+  view.stype = triangle == CholeskyOptions::Triangle::kUpper ? 1 : -1;
   view.itype = CHOLMOD_INT;
   view.xtype = CHOLMOD_REAL;
   view.dtype = CHOLMOD_DOUBLE;
@@ -92,7 +92,7 @@ void CholeskyFactor::analyze(const SparseMatrix& A) {
   cholmod_->free_factor();
   factored_ = false;
   size_ = static_cast<int>(A.rows());
-  cholmod_sparse view = view_lower(A);
+  cholmod_sparse view = view_triangle(A, options_.triangle);
   cholmod_->factor = cholmod_analyze(&view, &cholmod_->common);
   if (cholmod_->factor == nullptr) throw std::runtime_error("CHOLMOD: the analysis failed");
 }
@@ -103,7 +103,7 @@ bool CholeskyFactor::factorize(const SparseMatrix& A) {
   if (!is_analyzed() || A.rows() != size_) {
     throw std::logic_error("CholeskyFactor::factorize: the pattern was not analysed");
   }
-  cholmod_sparse view = view_lower(A);
+  cholmod_sparse view = view_triangle(A, options_.triangle);
   const int ok = cholmod_factorize(&view, cholmod_->factor, &cholmod_->common);
   factored_ = ok != 0 && cholmod_->common.status == CHOLMOD_OK;
   return factored_;

@@ -20,8 +20,16 @@ struct CholeskyOptions {
     kSimplicial,  ///< column by column: little overhead, for small or very sparse factors
     kSupernodal,  ///< dense blocks of columns with BLAS (both cores with a threaded BLAS)
   };
+  /// Which triangle of A is read (the other is ignored, and may be absent). CHOLMOD factors
+  /// the lower triangle of P A Pᵀ: from an upper triangle it makes that in one permuted
+  /// transpose, from a lower one in two, holding two copies of the triangle at once.
+  enum class Triangle {
+    kLower,
+    kUpper,
+  };
   Ordering ordering = Ordering::kAmd;
   Layout layout = Layout::kAuto;
+  Triangle triangle = Triangle::kLower;
 };
 
 /// P A Pᵀ = L Lᵀ of a symmetric positive definite sparse matrix A by CHOLMOD (SuiteSparse;
@@ -29,7 +37,8 @@ struct CholeskyOptions {
 /// factorization and update/downdate", ACM TOMS 35(3), 2008), in libigl's precompute/solve
 /// style: analyze() orders and analyses a pattern once, factorize() computes the numbers for
 /// any matrix of that pattern, solve() reuses the factor for any number of right-hand sides
-/// without allocating after its first call. Only the lower triangle of A is read.
+/// without allocating after its first call. Only one triangle of A is read
+/// (CholeskyOptions::Triangle).
 ///
 /// The supernodal layout runs its dense blocks through the BLAS CHOLMOD is linked with
 /// (OpenBLAS on Debian, threaded on every core): its result is the same from run to run at
@@ -41,7 +50,7 @@ class CholeskyFactor {
   CholeskyFactor(const CholeskyFactor&) = delete;
   CholeskyFactor& operator=(const CholeskyFactor&) = delete;
 
-  /// Orders and analyses the pattern of A (n×n, square; only the lower triangle is read).
+  /// Orders and analyses the pattern of A (n×n, square; only the chosen triangle is read).
   /// Drops any previous factor.
   void analyze(const SparseMatrix& A);
   /// Factors A, which must have the pattern given to analyze() (its values may differ).

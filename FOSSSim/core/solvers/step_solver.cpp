@@ -33,28 +33,11 @@ bool is_accurate(const SparseMatrix& A, const Vector& x, const Vector& b) {
   return (A * x - b).norm() <= kResidualTolerance * residual_scale(A, x, b);
 }
 
-/// The slot of entry (j, i) for every entry (i, j) of A's pattern, or empty when some (j, i)
-/// is missing (A is not structurally symmetric).
-std::vector<int> transposed_slots(const SparseMatrix& A) {
-  const auto* outer = A.outerIndexPtr();
-  const auto* inner = A.innerIndexPtr();
-  std::vector<int> slots(static_cast<std::size_t>(A.nonZeros()));
-  for (Eigen::Index j = 0; j < A.outerSize(); ++j) {
-    for (auto k = outer[j]; k < outer[j + 1]; ++k) {
-      const auto i = inner[k];
-      const auto* begin = inner + outer[i];
-      const auto* end = inner + outer[i + 1];
-      const auto* found = std::lower_bound(begin, end, static_cast<int>(j));
-      if (found == end || *found != j) return {};
-      slots[static_cast<std::size_t>(k)] = static_cast<int>(found - inner);
-    }
-  }
-  return slots;
-}
-
 }  // namespace
 
 bool StepSolver::same_pattern(const SparseMatrix& A) const {
+  // With a symmetric part, its pattern (half of A's) is the only copy kept.
+  if (suitesparse_ && !symmetric_) return symmetric_part_.has_pattern(A);
   const auto* outer = A.outerIndexPtr();
   const auto* inner = A.innerIndexPtr();
   return static_cast<Eigen::Index>(outer_.size()) == A.outerSize() + 1 &&
@@ -64,23 +47,27 @@ bool StepSolver::same_pattern(const SparseMatrix& A) const {
 }
 
 void StepSolver::take_pattern(const SparseMatrix& A) {
-  outer_.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
-  inner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
   ldlt_analysed_ = false;
   lu_analysed_ = false;
   cholesky_.reset();
   umfpack_.reset();
   mumps_.reset();
-  transposed_.clear();
   skip_cholesky_ = 0;
   refactor_due_ = true;
   suitesparse_ = false;
   if (choice_ != SolverChoice::kEigen && A.rows() > 0 &&
       (choice_ == SolverChoice::kCholmod || A.rows() >= kCholmodFromSize)) {
-    transposed_ = transposed_slots(A);
     // A pattern that is not structurally symmetric has no symmetric part of its own pattern;
     // step matrices always are (pair blocks come in pairs).
-    suitesparse_ = !transposed_.empty();
+    suitesparse_ = symmetric_ ? UpperSymmetricPart::is_structurally_symmetric(A)
+                              : symmetric_part_.take_pattern(A);
+  }
+  if (suitesparse_ && !symmetric_) {
+    outer_ = {};
+    inner_ = {};
+  } else {
+    outer_.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
+    inner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
   }
 }
 
@@ -133,24 +120,12 @@ std::optional<Vector> StepSolver::solve_lu(const SparseMatrix& A, const Vector& 
   return x;
 }
 
-void StepSolver::symmetrize(const SparseMatrix& A) {
-  if (symmetric_part_.nonZeros() != A.nonZeros() || symmetric_part_.rows() != A.rows()) {
-    symmetric_part_ = A;
-  }
-  const double* value = A.valuePtr();
-  double* out = symmetric_part_.valuePtr();
-  for (std::size_t k = 0; k < transposed_.size(); ++k) {
-    out[k] = 0.5 * (value[k] + value[transposed_[k]]);
-  }
-}
-
 bool StepSolver::factor_cholesky(const SparseMatrix& A) {
   // Only non-symmetric matrices come here (symmetric ones go to MUMPS): factor their
-  // symmetric part.
-  symmetrize(A);
-  const SparseMatrix* target = &symmetric_part_;
+  // symmetric part, of which CHOLMOD reads the upper triangle.
+  const SparseMatrix* target = &symmetric_part_.update(A);
   if (!cholesky_) {
-    cholesky_.emplace(CholeskyOptions{});
+    cholesky_.emplace(CholeskyOptions{.triangle = CholeskyOptions::Triangle::kUpper});
     cholesky_->analyze(*target);
     ++statistics_.analyses;
   }

@@ -11,6 +11,7 @@
 #include "core/solvers/gmres.h"
 #include "core/solvers/ldlt_factor.h"
 #include "core/solvers/lu_factor.h"
+#include "core/solvers/symmetric_part.h"
 #include "core/types.h"
 
 namespace fosssim {
@@ -99,14 +100,13 @@ class StepSolver {
   bool factor_ldlt(const SparseMatrix& A);
   /// z = M⁻¹ r with the current factor.
   void precondition(const double* r, double* z) const;
-  /// symmetric_part_ = (A + Aᵀ)/2 over A's pattern.
-  void symmetrize(const SparseMatrix& A);
 
   bool symmetric_;
   SolverChoice choice_;
   Factorization last_ = Factorization::kLU;
   SolveStatistics statistics_;
-  std::vector<SparseMatrix::StorageIndex> outer_, inner_;  // pattern of the analysed matrix
+  std::vector<SparseMatrix::StorageIndex> outer_,
+      inner_;  // A's pattern, unless symmetric_part_ has it
 
   // The Eigen path.
   bool ldlt_analysed_ = false;
@@ -115,9 +115,8 @@ class StepSolver {
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
 
   // The SuiteSparse path.
-  bool suitesparse_ = false;     // the pattern goes to SuiteSparse
-  std::vector<int> transposed_;  // slot of entry (j, i) for the entry (i, j) in slot k
-  SparseMatrix symmetric_part_;
+  bool suitesparse_ = false;           // the pattern goes to SuiteSparse
+  UpperSymmetricPart symmetric_part_;  // of a non-symmetric A, for CHOLMOD
   std::optional<CholeskyFactor> cholesky_;
   std::optional<LuFactor> umfpack_;
   std::optional<LdltFactor> mumps_;

@@ -57,6 +57,7 @@ void StepMatrix::record(const ForceInput& in) {
   pattern_.clear();
   HessianBuilder builder = HessianBuilder::recording(pattern_);
   for (const Force* force : *forces_) force->add_hessian_x(in, builder);
+  pattern_.mark_second_pass();
   for (const Force* force : *forces_) force->add_hessian_v(in, builder);
   pattern_usable_ = pattern_.finish(matrix_);
   definite_ = SparseMatrix();
@@ -75,6 +76,7 @@ bool StepMatrix::scatter(const ForceInput& in, double h, const Vector* u, Vector
   for (const Force* force : *forces_) force->add_hessian_x(in, builder);
   builder.set_product(nullptr, nullptr);
   builder.set_scale(h);
+  pattern_.begin_second_pass();
   for (const Force* force : *forces_) force->add_hessian_v(in, builder);
   if (!pattern_.scattered_all()) {
     if (rhs != nullptr) *rhs = saved_rhs_;

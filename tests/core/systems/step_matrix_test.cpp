@@ -9,6 +9,9 @@
 // - both: the same system solved either way gives the same velocity change on the free DOFs
 //   and none on the fixed ones; reassembling gives the same matrix; given a vector u, the
 //   right-hand side loses h² hessX u over every DOF (before the fixed-particle rule);
+// - writes: when every spring is damped, the hessV pass writes the blocks of the hessX pass and
+//   the recorded list is kept once (as long as an undamped chain's), walked twice with the same
+//   bits as triplets; when the passes stop matching, they are recorded anew;
 // - definite_hessian: a compressed spring's block loses its negative transverse stiffness, so
 //   the matrix differs from the exact one exactly where that spring's blocks are.
 
@@ -95,6 +98,47 @@ TYPED_TEST(StepMatrixTest, EliminationKeepsOnlyTheFreeDofs) {
   Vector full = Vector::Zero(4 * D);
   matrix.add_solution(x, full);
   EXPECT_EQ(full, Vector(P.transpose() * x));
+}
+
+/// Four particles, the second fixed, in a chain of springs with damping `b` (the last one of
+/// rest length 0).
+TestScene chain(int dim, double b) {
+  Random random(31);
+  TestScene scene(dim, "implicit-euler", 0.05);
+  for (int p = 0; p < 4; ++p) {
+    const Vector x = random.uniform_vector(dim, -1.0, 1.0);
+    const Vector v = random.uniform_vector(dim, -1.0, 1.0);
+    scene.add_particle(random.uniform(0.5, 2.0), x, v, p == 1);
+  }
+  scene.add_spring(0, 1, 5.0, 0.3, b);
+  scene.add_spring(1, 2, 2.0, 1.5, 2.0 * b);
+  scene.add_spring(2, 3, 7.0, 0.0, 3.0 * b);
+  return scene;
+}
+
+TYPED_TEST(StepMatrixTest, AHessVPassThatRepeatsTheHessXPassIsKeptOnce) {
+  constexpr int D = TypeParam::value;
+  const TestScene damped = chain(D, 0.5);
+  const TestScene undamped = chain(D, 0.0);  // hessV has no entries
+  const ForceSet damped_forces(damped.model), undamped_forces(undamped.model);
+  StepMatrix matrix(damped_forces, FixedParticleRule::kIdentityRows);
+  StepMatrix reference(damped_forces, FixedParticleRule::kIdentityRows);
+  StepMatrix undamped_matrix(undamped_forces, FixedParticleRule::kIdentityRows);
+  const double h = 0.05;
+  Vector q = damped.initial.q;
+  const Vector& v = damped.initial.v;
+  undamped_matrix.assemble(q, v, h);
+  EXPECT_EQ(dense(matrix.assemble(q, v, h)), dense(reference.assemble_from_triplets(q, v, h)));
+  EXPECT_EQ(matrix.pattern_bytes(), undamped_matrix.pattern_bytes())
+      << "the damped springs' hessV blocks are the hessX blocks: one list of writes";
+
+  q += 0.1 * v;  // the recorded writes, walked twice, at another state
+  EXPECT_EQ(dense(matrix.assemble(q, v, h)), dense(reference.assemble_from_triplets(q, v, h)));
+  // Particle 3 on particle 2: the zero-length spring's hessV has no entries, so the passes
+  // differ and the writes are recorded anew.
+  q.segment(3 * D, D) = q.segment(2 * D, D);
+  EXPECT_EQ(dense(matrix.assemble(q, v, h)), dense(reference.assemble_from_triplets(q, v, h)));
+  EXPECT_GT(matrix.pattern_bytes(), undamped_matrix.pattern_bytes());
 }
 
 TYPED_TEST(StepMatrixTest, BothRulesGiveTheSameStep) {
