@@ -2,10 +2,11 @@
 # Long fuzz campaigns: builds the fuzz preset and runs each fuzz target (fuzz/README.md) for a
 # while, from its committed seeds plus what earlier campaigns found.
 #
-#   tools/fuzz.sh [TARGET...] [--minutes M] [--jobs J] [--merge]
+#   tools/fuzz.sh [TARGET...] [--minutes M] [--runs N] [--jobs J] [--merge]
 #
 # TARGET: xml_scene json_scene obj medit trajectory command_line (default: all, one after the
-# other). --minutes: per target (default 30). --jobs: fuzzing processes per target (default 1).
+# other). --minutes: per target (default 30). --runs: also stop a target after N inputs (with one
+# job). --jobs: fuzzing processes per target (default 1).
 # --merge: afterwards, add the inputs that reach new code to fuzz/corpus/TARGET (review and
 # commit them). Findings go to build/fuzz/campaign/TARGET/artifacts/; the script exits 1 when
 # there is any.
@@ -15,14 +16,16 @@ root="$PWD"
 
 targets=""
 minutes=30
+runs=-1
 jobs=1
 merge=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --minutes) minutes="$2"; shift 2 ;;
+    --runs) runs="$2"; shift 2 ;;
     --jobs) jobs="$2"; shift 2 ;;
     --merge) merge=1; shift ;;
-    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
     -*) echo "fuzz.sh: unknown option $1" >&2; exit 2 ;;
     *) targets="$targets $1"; shift ;;
   esac
@@ -45,7 +48,7 @@ for target in $targets; do
   echo "fuzz.sh: $target for $minutes min with $jobs job(s); findings in $work/artifacts/"
   # Run in the work folder: with several jobs libFuzzer writes a fuzz-N.log per job there.
   # shellcheck disable=SC2086
-  (cd "$work" && "$fuzzer" -max_total_time=$((minutes * 60)) -timeout=25 -rss_limit_mb=2048 \
+  (cd "$work" && "$fuzzer" -max_total_time=$((minutes * 60)) -runs="$runs" -timeout=25 -rss_limit_mb=2048 \
     -print_final_stats=1 $parallel $dictionary -artifact_prefix="$work/artifacts/" \
     "$work/corpus" "$root/fuzz/corpus/$target" >"$work/log.txt" 2>&1) || true
   grep -hE "^(Done [0-9]+ runs|stat::number_of_executed_units|stat::average_exec_per_sec|SUMMARY)" \
