@@ -68,9 +68,9 @@ std::pair<Vector, double> timed_step(const Scene& scene, const State& warm_up, c
 
 /// Iteration counts 1, 2, 3, 5, 8, ... up to `most`.
 bool iterations_effort(Scene& scene, int index, std::string& text, int most) {
-  static const int kCounts[] = {1,   2,    3,    4,    6,    8,    11,   16,  22,
-                                32,  45,   64,   90,   128,  181,  256,  362, 512,
-                                724, 1024, 1448, 2048, 2896, 4096, 5793, 8192};
+  static const int kCounts[] = {1,    2,    3,    4,    6,    8,    11,    16,    22,    32,
+                                45,   64,   90,   128,  181,  256,  362,   512,   724,   1024,
+                                1448, 2048, 2896, 4096, 5793, 8192, 11585, 16384, 23170, 32768};
   if (index >= static_cast<int>(std::size(kCounts)) || kCounts[index] > most) return false;
   set_option(scene, "iterations", kCounts[index]);
   set_option(scene, "tolerance", 0.0);
