@@ -101,8 +101,6 @@ bool LdltFactor::factorize(const SparseMatrix& A) {
   }
   const double* value = A.valuePtr();
   for (std::size_t e = 0; e < slots_.size(); ++e) values_[e] = value[slots_[e]];
-  DMUMPS_STRUC_C& id = mumps_->id;
-  id.a = values_.data();
   const int default_room = mumps_->control(14);
   for (int attempt = 0;; ++attempt) {
     mumps_->run(2);

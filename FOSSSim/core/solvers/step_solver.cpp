@@ -20,9 +20,6 @@ constexpr double kSimplicialFlopWeight = 1.0;
 constexpr int kLuAfterIndefinite = 4;
 /// The longest run of solves that factor at once after kept factors failed.
 constexpr int kLongestBackoff = 16;
-/// Non-symmetric A (damped springs, vortices): precondition with a Cholesky factor of the
-/// symmetric part, (A + Aᵀ)/2, rather than an LU factor of A (measured, bench_implicit).
-constexpr bool kSymmetricPartForNonSymmetric = true;
 
 double residual_scale(const SparseMatrix& A, const Vector& x, const Vector& b) {
   return b.norm() + A.norm() * x.norm();
@@ -173,8 +170,9 @@ bool StepSolver::refactor(const SparseMatrix& A) {
   charged_ = 0.0;
   first_after_factor_ = true;
   if (symmetric_) return factor_ldlt(A);
-  const bool try_cholesky = kSymmetricPartForNonSymmetric;
-  if (try_cholesky && skip_cholesky_ == 0) {
+  // Non-symmetric A (damped springs, vortices): a Cholesky factor of the symmetric part,
+  // (A + Aᵀ)/2, preconditions at less cost than an LU factor of A (measured, bench_implicit).
+  if (skip_cholesky_ == 0) {
     if (factor_cholesky(A)) return true;
     skip_cholesky_ = kLuAfterIndefinite;
   } else if (skip_cholesky_ > 0) {
@@ -239,7 +237,7 @@ std::optional<Vector> StepSolver::solve_suitesparse(const SparseMatrix& A, const
     }
     if (fresh) {
       // A fresh factor of A's symmetric part did not help: an LU factor of A itself will.
-      if (factor_ != Factorization::kCholesky || symmetric_) break;
+      if (factor_ != Factorization::kCholesky) break;
       skip_cholesky_ = kLuAfterIndefinite;
     } else {
       backoff_length_ = std::clamp(2 * backoff_length_, 1, kLongestBackoff);
