@@ -1,8 +1,11 @@
 #include "core/solvers/ldlt_factor.h"
 
 #include <dmumps_c.h>
+#include <smumps_c.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -20,17 +23,49 @@ constexpr int kOrderingPord = 4;
 constexpr int kWorkspaceRetries = 4;
 }  // namespace
 
-/// MUMPS's instance: its control and information arrays and the factor it holds.
-struct LdltFactor::Mumps {
-  DMUMPS_STRUC_C id{};
+/// The MUMPS library of one arithmetic: its instance structure, its real type and its entry
+/// point (MUMPS builds one library per arithmetic, from the same sources).
+template <class Struct, class Real, void (*kCall)(Struct*)>
+struct MumpsArithmetic {
+  using Instance = Struct;
+  using Scalar = Real;
+  static void call(Struct* id) { kCall(id); }
+};
+using DoubleMumps = MumpsArithmetic<DMUMPS_STRUC_C, double, dmumps_c>;
+using SingleMumps = MumpsArithmetic<SMUMPS_STRUC_C, float, smumps_c>;
 
-  Mumps() {
-    id.comm_fortran = kUseCommWorld;
-    id.par = 1;  // this process takes part in the work
-    id.sym = 2;  // general symmetric: L D Lᵀ with 1×1 and 2×2 pivots
-    id.job = -1;
-    dmumps_c(&id);
-    if (id.infog[0] < 0) throw std::runtime_error("MUMPS: could not start");
+/// MUMPS's instance, in either arithmetic: its control and information arrays, the values it
+/// factors and the factor it holds.
+struct LdltFactor::Mumps {
+  virtual ~Mumps() = default;
+  /// Points MUMPS at the pattern (1-based rows and columns, kept by the caller) and analyses it.
+  virtual void analyze(int n, std::vector<int>& rows, std::vector<int>& columns) = 0;
+  /// Takes the values to factor, value[slots[e]] for the e-th analysed entry; false when one
+  /// does not fit the arithmetic (beyond float's range, for a single-precision factor).
+  virtual bool set_values(const double* value, const std::vector<int>& slots) = 0;
+  /// Runs MUMPS's phase `job` (1 analysis, 2 factorization, 3 solve, -1 start, -2 end).
+  virtual void run(int job) = 0;
+  /// x = A⁻¹ b with the factor.
+  virtual void solve(const double* b, double* x) = 0;
+  /// MUMPS's ICNTL(k), INFOG(k) and RINFOG(k), numbered from 1 as in its documentation.
+  virtual int& control(int k) = 0;
+  virtual int info(int k) const = 0;
+  virtual double real_info(int k) const = 0;
+};
+
+namespace {
+
+template <class Arithmetic>
+class MumpsOf final : public LdltFactor::Mumps {
+  using Real = typename Arithmetic::Scalar;
+
+ public:
+  MumpsOf() {
+    id_.comm_fortran = kUseCommWorld;
+    id_.par = 1;  // this process takes part in the work
+    id_.sym = 2;  // general symmetric: L D Lᵀ with 1×1 and 2×2 pivots
+    run(-1);
+    if (id_.infog[0] < 0) throw std::runtime_error("MUMPS: could not start");
     // Never print: failures are reported through return values.
     control(1) = -1;
     control(2) = -1;
@@ -38,26 +73,64 @@ struct LdltFactor::Mumps {
     control(4) = 0;
     control(7) = kOrderingPord;
   }
-  ~Mumps() {
-    id.job = -2;
-    dmumps_c(&id);
-  }
-  Mumps(const Mumps&) = delete;
-  Mumps& operator=(const Mumps&) = delete;
+  ~MumpsOf() override { run(-2); }
+  MumpsOf(const MumpsOf&) = delete;
+  MumpsOf& operator=(const MumpsOf&) = delete;
 
-  /// MUMPS's ICNTL(k), numbered from 1 as in its documentation.
-  int& control(int k) { return id.icntl[k - 1]; }
-  /// MUMPS's INFOG(k).
-  int info(int k) const { return id.infog[k - 1]; }
-  /// MUMPS's RINFOG(k).
-  double real_info(int k) const { return id.rinfog[k - 1]; }
-  void run(int job) {
-    id.job = job;
-    dmumps_c(&id);
+  void analyze(int n, std::vector<int>& rows, std::vector<int>& columns) override {
+    // MUMPS keeps the pointers; the caller keeps the arrays alive and unchanged.
+    values_.assign(rows.size(), Real{0});
+    rhs_.assign(static_cast<std::size_t>(n), Real{0});
+    id_.n = n;
+    id_.nnz = static_cast<MUMPS_INT8>(rows.size());
+    id_.irn = rows.data();
+    id_.jcn = columns.data();
+    id_.a = values_.data();
+    run(1);
   }
+
+  bool set_values(const double* value, const std::vector<int>& slots) override {
+    for (std::size_t e = 0; e < slots.size(); ++e) {
+      const double v = value[slots[e]];
+      if (!(std::abs(v) <= std::numeric_limits<Real>::max())) return false;
+      values_[e] = static_cast<Real>(v);
+    }
+    return true;
+  }
+
+  void solve(const double* b, double* x) override {
+    std::copy(b, b + id_.n, rhs_.begin());
+    id_.rhs = rhs_.data();
+    id_.nrhs = 1;
+    id_.lrhs = id_.n;
+    run(3);
+    std::copy(rhs_.begin(), rhs_.end(), x);
+  }
+
+  int& control(int k) override { return id_.icntl[k - 1]; }
+  int info(int k) const override { return id_.infog[k - 1]; }
+  double real_info(int k) const override { return id_.rinfog[k - 1]; }
+
+  void run(int job) override {
+    id_.job = job;
+    Arithmetic::call(&id_);
+  }
+
+ private:
+  typename Arithmetic::Instance id_{};
+  std::vector<Real> values_;  // the lower triangle's values, in MUMPS's arithmetic
+  std::vector<Real> rhs_;     // MUMPS solves in place
 };
 
-LdltFactor::LdltFactor() : mumps_(std::make_unique<Mumps>()) {}
+std::unique_ptr<LdltFactor::Mumps> start_mumps(FactorPrecision precision) {
+  if (precision == FactorPrecision::kSingle) return std::make_unique<MumpsOf<SingleMumps>>();
+  return std::make_unique<MumpsOf<DoubleMumps>>();
+}
+
+}  // namespace
+
+LdltFactor::LdltFactor(FactorPrecision precision)
+    : precision_(precision), mumps_(start_mumps(precision)) {}
 
 LdltFactor::~LdltFactor() = default;
 
@@ -79,15 +152,7 @@ void LdltFactor::analyze(const SparseMatrix& A) {
       slots_.push_back(static_cast<int>(k));
     }
   }
-  values_.assign(slots_.size(), 0.0);
-  rhs_.assign(static_cast<std::size_t>(size_), 0.0);
-  DMUMPS_STRUC_C& id = mumps_->id;
-  id.n = size_;
-  id.nnz = static_cast<MUMPS_INT8>(rows_.size());
-  id.irn = rows_.data();
-  id.jcn = columns_.data();
-  id.a = values_.data();
-  mumps_->run(1);
+  mumps_->analyze(size_, rows_, columns_);
   if (mumps_->info(1) < 0) {
     throw std::runtime_error(
         "MUMPS: the analysis failed (INFOG(1) = " + std::to_string(mumps_->info(1)) + ")");
@@ -99,8 +164,8 @@ bool LdltFactor::factorize(const SparseMatrix& A) {
   if (!analysed_ || A.rows() != size_) {
     throw std::logic_error("LdltFactor::factorize: the pattern was not analysed");
   }
-  const double* value = A.valuePtr();
-  for (std::size_t e = 0; e < slots_.size(); ++e) values_[e] = value[slots_[e]];
+  factored_ = false;
+  if (!mumps_->set_values(A.valuePtr(), slots_)) return false;
   const int default_room = mumps_->control(14);
   for (int attempt = 0;; ++attempt) {
     mumps_->run(2);
@@ -124,14 +189,8 @@ bool LdltFactor::factorize(const SparseMatrix& A) {
 
 void LdltFactor::solve(const double* b, double* x) const {
   if (!factored_) throw std::logic_error("LdltFactor::solve without a factor");
-  std::copy(b, b + size_, rhs_.begin());
-  DMUMPS_STRUC_C& id = mumps_->id;
-  id.rhs = rhs_.data();
-  id.nrhs = 1;
-  id.lrhs = size_;
-  mumps_->run(3);
+  mumps_->solve(b, x);
   if (mumps_->info(1) < 0) throw std::runtime_error("MUMPS: the solve failed");
-  std::copy(rhs_.begin(), rhs_.end(), x);
 }
 
 }  // namespace fosssim

@@ -15,6 +15,9 @@ constexpr int kMaxKrylovIterations = 30;
 /// speed (measured on the 81×81 cloth and the tet ball with OpenBLAS, bench_implicit).
 constexpr double kBlockedFlopWeight = 0.2;
 constexpr double kSimplicialFlopWeight = 1.0;
+/// A single-precision factorization takes this fraction of a double one's time (MUMPS on the
+/// 81×81 cloth's step matrices with OpenBLAS: 62 against 126 ms; measured with bench_implicit).
+constexpr double kSinglePrecisionSpeedup = 2.0;
 /// After a Cholesky factorization fails (A is not positive definite), this many
 /// factorizations go straight to LU before Cholesky is tried again.
 constexpr int kLuAfterIndefinite = 4;
@@ -49,6 +52,7 @@ void StepSolver::take_pattern(const SparseMatrix& A) {
   cholesky_.reset();
   umfpack_.reset();
   mumps_.reset();
+  ldlt_precision_ = FactorPrecision::kSingle;
   skip_cholesky_ = 0;
   refactor_due_ = true;
   suitesparse_ = false;
@@ -152,17 +156,29 @@ bool StepSolver::factor_lu(const SparseMatrix& A) {
 
 bool StepSolver::factor_ldlt(const SparseMatrix& A) {
   if (!mumps_) {
-    mumps_.emplace();
+    mumps_.emplace(ldlt_precision_);
     mumps_->analyze(A);
     ++statistics_.analyses;
   }
   ++statistics_.factorizations;
   ++statistics_.ldlt_factorizations;
-  if (!mumps_->factorize(A)) return false;
+  if (ldlt_precision_ == FactorPrecision::kSingle) ++statistics_.single_precision_factorizations;
+  if (!mumps_->factorize(A)) {
+    // Singular in single precision (or beyond its range) need not be singular in double.
+    if (ldlt_precision_ == FactorPrecision::kDouble) return false;
+    use_double_ldlt();
+    return factor_ldlt(A);
+  }
   factor_ = Factorization::kMumps;
   factor_cost_ = kBlockedFlopWeight * mumps_->factor_flops();
+  if (ldlt_precision_ == FactorPrecision::kSingle) factor_cost_ /= kSinglePrecisionSpeedup;
   iteration_cost_ = 4.0 * mumps_->factor_nonzeros() + 2.0 * static_cast<double>(A.nonZeros());
   return true;
+}
+
+void StepSolver::use_double_ldlt() {
+  ldlt_precision_ = FactorPrecision::kDouble;
+  mumps_.reset();
 }
 
 bool StepSolver::refactor(const SparseMatrix& A) {
@@ -204,12 +220,14 @@ std::optional<Vector> StepSolver::solve_suitesparse(const SparseMatrix& A, const
     const double b_norm = b.norm();
     double tolerance = kResidualTolerance * b_norm * (1.0 + scale_ratio_);
     if (fresh) {
+      // A fresh factor's M⁻¹b is a good start (a double factor's is often the answer).
       precondition(b.data(), x.data());
       tolerance = kResidualTolerance * (b_norm + a_norm * x.norm());
+    } else {
+      // From x = 0, GMRES's first iterate is the best multiple of M⁻¹b: never worse than b,
+      // even when a kept factor is far from A.
+      x.setZero();
     }
-    // From x = 0, GMRES's first iterate is the best multiple of M⁻¹b: never worse than b, even
-    // when a kept factor is far from A.
-    x.setZero();
     // A kept factor may take as many more iterations than a fresh one as a factorization
     // costs; a fresh one as many as GMRES keeps.
     const double affordable = std::clamp(factor_cost_ / std::max(iteration_cost_, 1.0), 2.0,
@@ -236,9 +254,16 @@ std::optional<Vector> StepSolver::solve_suitesparse(const SparseMatrix& A, const
       return x;
     }
     if (fresh) {
-      // A fresh factor of A's symmetric part did not help: an LU factor of A itself will.
-      if (factor_ != Factorization::kCholesky) break;
-      skip_cholesky_ = kLuAfterIndefinite;
+      if (factor_ == Factorization::kMumps && ldlt_precision_ == FactorPrecision::kSingle) {
+        // A fresh single-precision factor was too inexact for A's condition: from now on, and
+        // at once, a double one.
+        use_double_ldlt();
+      } else if (factor_ == Factorization::kCholesky) {
+        // A fresh factor of A's symmetric part did not help: an LU factor of A itself will.
+        skip_cholesky_ = kLuAfterIndefinite;
+      } else {
+        break;
+      }
     } else {
       backoff_length_ = std::clamp(2 * backoff_length_, 1, kLongestBackoff);
       backoff_ = backoff_length_;

@@ -40,7 +40,8 @@ struct SolveStatistics {
   std::int64_t krylov_iterations = 0;    ///< GMRES iterations over all solves
   std::int64_t lu_factorizations = 0;    ///< of them, UMFPACK's (after a failed Cholesky)
   std::int64_t ldlt_factorizations = 0;  ///< of them, MUMPS's (A symmetric)
-  std::int64_t direct_fallbacks = 0;     ///< GMRES did not converge: Eigen's LU or LDLᵀ solved
+  std::int64_t single_precision_factorizations = 0;  ///< of MUMPS's, in single precision
+  std::int64_t direct_fallbacks = 0;  ///< GMRES did not converge: Eigen's LU or LDLᵀ solved
 };
 
 /// Solves the systems A x = b of an implicit integrator: one step matrix
@@ -60,7 +61,10 @@ struct SolveStatistics {
 ///   compressed spring makes it indefinite), is factored L D Lᵀ by MUMPS; a non-symmetric one
 ///   (damping, vortices) by CHOLMOD's supernodal Cholesky of its symmetric part, or by
 ///   UMFPACK's LU of A when that part is not positive definite or does not precondition well
-///   (after Cholesky fails, the next few factorizations go straight to LU). The factor is kept
+///   (after Cholesky fails, the next few factorizations go straight to LU). MUMPS factors in
+///   single precision (half the time), GMRES in double brings the answer to round-off; when a
+///   fresh single-precision factor cannot (A too ill-conditioned for float) or A is singular in
+///   float, the pattern's factors are double from then on. The factor is kept
 ///   across solves, Newton iterations and steps while GMRES converges fast with it: the iterations
 ///   beyond those a fresh factor needs are charged at their cost, and A is factored again once they
 ///   have cost as much as a factorization (a rent-or-buy rule: a run never pays more than about
@@ -98,6 +102,8 @@ class StepSolver {
   bool factor_cholesky(const SparseMatrix& A);
   bool factor_lu(const SparseMatrix& A);
   bool factor_ldlt(const SparseMatrix& A);
+  /// Factors in double precision from now on (for this pattern).
+  void use_double_ldlt();
   /// z = M⁻¹ r with the current factor.
   void precondition(const double* r, double* z) const;
 
@@ -120,8 +126,9 @@ class StepSolver {
   std::optional<CholeskyFactor> cholesky_;
   std::optional<LuFactor> umfpack_;
   std::optional<LdltFactor> mumps_;
-  Factorization factor_ = Factorization::kCholesky;  // which one preconditions now
-  int skip_cholesky_ = 0;                            // factorizations left that go straight to LU
+  FactorPrecision ldlt_precision_ = FactorPrecision::kSingle;  // of MUMPS's next factor
+  Factorization factor_ = Factorization::kCholesky;            // which one preconditions now
+  int skip_cholesky_ = 0;  // factorizations left that go straight to LU
   Gmres gmres_;
   bool refactor_due_ = true;
   double factor_cost_ = 0.0;     // of one factorization, in operations

@@ -7,7 +7,10 @@
 //   negative eigenvalues of A (counted by a dense symmetric eigensolver), on matrices with
 //   none, a few and many;
 // - one analysis serves any number of factorizations of the pattern, with new values;
-// - a singular matrix is reported, not solved.
+// - a singular matrix is reported, not solved;
+// - in single precision: the same inertia, solutions with float's accuracy (residual near
+//   float's round-off, and not double's: the factor really is single), and a matrix with an
+//   entry beyond float's range refused rather than factored as infinity.
 
 #include "core/solvers/ldlt_factor.h"
 
@@ -102,6 +105,41 @@ TEST(LdltFactor, ReportsASingularMatrix) {
   factor.analyze(A);
   EXPECT_FALSE(factor.factorize(A));
   EXPECT_FALSE(factor.is_factored());
+}
+
+TEST(LdltFactor, SinglePrecisionFactorHasTheSameInertiaAndFloatAccuracy) {
+  for (const double shift : {4.5, 0.5, -1.0}) {
+    SCOPED_TRACE(shift);
+    const SparseMatrix A = grid_matrix(12, shift, 311);
+    const Eigen::VectorXd eigenvalues =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Eigen::MatrixXd(A)).eigenvalues();
+    ASSERT_GT(eigenvalues.cwiseAbs().minCoeff(), 1e-3) << "precondition: no eigenvalue near 0";
+    LdltFactor factor(FactorPrecision::kSingle);
+    EXPECT_EQ(factor.precision(), FactorPrecision::kSingle);
+    factor.analyze(A);
+    ASSERT_TRUE(factor.factorize(A));
+    EXPECT_EQ(factor.negative_pivots(), negative_eigenvalues(A));
+    const Vector b = Random(312).uniform_vector(static_cast<int>(A.rows()), -1.0, 1.0);
+    Vector x(b.size());
+    factor.solve(b.data(), x.data());
+    const double scale = b.norm() + Eigen::MatrixXd(A).norm() * x.norm();
+    const double residual = (A * x - b).norm();
+    EXPECT_LE(residual, 1e-5 * scale);
+    EXPECT_GT(residual, 1e-12 * scale) << "a double factor's accuracy: not single precision";
+  }
+}
+
+TEST(LdltFactor, SinglePrecisionRefusesAnEntryBeyondFloatsRange) {
+  SparseMatrix A = grid_matrix(6, 4.5, 313);
+  A.coeffRef(5, 5) = 1e39;  // a float's largest is about 3.4e38
+  LdltFactor single(FactorPrecision::kSingle);
+  single.analyze(A);
+  EXPECT_FALSE(single.factorize(A));
+  EXPECT_FALSE(single.is_factored());
+  LdltFactor twice(FactorPrecision::kDouble);
+  twice.analyze(A);
+  ASSERT_TRUE(twice.factorize(A));
+  expect_solves(twice, A, 314);
 }
 
 }  // namespace

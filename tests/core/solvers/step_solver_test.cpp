@@ -17,7 +17,12 @@
 //   symmetric matrices, definite or indefinite, are factored L D Lᵀ by MUMPS and non-symmetric
 //   ones through CHOLMOD or UMFPACK, every answer to round-off; along a sequence of nearby
 //   matrices a factor is kept (fewer factorizations than solves, GMRES making up the
-//   difference) and the answers stay at round-off; singular matrices give nullopt.
+//   difference) and the answers meet the promised residual and are as close to the solution
+//   as it allows (‖x - x*‖ ≤ ‖A⁻¹‖ ‖r‖); singular matrices give nullopt;
+// - MUMPS's factor is single precision and GMRES brings the answer to double round-off; on a
+//   matrix too ill-conditioned for float (stiff springs at rest length with a huge h: M is
+//   below float's resolution of h² hessX, whose null space has 2n + 1 dimensions, more than
+//   GMRES may keep) the solver turns to a double factor, at once and for the later solves.
 
 #include "core/solvers/step_solver.h"
 
@@ -44,6 +49,24 @@ void expect_solves(const SparseMatrix& A, const std::optional<Vector>& x, const 
   const Vector reference = dense_A.partialPivLu().solve(b);
   EXPECT_LE((A * *x - b).norm(), 1e-12 * (b.norm() + dense_A.norm() * x->norm()));
   EXPECT_LE((*x - reference).norm(), 1e-10 * reference.norm());
+}
+
+/// Expects x to meet StepSolver's promise, ‖A x - b‖ ≤ 1e-12 (‖b‖ + ‖A‖_F ‖x‖), and to be as
+/// close to the solution as that residual allows: ‖x - A⁻¹b‖ ≤ ‖A⁻¹‖₂ ‖A x - b‖. For answers
+/// refined by GMRES from a single-precision factor, which stops at the promised residual
+/// rather than at a direct solver's (dense LU's forward error can be smaller by 10⁴).
+void expect_meets_residual_promise(const SparseMatrix& A, const std::optional<Vector>& x,
+                                   const Vector& b) {
+  ASSERT_TRUE(x.has_value());
+  const Eigen::MatrixXd dense_A(A);
+  const double residual = (A * *x - b).norm();
+  EXPECT_LE(residual, 1e-12 * (b.norm() + dense_A.norm() * x->norm()));
+  const Vector reference = dense_A.partialPivLu().solve(b);
+  const double inverse_norm =
+      1.0 / Eigen::BDCSVD<Eigen::MatrixXd>(dense_A).singularValues().minCoeff();
+  // Dense LU's own error (round-off times the condition number) on top.
+  const double reference_error = 1e-15 * inverse_norm * dense_A.norm() * reference.norm();
+  EXPECT_LE((*x - reference).norm(), inverse_norm * residual + reference_error);
 }
 
 /// A random chain of n particles in dimension D with springs stretched (l0 = 0.5 l) or
@@ -187,6 +210,32 @@ TEST(StepSolver, SparseDirectPathFactorsSymmetricMatricesByLdltDefiniteOrNot) {
   }
 }
 
+TEST(StepSolver, SparseDirectPathFactorsInSinglePrecisionAndRefinesToRoundOff) {
+  const SparseMatrix A = chain_step_matrix<3>(40, 0.5, 0.0, 0.1, 171);
+  const Vector b = Random(172).uniform_vector(120, -1.0, 1.0);
+  StepSolver solver(true, SolverChoice::kCholmod);
+  expect_solves(A, solver.solve(A, b), b);
+  EXPECT_EQ(solver.statistics().ldlt_factorizations, 1);
+  EXPECT_EQ(solver.statistics().single_precision_factorizations, 1);
+  // GMRES starts from M⁻¹b: a double factor's is often the answer, a float one's never.
+  EXPECT_GE(solver.statistics().krylov_iterations, 1) << "a float factor alone is not exact";
+}
+
+TEST(StepSolver, SparseDirectPathTurnsToDoubleWhenFloatCannotReachRoundOff) {
+  const SparseMatrix A = chain_step_matrix<3>(40, 1.0, 0.0, 1e4, 173);
+  const Vector b = Random(174).uniform_vector(120, -1.0, 1.0);
+  StepSolver solver(true, SolverChoice::kCholmod);
+  for (int k = 0; k < 2; ++k) {
+    const SparseMatrix Ak = A * (1.0 + 1e-3 * k);
+    const std::optional<Vector> x = solver.solve(Ak, b);
+    expect_meets_residual_promise(Ak, x, b);
+  }
+  EXPECT_EQ(solver.statistics().single_precision_factorizations, 1);
+  EXPECT_GE(solver.statistics().ldlt_factorizations, 2);
+  EXPECT_EQ(solver.statistics().direct_fallbacks, 0);
+  EXPECT_EQ(solver.last_factorization(), Factorization::kMumps);
+}
+
 TEST(StepSolver, SparseDirectPathSolvesNonSymmetricMatrices) {
   const SparseMatrix A = chain_step_matrix<2>(40, 0.5, 3.0, 0.1, 163);
   ASSERT_GT(asymmetry(Eigen::MatrixXd(A)), 1e-3) << "precondition: A is not symmetric";
@@ -211,10 +260,12 @@ TEST(StepSolver, SparseDirectPathKeepsAFactorForNearbyMatrices) {
       for (int e = 0; e < A.nonZeros(); ++e) A.valuePtr()[e] *= 1.0 + 1e-8 * k;
       A.diagonal() += Vector::Constant(A.rows(), 1e-8 * k);
       const Vector b = random.uniform_vector(static_cast<int>(A.rows()), -1.0, 1.0);
-      expect_solves(A, solver.solve(A, b), b);
+      expect_meets_residual_promise(A, solver.solve(A, b), b);
     }
     EXPECT_LT(solver.statistics().factorizations, 12) << "a factor is kept for nearby matrices";
-    EXPECT_GT(solver.statistics().krylov_iterations, 12);
+    // At least one GMRES iteration for every solve with a factor of another matrix.
+    const SolveStatistics& statistics = solver.statistics();
+    EXPECT_GE(statistics.krylov_iterations, statistics.solves - statistics.factorizations);
     EXPECT_EQ(solver.statistics().direct_fallbacks, 0);
   }
 }
