@@ -243,7 +243,8 @@ std::optional<Vector> StepSolver::solve_suitesparse(const SparseMatrix& A, const
         result.residual <= kResidualTolerance * (b_norm + a_norm * x_norm)) {
       scale_ratio_ = b_norm > 0.0 ? a_norm * x_norm / b_norm : 0.0;
       if (first_after_factor_) {
-        fresh_iterations_ = result.iterations;
+        // Counted as a kept factor's solves are: its start M⁻¹b was one more solve with M.
+        fresh_iterations_ = result.iterations + 1;
         first_after_factor_ = false;
       } else {
         backoff_length_ = 0;
