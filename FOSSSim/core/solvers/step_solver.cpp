@@ -15,6 +15,12 @@ constexpr int kMaxKrylovIterations = 30;
 /// speed (measured on the 81×81 cloth and the tet ball with OpenBLAS, bench_implicit).
 constexpr double kBlockedFlopWeight = 0.2;
 constexpr double kSimplicialFlopWeight = 1.0;
+/// A factorization also costs this many operations per entry of its factor, whatever its
+/// flops: assembling, copying and scattering fronts, which dominates small factors. Measured
+/// with CHOLMOD's supernodal factor on the 2D damped cloth of bench_implicit: one factorization
+/// costs 16, 14 and 12.5 GMRES iterations at 30×30, 100×100 and 316×316 (3·10⁶ to 6·10⁹
+/// flops), where the flops alone charged 2, 5.6 and 14.7; this term makes it 10, 11 and 14.7.
+constexpr double kFactorOperationsPerEntry = 50.0;
 /// A single-precision factorization takes this fraction of a double one's time (MUMPS on the
 /// 81×81 cloth's step matrices with OpenBLAS: 62 against 126 ms; measured with bench_implicit).
 constexpr double kSinglePrecisionSpeedup = 2.0;
@@ -23,6 +29,11 @@ constexpr double kSinglePrecisionSpeedup = 2.0;
 constexpr int kLuAfterIndefinite = 4;
 /// The longest run of solves that factor at once after kept factors failed.
 constexpr int kLongestBackoff = 16;
+
+/// The cost charged for a numeric factorization, in the operations GMRES iterations are counted in.
+double factorization_cost(double flops, double factor_entries, double flop_weight) {
+  return std::max(flop_weight * flops, kFactorOperationsPerEntry * factor_entries);
+}
 
 double residual_scale(const SparseMatrix& A, const Vector& x, const Vector& b) {
   return b.norm() + A.norm() * x.norm();
@@ -134,7 +145,8 @@ bool StepSolver::factor_cholesky(const SparseMatrix& A) {
   if (!cholesky_->factorize(*target)) return false;
   factor_ = Factorization::kCholesky;
   const double weight = cholesky_->is_supernodal() ? kBlockedFlopWeight : kSimplicialFlopWeight;
-  factor_cost_ = weight * cholesky_->factor_flops();
+  factor_cost_ =
+      factorization_cost(cholesky_->factor_flops(), cholesky_->factor_nonzeros(), weight);
   iteration_cost_ = 4.0 * cholesky_->factor_nonzeros() + 2.0 * static_cast<double>(A.nonZeros());
   return true;
 }
@@ -149,7 +161,8 @@ bool StepSolver::factor_lu(const SparseMatrix& A) {
   ++statistics_.lu_factorizations;
   if (!umfpack_->factorize(A)) return false;
   factor_ = Factorization::kUmfpack;
-  factor_cost_ = kBlockedFlopWeight * umfpack_->factor_flops();
+  factor_cost_ =
+      factorization_cost(umfpack_->factor_flops(), umfpack_->factor_nonzeros(), kBlockedFlopWeight);
   iteration_cost_ = 2.0 * umfpack_->factor_nonzeros() + 2.0 * static_cast<double>(A.nonZeros());
   return true;
 }
@@ -170,7 +183,8 @@ bool StepSolver::factor_ldlt(const SparseMatrix& A) {
     return factor_ldlt(A);
   }
   factor_ = Factorization::kMumps;
-  factor_cost_ = kBlockedFlopWeight * mumps_->factor_flops();
+  factor_cost_ =
+      factorization_cost(mumps_->factor_flops(), mumps_->factor_nonzeros(), kBlockedFlopWeight);
   if (ldlt_precision_ == FactorPrecision::kSingle) factor_cost_ /= kSinglePrecisionSpeedup;
   iteration_cost_ = 4.0 * mumps_->factor_nonzeros() + 2.0 * static_cast<double>(A.nonZeros());
   return true;
@@ -243,7 +257,8 @@ std::optional<Vector> StepSolver::solve_suitesparse(const SparseMatrix& A, const
         result.residual <= kResidualTolerance * (b_norm + a_norm * x_norm)) {
       scale_ratio_ = b_norm > 0.0 ? a_norm * x_norm / b_norm : 0.0;
       if (first_after_factor_) {
-        fresh_iterations_ = result.iterations;
+        // Counted as a kept factor's solves are: its start M⁻¹b was one more solve with M.
+        fresh_iterations_ = result.iterations + 1;
         first_after_factor_ = false;
       } else {
         backoff_length_ = 0;

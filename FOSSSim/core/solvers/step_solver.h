@@ -134,7 +134,7 @@ class StepSolver {
   double factor_cost_ = 0.0;     // of one factorization, in operations
   double iteration_cost_ = 0.0;  // of one GMRES iteration, in operations
   double charged_ = 0.0;      // cost of the iterations beyond a fresh factor's, since the last one
-  int fresh_iterations_ = 0;  // GMRES iterations of the first solve after a factorization
+  int fresh_iterations_ = 0;  // solves with M in the first solve after a factorization
   bool first_after_factor_ = false;
   int backoff_ = 0;           // solves left that factor at once, after a kept factor failed
   int backoff_length_ = 0;    // the next backoff: doubles while kept factors keep failing
