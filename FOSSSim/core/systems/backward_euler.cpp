@@ -29,7 +29,7 @@ double BackwardEulerStep::incremental_potential(const Vector& dv) const {
 }
 
 Vector potential_line_search(const BackwardEulerStep& problem, const Vector& dv, const Vector& rhs,
-                             const Vector& direction, double* potential) {
+                             const Vector& direction, double* potential, double* fraction) {
   // -rhs is the gradient of Φ.
   Vector step = direction;
   double slope = -rhs.dot(step);
@@ -49,6 +49,7 @@ Vector potential_line_search(const BackwardEulerStep& problem, const Vector& dv,
     trial = problem.incremental_potential(dv + alpha * step);
   }
   if (potential != nullptr) *potential = trial;
+  if (fraction != nullptr) *fraction = alpha;
   return alpha * step;
 }
 

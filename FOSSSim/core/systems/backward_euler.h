@@ -31,9 +31,11 @@ struct BackwardEulerStep {
 /// the Newton step climb), the mass-scaled steepest descent direction M⁻¹ r is used instead.
 /// Returns the step to add to dv. `potential`, when given, holds Φ(dv) on entry (or NaN when
 /// it is not known) and Φ(dv + step) on return, which spares an iterative caller one
-/// evaluation of Φ per step.
+/// evaluation of Φ per step. `fraction`, when given, receives the accepted fraction α of the
+/// direction (1: the full step; of M⁻¹ r when `direction` climbed).
 Vector potential_line_search(const BackwardEulerStep& problem, const Vector& dv, const Vector& rhs,
-                             const Vector& direction, double* potential = nullptr);
+                             const Vector& direction, double* potential = nullptr,
+                             double* fraction = nullptr);
 
 /// A fraction of the Newton step `newton_step` from dv that decreases ½‖r‖² enough (Armijo; the
 /// Newton step always descends on it), for forces without a potential. rhs = r(dv) on entry

@@ -8,11 +8,15 @@
 //   Φ(dv) = ½ dvᵀM dv + U(qⁿ + h(vⁿ + dv)) on the free DOFs: central differences of Φ agree
 //   to 1e-7 relative;
 // - potential_line_search returns a step that decreases Φ by Armijo's rule, also when handed a
-//   direction that climbs (it then descends along M⁻¹ r); residual_line_search decreases ‖r‖.
+//   direction that climbs (it then descends along M⁻¹ r), and reports Φ there and the fraction
+//   of the direction it took; residual_line_search decreases ‖r‖.
 
 #include "core/systems/backward_euler.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
 
 #include "support/random.h"
 #include "support/scene_builder.h"
@@ -83,8 +87,16 @@ TYPED_TEST(BackwardEulerTest, LineSearchesDecreaseTheirMerit) {
   const Vector r = problem.residual(dv);
   const double phi = problem.incremental_potential(dv);
   // Along the residual itself (a descent direction for Φ, since -r is its gradient).
-  const Vector step = potential_line_search(problem, dv, r, r);
+  double potential = std::numeric_limits<double>::quiet_NaN();
+  double fraction = 0.0;
+  const Vector step = potential_line_search(problem, dv, r, r, &potential, &fraction);
   EXPECT_LT(problem.incremental_potential(dv + step), phi + 1e-4 * (-r.dot(step)));
+  // It reports Φ at the end and the fraction of the direction taken: a power of 1/2.
+  EXPECT_EQ(potential, problem.incremental_potential(dv + step));
+  EXPECT_GT(fraction, 0.0);
+  EXPECT_LE(fraction, 1.0);
+  EXPECT_EQ(std::exp2(std::round(std::log2(fraction))), fraction);
+  EXPECT_TRUE(step == fraction * r);
   // Along a climbing direction: it turns to M⁻¹ r and still descends.
   const Vector climb = potential_line_search(problem, dv, r, -r);
   EXPECT_LT(problem.incremental_potential(dv + climb), phi);
