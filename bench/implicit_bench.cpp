@@ -32,6 +32,7 @@
 #include "core/integrators/linearized_implicit_euler.h"
 #include "core/integrators/linearly_implicit_euler.h"
 #include "core/integrators/newton.h"
+#include "core/solvers/memory_policy.h"
 
 namespace fosssim::bench {
 namespace {
@@ -362,6 +363,7 @@ void goals_table(bool quick) {
 
 int main(int argc, char** argv) {
   using namespace fosssim::bench;
+  fosssim::return_large_blocks_to_system();  // as the fosssim program does
   self_path = "/proc/self/exe";
   char resolved[4096];
   const ssize_t length = readlink("/proc/self/exe", resolved, sizeof resolved - 1);

@@ -12,6 +12,7 @@
 #include "cli/parse_command_line.h"
 #include "core/error.h"
 #include "core/limits.h"
+#include "core/solvers/memory_policy.h"
 #include "io/input_files.h"
 #include "io/scene_loader.h"
 #include "scripting/step_hooks.h"
@@ -59,6 +60,7 @@ int run(Options& options) {
 
 int main(int argc, char** argv) {
   using namespace fosssim;
+  return_large_blocks_to_system();
   Options options;
   CLI::App app{"FOSSSim", "FOSSSim"};
   add_options(app, options);
