@@ -67,6 +67,27 @@ class Blend {
 
 }  // namespace
 
+const SparseMatrix& Newton::blend_matrices(const SparseMatrix& exact, const SparseMatrix& projected,
+                                           double theta) {
+  const auto same_pattern = [](const SparseMatrix& a, const SparseMatrix& b) {
+    return a.rows() == b.rows() && a.cols() == b.cols() && a.nonZeros() == b.nonZeros() &&
+           std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1,
+                      b.outerIndexPtr()) &&
+           std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), b.innerIndexPtr());
+  };
+  if (!same_pattern(exact, projected)) {  // StepMatrix built one of them from triplets
+    blended_ = (1.0 - theta) * exact + theta * projected;
+    return blended_;
+  }
+  if (!same_pattern(blended_, exact)) blended_ = exact;  // the pattern, once
+  const auto values = [](const SparseMatrix& m) {
+    return Eigen::Map<const Vector>(m.valuePtr(), m.nonZeros());
+  };
+  Eigen::Map<Vector>(blended_.valuePtr(), blended_.nonZeros()) =
+      (1.0 - theta) * values(exact) + theta * values(projected);
+  return blended_;
+}
+
 Vector Newton::minimize(const BackwardEulerStep& problem) {
   const State& state = problem.start;
   const double h = problem.h;
@@ -84,8 +105,7 @@ Vector Newton::minimize(const BackwardEulerStep& problem) {
       if (theta > 0.0 && projected == nullptr) projected = &matrix_->assemble_definite(q, v, h);
       if (theta == 0.0) return solve(*exact, rhs, state.step + 1);
       if (theta == 1.0) return solve(*projected, rhs, state.step + 1);
-      blended_ = (1.0 - theta) * *exact + theta * *projected;
-      return solve(blended_, rhs, state.step + 1);
+      return solve(blend_matrices(*exact, *projected, theta), rhs, state.step + 1);
     };
     Vector delta = direction(blend.theta());
     // -rhs is the gradient of Φ: Δ must descend on it, which Ā's direction always does.

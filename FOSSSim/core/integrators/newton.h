@@ -71,6 +71,10 @@ class Newton final : public Integrator {
   void advance(State& state) override;
 
  private:
+  /// A_θ = (1 - θ) A + θ Ā in blended_: its values written in place when A and Ā share a
+  /// pattern (StepMatrix scatters both into the same slots), so no iteration allocates.
+  const SparseMatrix& blend_matrices(const SparseMatrix& exact, const SparseMatrix& projected,
+                                     double theta);
   /// Solves A Δ = rhs over the free DOFs; Δ full size. `step`: for the error message.
   Vector solve(const SparseMatrix& A, const Vector& rhs, int step);
   /// One step when every force is conservative: minimizes Φ. Returns dv.

@@ -21,8 +21,9 @@ constexpr double kSimplicialFlopWeight = 1.0;
 /// costs 16, 14 and 12.5 GMRES iterations at 30×30, 100×100 and 316×316 (3·10⁶ to 6·10⁹
 /// flops), where the flops alone charged 2, 5.6 and 14.7; this term makes it 10, 11 and 14.7.
 constexpr double kFactorOperationsPerEntry = 50.0;
-/// A single-precision factorization takes this fraction of a double one's time (MUMPS on the
-/// 81×81 cloth's step matrices with OpenBLAS: 62 against 126 ms; measured with bench_implicit).
+/// A double-precision factorization takes this many times a single one's time (MUMPS on the
+/// step matrices of bench_implicit's 81×81 cloth, one BLAS thread: 56 to 62 ms in single
+/// precision, about 100 ms in double; with GMRES to round-off, 76 against 122 ms a step).
 constexpr double kSinglePrecisionSpeedup = 2.0;
 /// After a Cholesky factorization fails (A is not positive definite), this many
 /// factorizations go straight to LU before Cholesky is tried again.
