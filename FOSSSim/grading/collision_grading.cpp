@@ -1,5 +1,6 @@
 #include "grading/collision_grading.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -98,6 +99,19 @@ bool compare_polynomials(const std::vector<Polynomial>& reference,
     }
   }
   return true;
+}
+
+bool compare_sync_polynomials(const std::vector<Polynomial>& reference, std::size_t logged,
+                              const std::vector<Polynomial>& file, std::int64_t step,
+                              std::vector<std::string>& lines) {
+  const auto end =
+      reference.begin() + static_cast<std::ptrdiff_t>(std::min(logged, reference.size()));
+  std::vector<std::string> found;
+  if (compare_polynomials({reference.begin(), end}, file, found)) return true;
+  for (const std::string& line : found) {
+    lines.push_back("  Sync record of step " + std::to_string(step) + ": " + line);
+  }
+  return false;
 }
 
 }  // namespace fosssim

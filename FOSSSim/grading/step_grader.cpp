@@ -60,7 +60,11 @@ bool StepGrader::grade_next_step() {
   Vector previous_q = std::move(file_state_.q), previous_v = std::move(file_state_.v);
   // The step's sync record precedes its end-of-step record: reading in file order keeps the
   // reader's walk through the records one step long (io/trajectory_file.h).
-  if (report_.collisions && file_->has_sync_records()) file_->read_sync_record(k, sync_record_);
+  // Each record's polynomials are read up to one more than the reference logged: enough to
+  // fail a padded record without reading (or keeping) the padding.
+  if (report_.collisions && file_->has_sync_records()) {
+    file_->read_sync_record(k, sync_record_, static_cast<std::int64_t>(record_.polynomials.size()));
+  }
   file_->read_frame(k, file_state_.q, file_state_.v);
   file_state_.step = k;
   file_state_.time = reference.time;
@@ -73,7 +77,7 @@ void StepGrader::compare_records(std::int64_t step) {
   CollisionGrade& grade = *report_.collisions;
   const bool passed_before = grade.passed();
   TrajectoryRecord written;
-  file_->read_record(step, written);
+  file_->read_record(step, written, static_cast<std::int64_t>(record_.polynomials.size()));
   compare_collisions(record_.collisions, written.collisions, grade);
   if (file_->layout() == TrajectoryLayout::kCollisionsAndPolynomials) {
     if (!compare_polynomials(record_.polynomials, written.polynomials, grade.lines)) {
@@ -91,11 +95,16 @@ void StepGrader::compare_records(std::int64_t step) {
       }
     }
     if (replaces_maximum(worst, grade.max_sync_residual)) grade.max_sync_residual = worst;
-    if (!below_limit(worst, report_.criteria.maximum_limit)) {
-      ++grade.sync_failures;
+    const bool state_differs = !below_limit(worst, report_.criteria.maximum_limit);
+    if (state_differs) {
       grade.lines.push_back("  Sync record of step " + std::to_string(step) +
                             " differs from FOSSSim's by " + to_text(worst));
     }
+    const bool polynomials_differ = !compare_sync_polynomials(
+        record_.polynomials,
+        record_.sync ? record_.sync->polynomials_logged : record_.polynomials.size(),
+        sync.polynomials, step, grade.lines);
+    if (state_differs || polynomials_differ) ++grade.sync_failures;
   }
   if (passed_before && !grade.passed()) grade.first_failing_step = step;
   if (grade.lines.size() > CollisionGrade::kMaxLines) {

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <bit>
 #include <cerrno>
 #include <cstring>
@@ -328,7 +329,8 @@ std::int64_t TrajectoryReader::record_offset(std::int64_t index) {
   return cursor_offset_;
 }
 
-void TrajectoryReader::read_record_at(std::int64_t index, TrajectoryRecord& record) {
+void TrajectoryReader::read_record_at(std::int64_t index, TrajectoryRecord& record,
+                                      std::int64_t max_polynomials) {
   record.q.resize(dofs_);
   record.v.resize(dofs_);
   record.collisions.clear();
@@ -364,7 +366,9 @@ void TrajectoryReader::read_record_at(std::int64_t index, TrajectoryRecord& reco
   if (layout_ != TrajectoryLayout::kCollisionsAndPolynomials) return;
   std::int32_t polynomials = 0;
   if (!read_int(file, polynomials) || polynomials < 0) fail();
-  for (std::int32_t p = 0; p < polynomials; ++p) {
+  const std::int64_t kept =
+      std::min<std::int64_t>(polynomials, std::max<std::int64_t>(max_polynomials, 0) + 1);
+  for (std::int64_t p = 0; p < kept; ++p) {
     std::int32_t length = 0;
     if (!read_int(file, length) || length < 0) fail();
     std::vector<double> c(static_cast<std::size_t>(length));
@@ -373,16 +377,18 @@ void TrajectoryReader::read_record_at(std::int64_t index, TrajectoryRecord& reco
   }
 }
 
-void TrajectoryReader::read_record(std::int64_t k, TrajectoryRecord& record) {
-  read_record_at(has_sync_records() ? 2 * k : k, record);
+void TrajectoryReader::read_record(std::int64_t k, TrajectoryRecord& record,
+                                   std::int64_t max_polynomials) {
+  read_record_at(has_sync_records() ? 2 * k : k, record, max_polynomials);
 }
 
-void TrajectoryReader::read_sync_record(std::int64_t k, TrajectoryRecord& record) {
+void TrajectoryReader::read_sync_record(std::int64_t k, TrajectoryRecord& record,
+                                        std::int64_t max_polynomials) {
   if (!has_sync_records() || k < 1) {
     throw std::logic_error("read_sync_record: the layout has no sync record for step " +
                            std::to_string(k));
   }
-  read_record_at(2 * k - 1, record);
+  read_record_at(2 * k - 1, record, max_polynomials);
 }
 
 void TrajectoryReader::read_frame(std::int64_t k, Vector& q, Vector& v) {

@@ -206,5 +206,67 @@ TEST_F(CollisionGrading, ASyncRecordThatDiffersFromFosssimsFails) {
       << report;
 }
 
+TEST_F(CollisionGrading, SyncRecordPolynomialsAreCompared) {
+  // Wrong coefficients, a missing polynomial and a record padded with 100,000 extra ones, each
+  // in the sync record only: the end-of-step records are right, and each run fails.
+  load("continuous-time");
+  bool passed = true;
+  std::string report = grade(
+      [](std::int64_t k, bool sync, TrajectoryRecord& r) {
+        if (sync && k == 1) {
+          std::vector<double> c = r.polynomials[0].coefficients();
+          c.back() += 1e-6;
+          r.polynomials[0] = Polynomial::as_written(c);
+        }
+      },
+      passed);
+  EXPECT_FALSE(passed);
+  EXPECT_NE(report.find("  Sync record of step 1: Wrong polynomial coefficients!\n"),
+            std::string::npos)
+      << report;
+  report = grade(
+      [](std::int64_t k, bool sync, TrajectoryRecord& r) {
+        if (sync && k == 2) r.polynomials.pop_back();
+      },
+      passed);
+  EXPECT_FALSE(passed);
+  EXPECT_NE(report.find("  Sync record of step 2: Wrong number of polynomials!\n"),
+            std::string::npos)
+      << report;
+  report = grade(
+      [](std::int64_t k, bool sync, TrajectoryRecord& r) {
+        if (sync && k == 1) {
+          r.polynomials.insert(r.polynomials.end(), 100000, r.polynomials[0]);
+        }
+      },
+      passed);
+  EXPECT_FALSE(passed);
+  EXPECT_NE(report.find("  Sync record of step 1: Wrong number of polynomials!\n"),
+            std::string::npos)
+      << report;
+}
+
+TEST(TrajectoryReaderCap, ARecordIsReadUpToOnePolynomialMoreThanTheCap) {
+  const std::string path =
+      (fs::temp_directory_path() / "fosssim_collision_grading_reader_cap.bin").string();
+  Vector q = Vector::Zero(2), v = Vector::Zero(2);
+  const std::vector<Polynomial> many(1000, Polynomial::as_written({1.0, 2.0, 3.0}));
+  TrajectoryWriter writer = TrajectoryWriter::open(path);
+  for (int k = 0; k < 3; ++k) {
+    writer.write_record(TrajectoryLayout::kCollisionsAndPolynomials, q, v, {}, many);
+  }
+  writer.commit();
+  TrajectoryReader file =
+      TrajectoryReader::open(path, 2, 2, TrajectoryLayout::kCollisionsAndPolynomials);
+  TrajectoryRecord record;
+  file.read_record(1, record, 10);
+  EXPECT_EQ(record.polynomials.size(), 11u);
+  file.read_sync_record(1, record, 0);
+  EXPECT_EQ(record.polynomials.size(), 1u);
+  file.read_record(1, record);
+  EXPECT_EQ(record.polynomials.size(), 1000u);
+  fs::remove(path);
+}
+
 }  // namespace
 }  // namespace fosssim
