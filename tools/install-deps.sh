@@ -11,7 +11,8 @@ PACKAGES="cmake ninja-build g++ pkg-config
   libmumps-seq-dev
   libgtest-dev libbenchmark-dev python3
   libcairo2-dev libssl-dev freeglut3-dev ffmpeg xvfb xauth
-  clang libclang-rt-14-dev llvm"
+  clang libclang-rt-14-dev llvm
+  bubblewrap"
 
 missing=""
 for package in $PACKAGES; do

@@ -1,7 +1,13 @@
 #include "candidate_run.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <csignal>
+#include <fstream>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -14,6 +20,7 @@
 #include "core/text.h"
 #include "io/trajectory_file.h"
 #include "printable_text.h"
+#include "sandbox.h"
 
 namespace fosssim {
 
@@ -84,6 +91,11 @@ std::optional<Verdict> classify_ending(const ChildOutcome& outcome,
                  " bytes and was stopped (SIGXFSZ)";
         return Verdict::kOversized;
       }
+      if (outcome.signal == SIGXCPU) {
+        reason = "the candidate used more CPU time than its limit of about " +
+                 to_text(options.timeout_seconds) + " s and was stopped (SIGXCPU)";
+        return Verdict::kTimedOut;
+      }
       reason = "the candidate crashed: killed by " + describe_signal(outcome.signal);
       return Verdict::kCrashed;
     case ChildEnding::kExited:
@@ -131,6 +143,69 @@ std::optional<Verdict> classify_file(const std::string& path, std::int64_t expec
   return std::nullopt;
 }
 
+/// Why `candidate` cannot be started, checked before it is run in the sandbox (where bwrap would
+/// report every such problem as its own failure); nothing when it looks like a program.
+std::optional<std::string> candidate_problem(const std::string& candidate) {
+  struct stat info;
+  if (::stat(candidate.c_str(), &info) != 0) {
+    return errno == ENOENT ? "the candidate " + candidate + " does not exist"
+                           : "cannot start the candidate " + candidate + " (" +
+                                 std::strerror(errno) + ")";
+  }
+  if (!S_ISREG(info.st_mode)) return "the candidate " + candidate + " is not a file";
+  if (::access(candidate.c_str(), X_OK) != 0) {
+    return "the candidate " + candidate + " is not executable (permission denied)";
+  }
+  char magic[4] = {0, 0, 0, 0};
+  std::ifstream(candidate, std::ios::binary).read(magic, sizeof(magic));
+  if (std::string(magic, 2) != "#!" && std::string(magic, 4) != "\x7f" "ELF") {
+    return "the candidate " + candidate +
+           " is not a program this system can run (a script needs a #! line)";
+  }
+  return std::nullopt;
+}
+
+/// The folder holding `path`, or the file itself when that folder is the root (binding "/"
+/// would show the whole machine).
+std::string folder_of(const std::string& path) {
+  const fs::path parent = fs::path(path).lexically_normal().parent_path();
+  return parent.empty() || parent == parent.root_path() ? path : parent.string();
+}
+
+/// What the sandboxed candidate may read: its own folder (also under its real name when it is
+/// a symbolic link), the folders of the scene's files, and the extra paths; each once.
+std::vector<std::string> readable_paths(const std::string& scene_path,
+                                        const std::vector<std::string>& scene_files,
+                                        const CandidateRunOptions& options) {
+  std::vector<std::string> paths;
+  const auto add = [&paths](const std::string& path) {
+    std::error_code error;
+    const std::string absolute = fs::absolute(path, error).lexically_normal().string();
+    if (!error && std::find(paths.begin(), paths.end(), absolute) == paths.end()) {
+      paths.push_back(absolute);
+    }
+  };
+  add(folder_of(options.candidate));
+  std::error_code error;
+  const fs::path real = fs::canonical(options.candidate, error);
+  if (!error) add(folder_of(real.string()));
+  if (scene_files.empty()) add(folder_of(scene_path));
+  for (const std::string& file : scene_files) add(folder_of(file));
+  for (const std::string& path : options.readable) add(path);
+  return paths;
+}
+
+/// A program killed by a signal inside the sandbox shows as bwrap's exit status 128 + signal;
+/// reported as the crash it is.
+void undo_sandbox_status(ChildOutcome& outcome) {
+  if (outcome.ending == ChildEnding::kExited && outcome.exit_status > kSandboxSignalBase &&
+      outcome.exit_status < kSandboxSignalBase + 65) {
+    outcome.ending = ChildEnding::kSignaled;
+    outcome.signal = outcome.exit_status - kSandboxSignalBase;
+    outcome.exit_status = 0;
+  }
+}
+
 }  // namespace
 
 WorkFolder::WorkFolder(const std::string& parent) {
@@ -155,22 +230,52 @@ WorkFolder::~WorkFolder() {
 }
 
 CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_bytes,
-                           const CandidateRunOptions& options, const WorkFolder& work, bool exact) {
+                           const CandidateRunOptions& options, const WorkFolder& work, bool exact,
+                           const std::vector<std::string>& scene_files) {
   CandidateRun run;
-  run.trajectory_path = work.path() + "/out.bin";
+  const std::string run_folder = work.path() + "/run";
+  run.trajectory_path = run_folder + "/out.bin";
+  std::error_code made;
+  fs::create_directory(run_folder, made);
+  if (made) {
+    throw Error(ErrorKind::kCannotWrite, "cannot create " + run_folder + ": " + made.message());
+  }
   const std::int64_t limit = write_limit(expected_bytes);
   ChildLimits limits;
   limits.timeout_seconds = options.timeout_seconds;
   limits.max_file_bytes = limit;
+  // The CPU time of the deadline, rounded up, and a second more: a busy candidate meets the
+  // deadline first; one that forks workers is still bounded per process.
+  limits.max_cpu_seconds =
+      static_cast<std::int64_t>(std::ceil(std::clamp(options.timeout_seconds, 0.0, 1e9))) + 1;
+  limits.max_address_space_bytes = options.max_memory_bytes;
+  limits.max_processes = options.max_processes;
   limits.watch = [&work, limit]() -> std::optional<std::string> {
     const std::int64_t bytes = folder_bytes(work.path());
     if (bytes <= limit) return std::nullopt;
     return "the candidate wrote " + std::to_string(bytes) + " bytes into its folder, more than " +
            "the limit of " + std::to_string(limit) + ", and was stopped";
   };
-  const ChildOutcome outcome =
-      run_child({options.candidate, "-s", scene_path, "-d", "0", "-o", run.trajectory_path},
-                work.path(), limits);
+  std::vector<std::string> command = {options.candidate, "-s", scene_path, "-d",
+                                      "0", "-o", run.trajectory_path};
+  if (options.sandbox) {
+    if (auto problem = candidate_problem(options.candidate)) {
+      run.problem = Verdict::kCannotRun;
+      run.reason = *problem;
+      return run;
+    }
+    SandboxLayout layout;
+    layout.bwrap = options.bwrap.empty() ? resolve_executable("bwrap") : options.bwrap;
+    if (layout.bwrap.empty()) {
+      throw Error(ErrorKind::kUnavailable, "bubblewrap (bwrap) is not installed");
+    }
+    layout.read_only = readable_paths(scene_path, scene_files, options);
+    layout.writable = run_folder;
+    layout.scratch_bytes = limit;
+    command = sandboxed_command(layout, command);
+  }
+  ChildOutcome outcome = run_child(command, run_folder, limits);
+  if (options.sandbox) undo_sandbox_status(outcome);
   run.seconds = outcome.seconds;
   run.exit_status = outcome.exit_status;
   run.stderr_tail = last_lines(printable_text(outcome.stderr_tail), 20);

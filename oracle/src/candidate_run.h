@@ -1,11 +1,13 @@
 #pragma once
 // Running a candidate simulator on one scene the way the course's grading script does,
-// "CANDIDATE -s SCENE -d 0 -o FILE", in a folder of its own, and checking that FILE is a
-// trajectory of the right size before anyone reads it.
+// "CANDIDATE -s SCENE -d 0 -o FILE", confined (sandbox.h) in a folder of its own with limits on
+// time, CPU, memory, file size and processes, and checking that FILE is a trajectory of the
+// right size before anyone reads it.
 
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scene_result.h"
 
@@ -32,9 +34,31 @@ class WorkFolder {
   bool keep_ = false;
 };
 
+/// Address space each process of a candidate may map (RLIMIT_AS), by default: 4 GiB. An
+/// oracle built with AddressSanitizer sets no such limit by default, because the sanitizer
+/// builds it grades (CI's sanitizer preset) reserve terabytes of address space.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr std::int64_t kDefaultCandidateMemoryBytes = -1;
+#else
+constexpr std::int64_t kDefaultCandidateMemoryBytes = std::int64_t(4) << 30;
+#endif
+/// Processes a candidate may have at once, by default.
+constexpr int kDefaultCandidateProcesses = 64;
+
 struct CandidateRunOptions {
   std::string candidate;  ///< the executable (a path; see resolve_executable)
   double timeout_seconds = 600.0;
+  /// Run the candidate in the sandbox of sandbox.h. False (--no-sandbox): run it directly, with
+  /// the same limits, seeing and able to write whatever the oracle's user can.
+  bool sandbox = true;
+  /// The bwrap executable; empty: found in $PATH when a run needs it.
+  std::string bwrap;
+  /// More files or folders the sandboxed candidate may read (--allow-read), at the same paths.
+  std::vector<std::string> readable;
+  /// RLIMIT_AS of every process of the candidate, bytes; negative: none.
+  std::int64_t max_memory_bytes = kDefaultCandidateMemoryBytes;
+  /// Processes the candidate may have at once (ChildLimits::max_processes); 0: no limit.
+  int max_processes = kDefaultCandidateProcesses;
 };
 
 /// What one run produced.
@@ -43,7 +67,7 @@ struct CandidateRun {
   /// or oversized file. Unset: `trajectory_path` holds exactly `expected_bytes` bytes.
   std::optional<Verdict> problem;
   std::string reason;           ///< one line, when `problem` is set
-  std::string trajectory_path;  ///< "<work folder>/out.bin"
+  std::string trajectory_path;  ///< "<work folder>/run/out.bin"
   std::string stderr_tail;      ///< the last lines of the candidate's standard error, printable
   int exit_status = 0;
   double seconds = 0.0;
@@ -59,13 +83,16 @@ std::int64_t expected_trajectory_bytes(const SceneModel& model);
 /// (layouts without collision records).
 bool trajectory_size_is_exact(const SceneModel& model);
 
-/// Runs `options.candidate -s <scene_path> -d 0 -o <work>/out.bin` in `work`, with the timeout,
-/// a per-file size limit and a watch on the folder's size (both well above `expected_bytes`, so
+/// Runs `options.candidate -s <scene_path> -d 0 -o <work>/run/out.bin` in `<work>/run`, with the
+/// timeout, the CPU-time limit (the timeout, rounded up), the memory and process limits, a
+/// per-file size limit and a watch on the folder's size (both well above `expected_bytes`, so
 /// a runaway writer is stopped early), then checks the file's size against `expected_bytes`:
 /// exactly, or (`exact` false: layouts with collision records) as a lower bound, leaving the
-/// rest to the reader, which checks the records' structure.
+/// rest to the reader, which checks the records' structure. Sandboxed, the candidate reads the
+/// folders of `scene_files` (the files the scene reads; the scene's folder when empty), its
+/// own folder and `options.readable`, and writes only `<work>/run` and its private /tmp.
 CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_bytes,
                            const CandidateRunOptions& options, const WorkFolder& work,
-                           bool exact = true);
+                           bool exact = true, const std::vector<std::string>& scene_files = {});
 
 }  // namespace fosssim

@@ -17,6 +17,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unordered_map>
 
 #include "seconds_since.h"
 
@@ -103,7 +106,15 @@ struct ExecPlan {
   std::vector<char*> argv;
   std::string working_dir;
   std::int64_t max_file_bytes;
+  std::int64_t max_cpu_seconds;
+  std::int64_t max_address_space_bytes;
 };
+
+/// Sets one resource limit (soft and hard); false when the system refuses.
+bool set_limit(int resource, rlim_t soft, rlim_t hard) {
+  const rlimit limit{soft, hard};
+  return ::setrlimit(resource, &limit) == 0;
+}
 
 /// Runs in the forked child: only async-signal-safe calls until exec. Reports a failure as
 /// (step, errno) on `report_fd` and exits.
@@ -119,7 +130,7 @@ struct ExecPlan {
   struct sigaction default_action;
   std::memset(&default_action, 0, sizeof(default_action));
   default_action.sa_handler = SIG_DFL;
-  for (int s : {SIGINT, SIGTERM, SIGPIPE, SIGXFSZ}) ::sigaction(s, &default_action, nullptr);
+  for (int s : {SIGINT, SIGTERM, SIGPIPE, SIGXFSZ, SIGXCPU}) ::sigaction(s, &default_action, nullptr);
   sigset_t none;
   sigemptyset(&none);
   ::sigprocmask(SIG_SETMASK, &none, nullptr);
@@ -133,8 +144,15 @@ struct ExecPlan {
   ::setrlimit(RLIMIT_CORE, &no_core);
   if (plan.max_file_bytes >= 0) {
     const auto bytes = static_cast<rlim_t>(plan.max_file_bytes);
-    const rlimit file_size{bytes, bytes};
-    if (::setrlimit(RLIMIT_FSIZE, &file_size) != 0) fail(3);
+    if (!set_limit(RLIMIT_FSIZE, bytes, bytes)) fail(3);
+  }
+  if (plan.max_cpu_seconds >= 0) {
+    const auto seconds = static_cast<rlim_t>(plan.max_cpu_seconds);
+    if (!set_limit(RLIMIT_CPU, seconds, seconds + 1)) fail(3);
+  }
+  if (plan.max_address_space_bytes >= 0) {
+    const auto bytes = static_cast<rlim_t>(plan.max_address_space_bytes);
+    if (!set_limit(RLIMIT_AS, bytes, bytes)) fail(3);
   }
   ::execve(plan.argv[0], plan.argv.data(), environ);
   fail(0);
@@ -179,7 +197,12 @@ bool children_stopped() { return g_stop_requested.load(); }
 
 ChildOutcome run_child(const std::vector<std::string>& args, const std::string& working_dir,
                        const ChildLimits& limits) {
-  ExecPlan plan{args, {}, working_dir, limits.max_file_bytes};
+  ExecPlan plan{args,
+                {},
+                working_dir,
+                limits.max_file_bytes,
+                limits.max_cpu_seconds,
+                limits.max_address_space_bytes};
   for (std::string& arg : plan.args) plan.argv.push_back(arg.data());
   plan.argv.push_back(nullptr);
 
@@ -238,9 +261,19 @@ ChildOutcome run_child(const std::vector<std::string>& args, const std::string& 
       outcome.ending = ChildEnding::kTimedOut;
       break;
     }
-    if (limits.watch && Clock::now() - last_watch >= std::chrono::milliseconds(50)) {
+    if ((limits.watch || limits.max_processes > 0) &&
+        Clock::now() - last_watch >= std::chrono::milliseconds(50)) {
       last_watch = Clock::now();
-      if (auto message = limits.watch()) {
+      std::optional<std::string> message = limits.watch ? limits.watch() : std::nullopt;
+      if (!message && limits.max_processes > 0) {
+        const int processes = count_descendants(pid);
+        if (processes > limits.max_processes) {
+          message = "the candidate had " + std::to_string(processes) +
+                    " processes running at once, more than the limit of " +
+                    std::to_string(limits.max_processes) + ", and was stopped";
+        }
+      }
+      if (message) {
         outcome.ending = ChildEnding::kStoppedByWatch;
         outcome.watch_message = std::move(*message);
         break;
@@ -306,6 +339,43 @@ std::string resolve_executable(const std::string& name) {
     begin = end + 1;
   }
   return "";
+}
+
+int count_descendants(int pid) {
+  namespace fs = std::filesystem;
+  // Parent links of every process; /proc/N/stat is "N (command) state ppid ...", and the
+  // command may hold spaces and parentheses, so the fields after the last ')' are read.
+  std::unordered_map<int, int> parent;
+  std::error_code error;
+  for (fs::directory_iterator it("/proc", error), end; !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream stat(it->path() / "stat");
+    std::string line;
+    if (!std::getline(stat, line)) continue;  // the process ended meanwhile
+    const std::size_t close = line.rfind(')');
+    if (close == std::string::npos) continue;
+    std::istringstream fields(line.substr(close + 1));
+    std::string state;
+    int ppid = 0;
+    if (fields >> state >> ppid) parent[std::atoi(name.c_str())] = ppid;
+  }
+  int count = 0;
+  for (const auto& [process, first_parent] : parent) {
+    // Walk up at most as many links as there are processes (a cycle cannot occur, but a
+    // snapshot taken while processes come and go is not guaranteed to be consistent).
+    int up = first_parent;
+    for (std::size_t steps = 0; up > 0 && steps < parent.size(); ++steps) {
+      if (up == pid) {
+        ++count;
+        break;
+      }
+      const auto next = parent.find(up);
+      if (next == parent.end()) break;
+      up = next->second;
+    }
+  }
+  return count;
 }
 
 std::string describe_signal(int signal) {

@@ -26,6 +26,16 @@ struct ChildLimits {
   /// RLIMIT_FSIZE for the child and everything it starts: a write beyond this many bytes in any
   /// one file fails with SIGXFSZ. Negative: no limit.
   std::int64_t max_file_bytes = -1;
+  /// RLIMIT_CPU: seconds of CPU time each process of the child may use before SIGXCPU (the
+  /// soft limit) and SIGKILL (one second later). Negative: no limit.
+  std::int64_t max_cpu_seconds = -1;
+  /// RLIMIT_AS: bytes of address space each process of the child may map; an allocation beyond
+  /// it fails. Negative: no limit.
+  std::int64_t max_address_space_bytes = -1;
+  /// Processes the child and its descendants may have at once, counted from /proc about every
+  /// 50 ms; more stops the child (kStoppedByWatch). 0: no limit. (RLIMIT_NPROC counts every
+  /// process of the user on the machine and does not bind root, so it cannot be used.)
+  int max_processes = 0;
   /// Bytes of standard output and standard error to keep (the last ones).
   std::size_t tail_bytes = 4096;
   /// Called about every 50 ms while the child runs; returning a message stops the child
@@ -64,6 +74,10 @@ bool children_stopped();
 /// The path that exec would run for `name`: `name` itself (made absolute) when it holds a '/',
 /// otherwise the first executable file called `name` in $PATH; empty when none is found.
 std::string resolve_executable(const std::string& name);
+
+/// How many processes descend from `pid` (children, their children, ...), not counting `pid`
+/// itself, from the parent links in /proc; 0 when /proc cannot be read.
+int count_descendants(int pid);
 
 /// "SIGSEGV (Segmentation fault)" for a signal number.
 std::string describe_signal(int signal);

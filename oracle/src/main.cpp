@@ -4,8 +4,11 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <variant>
 
@@ -14,11 +17,15 @@
 #include "child_process.h"
 #include "cli/exit_codes.h"
 #include "cli/parse_command_line.h"
+#include "core/text.h"
 #include "gradescope_report.h"
+#include "io/file_identity.h"
 #include "io/text_lines.h"
 #include "junit_report.h"
 #include "manifest.h"
 #include "result_table.h"
+#include "sandbox.h"
+#include "scene_grading.h"
 #include "seconds_since.h"
 #include "shard_result_file.h"
 
@@ -43,8 +50,78 @@ struct GradeCommand {
   double timeout = 600.0;
   std::string shard_result, diagnose_dir, work_dir;
   bool keep_work = false;
+  bool no_sandbox = false;
+  std::vector<std::string> allow_read;
+  std::int64_t max_memory_mib = kDefaultCandidateMemoryBytes < 0
+                                    ? 0
+                                    : kDefaultCandidateMemoryBytes >> 20;
+  int max_processes = kDefaultCandidateProcesses;
   ReportOptions reports;
 };
+
+/// Longest --timeout: a week. Larger values (and inf, nan) are refused, not taken as "none".
+constexpr double kMaxTimeoutSeconds = 7 * 24 * 3600.0;
+/// Largest --points-per-scene.
+constexpr double kMaxPointsPerScene = 1e6;
+/// Most -j workers, and most --max-processes.
+constexpr int kMaxJobs = 256;
+constexpr int kMaxProcessesLimit = 4096;
+
+/// Accepts a decimal number that is finite, greater than `above` and at most `at_most`; CLI11's
+/// own checks let nan and inf through.
+CLI::Validator finite_number(double above, double at_most) {
+  return CLI::Validator(
+      [above, at_most](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (text.empty() || end == nullptr || *end != '\0' || !std::isfinite(value)) {
+          return "expected a finite number, got " + text;
+        }
+        if (!(value > above) || value > at_most) {
+          return "expected a number greater than " + to_text(above) + " and at most " +
+                 to_text(at_most) + ", got " + text;
+        }
+        return "";
+      },
+      "NUMBER in (" + to_text(above) + ", " + to_text(at_most) + "]");
+}
+
+/// Throws Error (kBadInput) unless `folder` is empty or an existing folder: a missing work
+/// folder is the caller's mistake, not the candidate's.
+void check_work_dir(const std::string& folder) {
+  if (folder.empty()) return;
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error)) {
+    throw Error(ErrorKind::kBadInput,
+                "--work-dir " + folder + ": " +
+                    (std::filesystem::exists(folder, error) ? "not a folder" : "no such folder"));
+  }
+}
+
+/// Throws Error (kBadInput) when a report path names the same file as an input (a scene, a file
+/// a scene reads, the candidate, a shard result being merged) or as another report: a report
+/// never replaces an input, and two reports never share a file.
+void check_outputs_are_not_inputs(const std::vector<std::pair<std::string, std::string>>& outputs,
+                                  const std::vector<std::string>& inputs) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const auto& [option, path] = outputs[i];
+    if (path.empty()) continue;
+    const std::optional<FileIdentity> identity = file_identity(path);
+    if (!identity) continue;  // not there yet: it cannot be an input
+    for (const std::string& input : inputs) {
+      if (file_identity(input) == identity) {
+        throw Error(ErrorKind::kBadInput, option + " " + path + " is the input " + input +
+                                              "; a report never replaces an input");
+      }
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (!outputs[j].second.empty() && file_identity(outputs[j].second) == identity) {
+        throw Error(ErrorKind::kBadInput, option + " " + path + " is also " +
+                                              outputs[j].first + "; give each report a file of its own");
+      }
+    }
+  }
+}
 
 struct MergeCommand {
   std::vector<std::string> files;
@@ -76,7 +153,7 @@ void add_report_options(CLI::App& command, ReportOptions& reports) {
   command
       .add_option("--points-per-scene", reports.scoring.points_per_scene,
                   "Gradescope points for each passing scene")
-      ->check(CLI::PositiveNumber)
+      ->check(finite_number(0.0, kMaxPointsPerScene))
       ->capture_default_str();
   command
       .add_option("--visibility", reports.scoring.visibility,
@@ -115,6 +192,7 @@ int run_grade(const GradeCommand& command) {
     std::cerr << "fosssim-oracle: error: no scene files (*.xml) in the given folders\n";
     return kExitBadInput;
   }
+  check_work_dir(command.work_dir);
   GradingOptions options;
   options.run.candidate = resolve_executable(command.candidate);
   if (options.run.candidate.empty()) {
@@ -123,15 +201,51 @@ int run_grade(const GradeCommand& command) {
               << " is not found; every scene will fail\n";
   }
   options.run.timeout_seconds = command.timeout;
+  options.run.sandbox = !command.no_sandbox;
+  options.run.readable = command.allow_read;
+  options.run.max_memory_bytes =
+      command.max_memory_mib > 0 ? command.max_memory_mib << 20 : std::int64_t(-1);
+  options.run.max_processes = command.max_processes;
   options.work_dir = command.work_dir;
   options.keep_work = command.keep_work;
   options.diagnose_dir = command.diagnose_dir;
+  for (const std::string& path : command.allow_read) {
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) {
+      throw Error(ErrorKind::kBadInput, "--allow-read " + path + ": no such file or folder");
+    }
+  }
 
   GradingRun run;
   run.candidate = command.candidate;
   run.shard = shard;
   run.scenes = listing_of(scenes);
-  const std::vector<SceneEntry> selected = select_shard(scenes, shard);
+  // The oracle's own copy of every scene, taken before any candidate runs (scene_grading.h).
+  std::vector<SceneEntry> selected = select_shard(scenes, shard);
+  read_scene_files(selected);
+  std::vector<std::string> inputs = {options.run.candidate};
+  for (const SceneEntry& entry : scenes) inputs.push_back(entry.path);
+  for (const SceneEntry& entry : selected) {
+    for (const auto& file : entry.files) inputs.push_back(file.first);
+  }
+  check_outputs_are_not_inputs({{"--junit", command.reports.junit},
+                                {"--gradescope", command.reports.gradescope},
+                                {"--shard-result", command.shard_result}},
+                               inputs);
+  if (options.run.sandbox) {
+    options.run.bwrap = resolve_executable("bwrap");
+    WorkFolder probe(command.work_dir);
+    if (auto why = sandbox_unavailable(options.run.bwrap, probe.path())) {
+      throw Error(ErrorKind::kUnavailable,
+                  *why +
+                      "; candidates are not run unconfined unless asked: install bubblewrap, or "
+                      "give --no-sandbox to run them without a sandbox (they can then read and "
+                      "write whatever this user can)");
+    }
+  } else if (!command.reports.quiet) {
+    std::cerr << "fosssim-oracle: warning: --no-sandbox: candidates run unconfined, with the "
+                 "time, CPU, memory, file-size and process limits only\n";
+  }
   if (!command.reports.quiet) {
     std::cerr << "fosssim-oracle: grading " << selected.size() << " of " << scenes.size()
               << " scenes (shard " << shard.index << "/" << shard.count << ") with " << command.jobs
@@ -162,6 +276,9 @@ int run_grade(const GradeCommand& command) {
 }
 
 int run_merge(const MergeCommand& command) {
+  check_outputs_are_not_inputs(
+      {{"--junit", command.reports.junit}, {"--gradescope", command.reports.gradescope}},
+      command.files);
   std::vector<GradingRun> shards;
   for (const std::string& file : command.files) {
     std::string text;
@@ -179,7 +296,11 @@ int run_merge(const MergeCommand& command) {
 std::variant<std::vector<ManifestEntry>, int> compute_for(const ManifestCommand& command) {
   const std::vector<SceneEntry> scenes =
       discover_scenes(command.scene_folders, {}, /*missing_folders_are_empty=*/true);
+  check_work_dir(command.work_dir);
   CandidateRunOptions options;
+  // FOSSSim is this repository's own program, not a submission: it runs without a sandbox, so
+  // that the manifest does not depend on bubblewrap; the limits still apply.
+  options.sandbox = false;
   options.candidate = resolve_executable(command.candidate);
   if (options.candidate.empty()) {
     std::cerr << "fosssim-oracle: error: the candidate " << command.candidate << " is not found\n";
@@ -241,15 +362,38 @@ void add_grade_command(CLI::App& app, GradeCommand& c) {
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   grade->add_option("-j,--jobs", c.jobs, "Scenes graded at once")
-      ->check(CLI::PositiveNumber)
+      ->check(CLI::Range(1, kMaxJobs))
       ->capture_default_str();
   grade
       ->add_option("--shard", c.shard,
                    "Grade only shard K of N: the scenes at positions i (0-based, in sorted order)\n"
                    "with i mod N = K - 1")
       ->capture_default_str();
-  grade->add_option("--timeout", c.timeout, "Seconds a candidate may run on one scene")
-      ->check(CLI::PositiveNumber)
+  grade
+      ->add_option("--timeout", c.timeout,
+                   "Seconds a candidate may run on one scene (wall time; its CPU time is limited "
+                   "to the same, rounded up)")
+      ->check(finite_number(0.0, kMaxTimeoutSeconds))
+      ->capture_default_str();
+  grade->add_flag("--no-sandbox", c.no_sandbox,
+                  "Run the candidate without the bubblewrap sandbox (where it cannot be built):\n"
+                  "it then sees and can write whatever this user can; the limits still apply");
+  grade
+      ->add_option("--allow-read", c.allow_read,
+                   "A file or folder the sandboxed candidate may also read, at the same path\n"
+                   "(repeat for several); it always reads its own folder and the scene's")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  grade
+      ->add_option("--max-memory", c.max_memory_mib,
+                   "MiB of address space each process of the candidate may map (RLIMIT_AS);\n"
+                   "0: no limit")
+      ->check(CLI::Range(std::int64_t(0), std::int64_t(1) << 30))
+      ->capture_default_str();
+  grade
+      ->add_option("--max-processes", c.max_processes,
+                   "Processes the candidate may have at once; more stop it")
+      ->check(CLI::Range(1, kMaxProcessesLimit))
       ->capture_default_str();
   grade->add_option("--shard-result", c.shard_result,
                     "Write this run's results as JSON, for `fosssim-oracle merge`");
@@ -278,10 +422,10 @@ void add_manifest_options(CLI::App& command, ManifestCommand& c) {
                   "Scene folders (a folder that does not exist counts as empty)")
       ->required();
   command.add_option("-j,--jobs", c.jobs, "Scenes run at once")
-      ->check(CLI::PositiveNumber)
+      ->check(CLI::Range(1, kMaxJobs))
       ->capture_default_str();
   command.add_option("--timeout", c.timeout, "Seconds FOSSSim may run on one scene")
-      ->check(CLI::PositiveNumber)
+      ->check(finite_number(0.0, kMaxTimeoutSeconds))
       ->capture_default_str();
   command.add_option("--work-dir", c.work_dir, "Where the per-scene temporary folders go");
 }

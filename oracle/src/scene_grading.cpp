@@ -8,6 +8,7 @@
 #include "core/text.h"
 #include "diagnosis.h"
 #include "grading/step_grader.h"
+#include "io/input_files.h"
 #include "io/scene_loader.h"
 #include "printable_text.h"
 #include "seconds_since.h"
@@ -159,13 +160,36 @@ std::string failure_details(const GradeReport& report, const ResidualHistory& hi
   return out.str();
 }
 
+void read_scene_files(std::vector<SceneEntry>& scenes) {
+  for (SceneEntry& entry : scenes) {
+    entry.files.clear();
+    entry.load_error.reset();
+    try {
+      InputFiles files;
+      load_scene_file(entry.path, files);
+      InputFiles copy;  // the same size limits as the loader's
+      for (const std::string& path : files.paths()) {
+        if (!entry.files.count(path)) entry.files.emplace(path, copy.read(path));
+      }
+    } catch (const Error& error) {
+      entry.files.clear();
+      entry.load_error = error.what();
+    }
+  }
+}
+
 SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) {
   SceneResult result;
   result.name = entry.name;
   result.extra_credit = entry.extra_credit;
   std::optional<Scene> loaded;
+  std::vector<std::string> scene_files;
   try {
-    loaded.emplace(load_scene_file(entry.path));
+    if (entry.load_error) throw Error(ErrorKind::kBadInput, *entry.load_error);
+    InputFiles files =
+        entry.files.empty() ? InputFiles() : InputFiles::in_memory(entry.files);
+    loaded.emplace(load_scene_file(entry.path, files));
+    scene_files = files.paths();
     check_step_count(loaded->model, Limits{});
   } catch (const Error& error) {
     result.verdict = Verdict::kSceneError;
@@ -189,7 +213,7 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
     WorkFolder work(options.work_dir);
     if (options.keep_work) work.keep();
     const CandidateRun run = run_candidate(entry.path, expected_bytes, options.run, work,
-                                           trajectory_size_is_exact(model));
+                                           trajectory_size_is_exact(model), scene_files);
     result.run_seconds = run.seconds;
     result.stderr_tail = run.stderr_tail;
     if (run.problem) {

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "candidate_run.h"
 #include "grading/grader.h"
@@ -21,6 +22,11 @@ struct GradingOptions {
   bool keep_work = false;    ///< keep each scene's folder (with the candidate's out.bin)
   std::string diagnose_dir;  ///< where failing scenes' diagnosis files go; empty: none
 };
+
+/// Loads every scene once and keeps a copy of each file it reads in SceneEntry::files (or the
+/// loader's message in SceneEntry::load_error), so that grading never depends on files a
+/// candidate could have changed. Call it before any candidate runs.
+void read_scene_files(std::vector<SceneEntry>& scenes);
 
 /// Grades one scene. Never throws for a problem of the candidate: every such problem becomes
 /// the scene's verdict with a reason. A scene file that cannot be loaded is kSceneError.

@@ -2,20 +2,33 @@
 // Which scenes a run grades: the scene files under the given folders, named so that the name is
 // the same on every machine, sorted, and split into shards.
 
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fosssim {
 
 /// One scene to grade.
 struct SceneEntry {
+  SceneEntry() = default;
+  SceneEntry(std::string name_, std::string path_, bool extra_credit_ = false)
+      : name(std::move(name_)), path(std::move(path_)), extra_credit(extra_credit_) {}
+
   /// The folder's own name followed by the path inside it, with '/' separators:
   /// "assets/t1m1/springs_single.xml". Independent of where the folder lies, so that shards run
   /// on different machines name scenes alike.
   std::string name;
   std::string path;           ///< where the file is on this machine (absolute)
   bool extra_credit = false;  ///< found under an --extra-credit folder
+  /// The oracle's own copy of every file the scene reads (the scene file and its meshes), by
+  /// the path the loader asks for, taken by read_scene_files() before any candidate runs;
+  /// grading loads the scene from it, whatever happens to the files afterwards. Empty: the
+  /// scene is read from disk when it is graded.
+  std::map<std::string, std::string> files;
+  /// Set when read_scene_files() could not load the scene: the loader's message.
+  std::optional<std::string> load_error;
   /// The report group: the name of the folder that holds the file ("assets/t1m1").
   std::string suite() const;
 };

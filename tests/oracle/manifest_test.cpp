@@ -22,6 +22,7 @@ std::vector<ManifestEntry> compute_with(const std::string& candidate, const Temp
   CandidateRunOptions options;
   options.candidate = candidate;
   options.timeout_seconds = 60.0;
+  options.readable = testing::sandbox_readable();  // the perturbing candidate runs FOSSSim
   return compute_manifest(test_scenes(), options, work.path(), 2);
 }
 

@@ -16,7 +16,12 @@ namespace {
 
 using testing::TemporaryFolder;
 
+/// Runs fosssim-oracle; `grade` also gets the --allow-read arguments the test candidates need.
 ChildOutcome oracle(std::vector<std::string> arguments) {
+  if (!arguments.empty() && arguments[0] == "grade") {
+    const auto extra = testing::allow_read_arguments();
+    arguments.insert(arguments.begin() + 1, extra.begin(), extra.end());
+  }
   arguments.insert(arguments.begin(), testing::kOracle);
   return testing::run_program(arguments);
 }
@@ -135,35 +140,83 @@ TEST(OracleCommand, ExitStatusesForBadInput) {
   EXPECT_TRUE(std::filesystem::exists(out / "junit.xml"));
 }
 
+TEST(OracleCommand, OptionValuesAreCheckedBeforeAnyCandidateRuns) {
+  TemporaryFolder out;
+  const auto refused = [&](std::vector<std::string> extra, const std::string& named) {
+    std::vector<std::string> arguments = {"grade", "-q", "--candidate", testing::kFossSim,
+                                          testing::kAssets};
+    arguments.insert(arguments.end(), extra.begin(), extra.end());
+    const ChildOutcome run = oracle(arguments);
+    EXPECT_EQ(run.exit_status, 2) << named << "\n" << run.stdout_tail << run.stderr_tail;
+    EXPECT_NE(run.stderr_tail.find(named), std::string::npos) << run.stderr_tail;
+    EXPECT_EQ(run.stdout_tail.find("CANNOT-RUN"), std::string::npos) << run.stdout_tail;
+  };
+  for (const char* value : {"nan", "inf", "-inf", "-1", "0", "1e9", "5s"}) {
+    refused({"--timeout", value}, "--timeout");
+  }
+  for (const char* value : {"nan", "inf", "-2", "0"}) refused({"--points-per-scene", value}, "--points-per-scene");
+  for (const char* value : {"0", "-1", "100000"}) refused({"-j", value}, "--jobs");
+  refused({"--max-processes", "0"}, "--max-processes");
+  refused({"--max-memory", "-5"}, "--max-memory");
+  // A missing work folder is the oracle's own error, not every scene's CANNOT-RUN.
+  refused({"--work-dir", out / "no-such-folder"}, "--work-dir");
+  refused({"--allow-read", out / "no-such-file"}, "--allow-read");
+}
+
+TEST(OracleCommand, ReportsNeverReplaceAnInput) {
+  TemporaryFolder out;
+  std::filesystem::copy(testing::kAssets, out / "suite", std::filesystem::copy_options::recursive);
+  const std::string scene = out / "suite/basics/spring_chain_explicit.xml";
+  const std::string candidate = out / "candidate.sh";
+  std::filesystem::copy_file(testing::candidate("crashing_candidate.sh"), candidate);
+  const std::string scene_bytes = testing::read_bytes(scene);
+  const std::string candidate_bytes = testing::read_bytes(candidate);
+  const auto refused = [&](std::vector<std::string> reports, const std::string& named) {
+    std::vector<std::string> arguments = {"grade", "-q", "--candidate", candidate,
+                                          out / "suite"};
+    arguments.insert(arguments.end(), reports.begin(), reports.end());
+    const ChildOutcome run = oracle(arguments);
+    EXPECT_EQ(run.exit_status, 2) << run.stdout_tail << run.stderr_tail;
+    EXPECT_NE(run.stderr_tail.find(named), std::string::npos) << run.stderr_tail;
+  };
+  refused({"--junit", scene}, "is the input " + scene);
+  refused({"--gradescope", candidate}, "is the input " + candidate);
+  refused({"--shard-result", out / "suite/basics/../basics/spring_chain_symplectic.xml"},
+          "--shard-result");
+  testing::write_bytes(out / "report.xml", "old");
+  refused({"--junit", out / "report.xml", "--gradescope", out / "./report.xml"}, "is also --junit");
+  EXPECT_EQ(testing::read_bytes(scene), scene_bytes);
+  EXPECT_EQ(testing::read_bytes(candidate), candidate_bytes);
+  EXPECT_EQ(testing::read_bytes(out / "report.xml"), "old");
+  // merge: the shard result files are its inputs.
+  testing::write_bytes(out / "shard.json", "{}");
+  const ChildOutcome merge = oracle({"merge", out / "shard.json", "--junit", out / "shard.json"});
+  EXPECT_EQ(merge.exit_status, 2) << merge.stderr_tail;
+  EXPECT_NE(merge.stderr_tail.find("is the input"), std::string::npos) << merge.stderr_tail;
+  EXPECT_EQ(testing::read_bytes(out / "shard.json"), "{}");
+}
+
 TEST(OracleCommand, InterruptStopsTheRunningCandidateAndWritesNoReports) {
   TemporaryFolder out;
-  const std::string pid_file = out / "sleep.pid";
-  testing::set_env("ORACLE_TEST_PID_FILE", pid_file);
+  // The sandboxed candidate writes only into its own folder under --work-dir, and its process
+  // ids are those of its own namespace: it is found by its sleep's unique argument instead.
+  const std::string token = "1000." + std::to_string(::getpid());
+  testing::set_env("ORACLE_TEST_SLEEP", token);
   // Start a run on a hanging candidate, wait until the candidate is up, then press "Ctrl-C".
   const std::string script =
-      "\"$0\" grade -q --candidate \"$1\" --junit \"$2\" \"$3\" & oracle=$!; "
-      "while [ ! -s \"$4\" ]; do sleep 0.02; done; kill -INT $oracle; wait $oracle; echo status $?";
+      "\"$0\" grade -q --candidate \"$1\" --work-dir \"$4\" --junit \"$2\" \"$3\" & oracle=$!; "
+      "until [ -n \"$(find \"$4\" -name sleep.pid 2>/dev/null)\" ]; do sleep 0.02; done; "
+      "kill -INT $oracle; wait $oracle; echo status $?";
   const ChildOutcome run = testing::run_program(
       {"/bin/sh", "-c", script, testing::kOracle, testing::candidate("hanging_candidate.sh"),
-       out / "junit.xml", testing::kAssets, pid_file},
+       out / "junit.xml", testing::kAssets, out.path()},
       60.0);
   EXPECT_EQ(run.stdout_tail, "status 130\n") << run.stderr_tail;
   EXPECT_NE(run.stderr_tail.find("interrupted; no reports written"), std::string::npos)
       << run.stderr_tail;
   EXPECT_FALSE(std::filesystem::exists(out / "junit.xml"));
-  int sleeper = 0;
-  std::ifstream(pid_file) >> sleeper;
-  ASSERT_GT(sleeper, 0);
-  const std::string proc = "/proc/" + std::to_string(sleeper) + "/stat";
-  std::string state;
-  for (int k = 0; k < 100; ++k) {
-    std::ifstream stat(proc);
-    std::string pid_text, command;
-    state.clear();
-    if (!(stat >> pid_text >> command >> state) || state == "Z") break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  EXPECT_TRUE(state.empty() || state == "Z") << "the candidate's child survived the interrupt";
+  EXPECT_EQ(testing::wait_for_processes_to_end(token, 2.0), std::vector<int>{})
+      << "the candidate's child survived the interrupt";
 }
 
 TEST(OracleCommand, ManifestUpdateThenCheckAndADetectedChange) {

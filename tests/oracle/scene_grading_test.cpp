@@ -28,6 +28,8 @@ GradingOptions options_for(const std::string& candidate, const TemporaryFolder& 
   GradingOptions options;
   options.run.candidate = candidate;
   options.run.timeout_seconds = 30.0;
+  options.run.readable = testing::sandbox_readable();
+  options.run.readable.push_back(work.path());  // the prepared files of file_copying_candidate
   options.work_dir = work.path();
   return options;
 }

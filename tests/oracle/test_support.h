@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <cstring>
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -31,6 +32,58 @@ inline const std::string kExtraCredit = kData + "/extracreditassets";
 inline const std::string kChainScene = kAssets + "/basics/spring_chain_explicit.xml";
 
 inline std::string candidate(const std::string& script) { return kCandidates + "/" + script; }
+
+/// What the test candidates read besides their own folder and the scene's, and so what their
+/// sandbox must show them: the build folder (FOSSSim, the perturbing tool) and the tests folder
+/// (the sanitizers' suppression file).
+inline std::vector<std::string> sandbox_readable() {
+  namespace fs = std::filesystem;
+  return {fs::path(kFossSim).parent_path().parent_path().string(),
+          fs::path(kData).parent_path().parent_path().string()};
+}
+
+/// The same as --allow-read arguments of `fosssim-oracle grade`.
+inline std::vector<std::string> allow_read_arguments() {
+  std::vector<std::string> arguments;
+  for (const std::string& path : sandbox_readable()) {
+    arguments.insert(arguments.end(), {"--allow-read", path});
+  }
+  return arguments;
+}
+
+/// The live processes of the machine (zombies left out) that have `argument` among their
+/// arguments, as read from /proc.
+inline std::vector<int> processes_with_argument(const std::string& argument) {
+  std::vector<int> found;
+  std::error_code error;
+  for (std::filesystem::directory_iterator it("/proc", error), end; !error && it != end;
+       it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream cmdline(it->path() / "cmdline", std::ios::binary);
+    const std::string arguments((std::istreambuf_iterator<char>(cmdline)),
+                                std::istreambuf_iterator<char>());
+    if (arguments.find(std::string(1, '\0') + argument + '\0') == std::string::npos) continue;
+    std::ifstream stat(it->path() / "stat");
+    std::string line;
+    std::getline(stat, line);
+    const std::size_t close = line.rfind(')');
+    if (close != std::string::npos && close + 2 < line.size() && line[close + 2] == 'Z') continue;
+    found.push_back(std::stoi(name));
+  }
+  return found;
+}
+
+/// Waits up to `seconds` for every process with `argument` to be gone; returns those left.
+inline std::vector<int> wait_for_processes_to_end(const std::string& argument, double seconds) {
+  std::vector<int> left;
+  for (int k = 0; k < static_cast<int>(seconds * 50); ++k) {
+    left = processes_with_argument(argument);
+    if (left.empty()) break;
+    ::usleep(20000);
+  }
+  return left;
+}
 
 /// A fresh temporary folder for one test, removed afterwards.
 class TemporaryFolder {
