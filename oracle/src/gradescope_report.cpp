@@ -82,6 +82,7 @@ std::string gradescope_json(const GradingRun& run, const GradescopeOptions& opti
               std::to_string(t.extra) + " passed (+" +
               plural_points(t.extra_passed * options.points_per_scene) + ").";
   }
+  if (!run.sandboxed) output += std::string("\n") + kNoSandboxNote;
   const json document = {{"score", score},
                          {"execution_time", static_cast<long long>(std::llround(run.wall_seconds))},
                          {"output", output},

@@ -22,6 +22,9 @@ struct GradingRun {
   std::vector<SceneListing> scenes;  ///< every scene of the whole run, in order
   std::vector<SceneResult> results;  ///< the graded scenes of this shard, in the same order
   double wall_seconds = 0.0;         ///< a merge adds up its shards' wall times
+  /// False when the candidates ran without the sandbox (--no-sandbox; for a merge, in any
+  /// shard): every report then says so.
+  bool sandboxed = true;
 };
 
 /// Counts of scenes and passes, regular and extra credit apart.
@@ -32,6 +35,9 @@ struct Tally {
 };
 
 Tally tally(const std::vector<SceneResult>& results);
+
+/// The sentence every report carries when the candidates ran without the sandbox.
+inline constexpr const char* kNoSandboxNote = "Candidates ran without a sandbox (--no-sandbox).";
 
 /// The listing of a scene list.
 std::vector<SceneListing> listing_of(const std::vector<SceneEntry>& scenes);

@@ -131,6 +131,12 @@ std::string junit_xml(const GradingRun& run) {
     xml.PushAttribute("name", "kind");
     xml.PushAttribute("value", suite.extra_credit ? "extra-credit" : "regular");
     xml.CloseElement();
+    if (!run.sandboxed) {
+      xml.OpenElement("property");
+      xml.PushAttribute("name", "sandbox");
+      xml.PushAttribute("value", "none (--no-sandbox)");
+      xml.CloseElement();
+    }
     xml.CloseElement();
     for (const SceneResult* r : suite.results) print_testcase(xml, *r);
     xml.CloseElement();

@@ -218,6 +218,7 @@ int run_grade(const GradeCommand& command) {
 
   GradingRun run;
   run.candidate = command.candidate;
+  run.sandboxed = options.run.sandbox;
   run.shard = shard;
   run.scenes = listing_of(scenes);
   // The oracle's own copy of every scene, taken before any candidate runs (scene_grading.h).

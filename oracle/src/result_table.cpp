@@ -94,6 +94,7 @@ void print_result_table(std::ostream& out, const GradingRun& run) {
   out << "\nRegular scenes: " << t.regular_passed << " of " << t.regular << " passed";
   if (t.extra > 0) out << "; extra credit: " << t.extra_passed << " of " << t.extra << " passed";
   out << ". Wall time " << format("%.2f", run.wall_seconds) << " s.\n";
+  if (!run.sandboxed) out << kNoSandboxNote << "\n";
 }
 
 std::string progress_line(const SceneResult& result, std::size_t done, std::size_t total) {

@@ -113,6 +113,7 @@ std::string shard_result_json(const GradingRun& run) {
                          {"candidate", printable_text(run.candidate)},
                          {"shard", {{"index", run.shard.index}, {"count", run.shard.count}}},
                          {"wall_seconds", number_json(run.wall_seconds)},
+                         {"sandboxed", run.sandboxed},
                          {"scenes", scenes},
                          {"results", results}};
   return document.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
@@ -137,6 +138,7 @@ GradingRun parse_shard_result(const std::string& text, const std::string& source
            std::to_string(run.shard.count));
     }
     run.wall_seconds = number_from(document.at("wall_seconds"));
+    run.sandboxed = document.value("sandboxed", true);  // absent in files of older oracles
     for (const json& s : document.at("scenes")) {
       run.scenes.push_back({s.at("name").get<std::string>(), s.at("extra_credit").get<bool>()});
     }
@@ -190,7 +192,10 @@ GradingRun merge_shards(const std::vector<GradingRun>& shards,
   merged.candidate = first.candidate;
   merged.scenes = first.scenes;
   std::vector<std::size_t> next(static_cast<std::size_t>(count), 0);
-  for (const GradingRun* shard : by_index) merged.wall_seconds += shard->wall_seconds;
+  for (const GradingRun* shard : by_index) {
+    merged.wall_seconds += shard->wall_seconds;
+    merged.sandboxed = merged.sandboxed && shard->sandboxed;
+  }
   for (std::size_t i = 0; i < merged.scenes.size(); ++i) {
     const auto k = static_cast<std::size_t>(Shard::holding(i, count).index - 1);
     const GradingRun& shard = *by_index[k];

@@ -4,10 +4,12 @@
 
 #include <cmath>
 #include <cstring>
+#include <sstream>
 
 #include "gradescope_report.h"
 #include "junit_report.h"
 #include "printable_text.h"
+#include "result_table.h"
 #include "report_samples.h"
 #include "support/thrown.h"
 
@@ -69,6 +71,26 @@ std::vector<GradingRun> split(const GradingRun& whole, int count) {
     shards.push_back(shard);
   }
   return shards;
+}
+
+TEST(ShardResultFile, ARunWithoutTheSandboxSaysSoInEveryReportAndThroughAMerge) {
+  GradingRun run = testing::sample_run();
+  EXPECT_EQ(junit_xml(run).find("--no-sandbox"), std::string::npos);
+  run.sandboxed = false;
+  const GradingRun parsed = parse_shard_result(shard_result_json(run), "test");
+  EXPECT_FALSE(parsed.sandboxed);
+  EXPECT_NE(junit_xml(parsed).find(R"x(<property name="sandbox" value="none (--no-sandbox)"/>)x"),
+            std::string::npos);
+  EXPECT_NE(gradescope_json(parsed).find(kNoSandboxNote), std::string::npos);
+  std::ostringstream table;
+  print_result_table(table, parsed);
+  EXPECT_NE(table.str().find(kNoSandboxNote), std::string::npos);
+  // One shard without the sandbox makes the merged run one without it.
+  GradingRun whole = testing::sample_run();
+  std::vector<GradingRun> shards = split(whole, 2);
+  EXPECT_TRUE(merge_shards(shards, {"a", "b"}).sandboxed);
+  shards[1].sandboxed = false;
+  EXPECT_FALSE(merge_shards(shards, {"a", "b"}).sandboxed);
 }
 
 TEST(MergeShards, GivesTheWholeRunsReportsWhateverTheShardOrder) {
