@@ -196,6 +196,28 @@ TEST(OracleCommand, ReportsNeverReplaceAnInput) {
   EXPECT_EQ(testing::read_bytes(out / "shard.json"), "{}");
 }
 
+TEST(OracleCommand, WithoutBubblewrapGradeRefusesUnlessToldNoSandbox) {
+  TemporaryFolder empty;  // a $PATH in which bwrap is not found
+  const auto grade = [&](std::vector<std::string> extra) {
+    std::vector<std::string> arguments = {"/usr/bin/env", "PATH=" + empty.path(), testing::kOracle,
+                                          "grade", "-q", "--candidate", testing::kFossSim,
+                                          testing::kAssets};
+    arguments.insert(arguments.end(), extra.begin(), extra.end());
+    return testing::run_program(arguments);
+  };
+  const ChildOutcome refused = grade({});
+  EXPECT_EQ(refused.exit_status, 2) << refused.stdout_tail << refused.stderr_tail;
+  EXPECT_NE(refused.stderr_tail.find("bubblewrap (bwrap) is not installed"), std::string::npos)
+      << refused.stderr_tail;
+  EXPECT_NE(refused.stderr_tail.find("--no-sandbox"), std::string::npos) << refused.stderr_tail;
+  EXPECT_EQ(refused.stdout_tail, "");  // no scene ran
+  const ChildOutcome unconfined = grade({"--no-sandbox"});
+  EXPECT_EQ(unconfined.exit_status, 0) << unconfined.stdout_tail << unconfined.stderr_tail;
+  EXPECT_NE(unconfined.stdout_tail.find("Candidates ran without a sandbox (--no-sandbox)."),
+            std::string::npos)
+      << unconfined.stdout_tail;
+}
+
 TEST(OracleCommand, InterruptStopsTheRunningCandidateAndWritesNoReports) {
   TemporaryFolder out;
   // The sandboxed candidate writes only into its own folder under --work-dir, and its process
