@@ -31,6 +31,17 @@ void to_little_endian(double* data, std::size_t count) {
 
 std::string system_reason() { return std::strerror(errno); }
 
+/// Moves the stream `count` bytes on, to `target`: by reading them when they are few (keeping
+/// the stream's buffer), by seeking to `target` otherwise.
+bool skip_bytes(std::FILE* file, std::int64_t count, std::int64_t target) {
+  char scratch[512];
+  if (count > static_cast<std::int64_t>(sizeof(scratch))) {
+    return std::fseek(file, static_cast<long>(target), SEEK_SET) == 0;
+  }
+  return std::fread(scratch, 1, static_cast<std::size_t>(count), file) ==
+         static_cast<std::size_t>(count);
+}
+
 /// Reads a little-endian int32 at the file's position; false at the end of the file.
 bool read_int(std::FILE* file, std::int32_t& value) {
   unsigned char bytes[4];
@@ -282,17 +293,21 @@ std::int64_t TrajectoryReader::record_end(std::int64_t at, std::int64_t index) {
       fail(path_ + ": record " + record + " claims " + std::to_string(polynomials) +
            " polynomials, more than the file holds");
     }
+    // The stream sits just after the count. It reads on from there, skipping short
+    // coefficient runs by reading them: a seek would drop the stream's buffer and reread it for
+    // every polynomial, which made a record padded with millions of them take seconds.
     for (std::int32_t p = 0; p < polynomials; ++p) {
       std::int32_t length = 0;
-      if (std::fseek(file, static_cast<long>(at), SEEK_SET) != 0 || !read_int(file, length)) {
-        cut_short("its polynomials");
-      }
+      if (!read_int(file, length)) cut_short("its polynomials");
       at += 4;
       if (length < 0 || length > (bytes - at) / 8) {
         fail(path_ + ": record " + record + " has a polynomial of length " +
              std::to_string(length) + ", more than the file holds");
       }
       at += 8 * static_cast<std::int64_t>(length);
+      if (!skip_bytes(file, 8 * static_cast<std::int64_t>(length), at)) {
+        cut_short("its polynomials");
+      }
     }
   }
   if (at > bytes) cut_short("its collisions or polynomials");
