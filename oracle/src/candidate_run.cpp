@@ -7,10 +7,10 @@
 #include <cerrno>
 #include <cmath>
 #include <csignal>
-#include <fstream>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 #include "child_process.h"
@@ -148,9 +148,9 @@ std::optional<Verdict> classify_file(const std::string& path, std::int64_t expec
 std::optional<std::string> candidate_problem(const std::string& candidate) {
   struct stat info;
   if (::stat(candidate.c_str(), &info) != 0) {
-    return errno == ENOENT ? "the candidate " + candidate + " does not exist"
-                           : "cannot start the candidate " + candidate + " (" +
-                                 std::strerror(errno) + ")";
+    return errno == ENOENT
+               ? "the candidate " + candidate + " does not exist"
+               : "cannot start the candidate " + candidate + " (" + std::strerror(errno) + ")";
   }
   if (!S_ISREG(info.st_mode)) return "the candidate " + candidate + " is not a file";
   if (::access(candidate.c_str(), X_OK) != 0) {
@@ -158,7 +158,9 @@ std::optional<std::string> candidate_problem(const std::string& candidate) {
   }
   char magic[4] = {0, 0, 0, 0};
   std::ifstream(candidate, std::ios::binary).read(magic, sizeof(magic));
-  if (std::string(magic, 2) != "#!" && std::string(magic, 4) != "\x7f" "ELF") {
+  if (std::string(magic, 2) != "#!" && std::string(magic, 4) !=
+                                           "\x7f"
+                                           "ELF") {
     return "the candidate " + candidate +
            " is not a program this system can run (a script needs a #! line)";
   }
@@ -256,8 +258,8 @@ CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_
     return "the candidate wrote " + std::to_string(bytes) + " bytes into its folder, more than " +
            "the limit of " + std::to_string(limit) + ", and was stopped";
   };
-  std::vector<std::string> command = {options.candidate, "-s", scene_path, "-d",
-                                      "0", "-o", run.trajectory_path};
+  std::vector<std::string> command = {options.candidate,  "-s", scene_path, "-d", "0", "-o",
+                                      run.trajectory_path};
   if (options.sandbox) {
     if (auto problem = candidate_problem(options.candidate)) {
       run.problem = Verdict::kCannotRun;

@@ -130,7 +130,8 @@ bool set_limit(int resource, rlim_t soft, rlim_t hard) {
   struct sigaction default_action;
   std::memset(&default_action, 0, sizeof(default_action));
   default_action.sa_handler = SIG_DFL;
-  for (int s : {SIGINT, SIGTERM, SIGPIPE, SIGXFSZ, SIGXCPU}) ::sigaction(s, &default_action, nullptr);
+  for (int s : {SIGINT, SIGTERM, SIGPIPE, SIGXFSZ, SIGXCPU})
+    ::sigaction(s, &default_action, nullptr);
   sigset_t none;
   sigemptyset(&none);
   ::sigprocmask(SIG_SETMASK, &none, nullptr);

@@ -52,9 +52,8 @@ struct GradeCommand {
   bool keep_work = false;
   bool no_sandbox = false;
   std::vector<std::string> allow_read;
-  std::int64_t max_memory_mib = kDefaultCandidateMemoryBytes < 0
-                                    ? 0
-                                    : kDefaultCandidateMemoryBytes >> 20;
+  std::int64_t max_memory_mib =
+      kDefaultCandidateMemoryBytes < 0 ? 0 : kDefaultCandidateMemoryBytes >> 20;
   int max_processes = kDefaultCandidateProcesses;
   ReportOptions reports;
 };
@@ -116,8 +115,8 @@ void check_outputs_are_not_inputs(const std::vector<std::pair<std::string, std::
     }
     for (std::size_t j = 0; j < i; ++j) {
       if (!outputs[j].second.empty() && file_identity(outputs[j].second) == identity) {
-        throw Error(ErrorKind::kBadInput, option + " " + path + " is also " +
-                                              outputs[j].first + "; give each report a file of its own");
+        throw Error(ErrorKind::kBadInput, option + " " + path + " is also " + outputs[j].first +
+                                              "; give each report a file of its own");
       }
     }
   }

@@ -37,18 +37,19 @@ std::vector<std::string> sandbox_system_arguments() {
 std::vector<std::string> sandboxed_command(const SandboxLayout& layout,
                                            const std::vector<std::string>& command) {
   const std::string scratch = std::to_string(layout.scratch_bytes);
-  std::vector<std::string> args = {layout.bwrap,  "--unshare-all", "--die-with-parent",
-                                   "--new-session", "--cap-drop",  "ALL"};
+  std::vector<std::string> args = {layout.bwrap,    "--unshare-all", "--die-with-parent",
+                                   "--new-session", "--cap-drop",    "ALL"};
   const std::vector<std::string> system = sandbox_system_arguments();
   args.insert(args.end(), system.begin(), system.end());
-  args.insert(args.end(), {"--proc", "/proc", "--dev", "/dev", "--size", scratch, "--tmpfs",
-                           "/dev/shm", "--remount-ro", "/dev", "--size", scratch, "--tmpfs", "/tmp"});
+  args.insert(args.end(),
+              {"--proc", "/proc", "--dev", "/dev", "--size", scratch, "--tmpfs", "/dev/shm",
+               "--remount-ro", "/dev", "--size", scratch, "--tmpfs", "/tmp"});
   for (const std::string& path : layout.read_only) {
     args.insert(args.end(), {"--ro-bind", path, path});
   }
   if (!layout.writable.empty()) {
-    args.insert(args.end(), {"--bind", layout.writable, layout.writable, "--chdir",
-                             layout.writable});
+    args.insert(args.end(),
+                {"--bind", layout.writable, layout.writable, "--chdir", layout.writable});
   }
   // The root bwrap builds is an in-memory folder: read-only, so that nothing is written
   // outside the writable folder and the two size-limited ones.

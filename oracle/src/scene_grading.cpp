@@ -186,8 +186,7 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
   std::vector<std::string> scene_files;
   try {
     if (entry.load_error) throw Error(ErrorKind::kBadInput, *entry.load_error);
-    InputFiles files =
-        entry.files.empty() ? InputFiles() : InputFiles::in_memory(entry.files);
+    InputFiles files = entry.files.empty() ? InputFiles() : InputFiles::in_memory(entry.files);
     loaded.emplace(load_scene_file(entry.path, files));
     scene_files = files.paths();
     check_step_count(loaded->model, Limits{});

@@ -154,7 +154,8 @@ TEST(OracleCommand, OptionValuesAreCheckedBeforeAnyCandidateRuns) {
   for (const char* value : {"nan", "inf", "-inf", "-1", "0", "1e9", "5s"}) {
     refused({"--timeout", value}, "--timeout");
   }
-  for (const char* value : {"nan", "inf", "-2", "0"}) refused({"--points-per-scene", value}, "--points-per-scene");
+  for (const char* value : {"nan", "inf", "-2", "0"})
+    refused({"--points-per-scene", value}, "--points-per-scene");
   for (const char* value : {"0", "-1", "100000"}) refused({"-j", value}, "--jobs");
   refused({"--max-processes", "0"}, "--max-processes");
   refused({"--max-memory", "-5"}, "--max-memory");
@@ -172,8 +173,7 @@ TEST(OracleCommand, ReportsNeverReplaceAnInput) {
   const std::string scene_bytes = testing::read_bytes(scene);
   const std::string candidate_bytes = testing::read_bytes(candidate);
   const auto refused = [&](std::vector<std::string> reports, const std::string& named) {
-    std::vector<std::string> arguments = {"grade", "-q", "--candidate", candidate,
-                                          out / "suite"};
+    std::vector<std::string> arguments = {"grade", "-q", "--candidate", candidate, out / "suite"};
     arguments.insert(arguments.end(), reports.begin(), reports.end());
     const ChildOutcome run = oracle(arguments);
     EXPECT_EQ(run.exit_status, 2) << run.stdout_tail << run.stderr_tail;
@@ -199,9 +199,9 @@ TEST(OracleCommand, ReportsNeverReplaceAnInput) {
 TEST(OracleCommand, WithoutBubblewrapGradeRefusesUnlessToldNoSandbox) {
   TemporaryFolder empty;  // a $PATH in which bwrap is not found
   const auto grade = [&](std::vector<std::string> extra) {
-    std::vector<std::string> arguments = {"/usr/bin/env", "PATH=" + empty.path(), testing::kOracle,
-                                          "grade", "-q", "--candidate", testing::kFossSim,
-                                          testing::kAssets};
+    std::vector<std::string> arguments = {
+        "/usr/bin/env", "PATH=" + empty.path(), testing::kOracle,  "grade",
+        "-q",           "--candidate",          testing::kFossSim, testing::kAssets};
     arguments.insert(arguments.end(), extra.begin(), extra.end());
     return testing::run_program(arguments);
   };

@@ -3,6 +3,8 @@
 // daemon behind, with and without the sandbox (without it, every attempt must succeed, which
 // shows that the checks can fail).
 
+#include "sandbox.h"
+
 #include <arpa/inet.h>
 #include <gtest/gtest.h>
 #include <netinet/in.h>
@@ -14,7 +16,6 @@
 #include <filesystem>
 
 #include "batch.h"
-#include "sandbox.h"
 #include "scene_grading.h"
 #include "test_support.h"
 

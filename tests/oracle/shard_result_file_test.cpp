@@ -9,8 +9,8 @@
 #include "gradescope_report.h"
 #include "junit_report.h"
 #include "printable_text.h"
-#include "result_table.h"
 #include "report_samples.h"
+#include "result_table.h"
 #include "support/thrown.h"
 
 namespace fosssim {

@@ -3,11 +3,11 @@
 
 #include <gtest/gtest.h>
 #include <tinyxml2.h>
+#include <unistd.h>
 
 #include <cctype>
 #include <cstdlib>
 #include <cstring>
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
