@@ -107,6 +107,28 @@ TEST(RunChild, FileSizeLimitStopsARunawayWriter) {
   EXPECT_EQ(std::filesystem::file_size(folder / "big"), 1u << 16);
 }
 
+TEST(RunChild, SetsTheCpuAndAddressSpaceLimitsForEverythingTheChildStarts) {
+  ChildLimits limits = quick_limits();
+  limits.max_cpu_seconds = 7;
+  limits.max_address_space_bytes = std::int64_t(1) << 30;
+  // The shell reports the limits it inherited: CPU seconds, then address space in KiB.
+  const ChildOutcome outcome =
+      run_child({"/bin/sh", "-c", "ulimit -t; ulimit -v; sh -c 'ulimit -t'"}, "/", limits);
+  EXPECT_EQ(outcome.exit_status, 0) << outcome.stderr_tail;
+  EXPECT_EQ(outcome.stdout_tail, "7\n1048576\n7\n");
+}
+
+TEST(RunChild, TooManyProcessesAtOnceStopTheChild) {
+  ChildLimits limits = quick_limits();
+  limits.max_processes = 3;
+  const ChildOutcome outcome = run_child(
+      {"/bin/sh", "-c", "for i in 1 2 3 4 5 6; do sleep 1000 & done; wait"}, "/", limits);
+  EXPECT_EQ(outcome.ending, ChildEnding::kStoppedByWatch);
+  EXPECT_NE(outcome.watch_message.find("more than the limit of 3"), std::string::npos)
+      << outcome.watch_message;
+  EXPECT_LT(outcome.seconds, 5.0);
+}
+
 TEST(RunChild, WatchCanStopTheChild) {
   ChildLimits limits = quick_limits();
   limits.watch = []() -> std::optional<std::string> { return "enough"; };

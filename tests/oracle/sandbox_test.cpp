@@ -168,6 +168,23 @@ TEST(Sandbox, WithoutItTheCandidateEscapesButIsGradedOnTheOraclesCopyOfTheScenes
   }
 }
 
+TEST(Sandbox, TheCandidateRunsUnderTheLimitsWithTheTimeoutAsItsCpuTime) {
+  TemporaryFolder work;
+  testing::write_bytes(work / "limits.sh",
+                       "#!/bin/sh\necho \"cpu $(ulimit -t) memory $(ulimit -v) file $(ulimit -f)\" "
+                       ">&2\nexit 3\n");
+  fs::permissions(work / "limits.sh", fs::perms::owner_all);
+  GradingOptions options;
+  options.run.candidate = work / "limits.sh";
+  options.run.timeout_seconds = 29.5;
+  options.run.max_memory_bytes = std::int64_t(512) << 20;
+  options.work_dir = work.path();
+  const SceneResult r = grade_scene({"basics/chain.xml", testing::kChainScene}, options);
+  EXPECT_EQ(r.verdict, Verdict::kExitStatus) << r.reason;
+  // 64 MiB, the least file limit, in the shell's 512-byte blocks.
+  EXPECT_EQ(r.stderr_tail, "cpu 31 memory 524288 file 131072");
+}
+
 TEST(Sandbox, TooManyProcessesStopTheCandidate) {
   TemporaryFolder work;
   GradingOptions options;
