@@ -121,8 +121,8 @@ TEST(RunChild, SetsTheCpuAndAddressSpaceLimitsForEverythingTheChildStarts) {
 TEST(RunChild, TooManyProcessesAtOnceStopTheChild) {
   ChildLimits limits = quick_limits();
   limits.max_processes = 3;
-  const ChildOutcome outcome = run_child(
-      {"/bin/sh", "-c", "for i in 1 2 3 4 5 6; do sleep 1000 & done; wait"}, "/", limits);
+  const ChildOutcome outcome =
+      run_child({"/bin/sh", "-c", "for i in 1 2 3 4 5 6; do sleep 1000 & done; wait"}, "/", limits);
   EXPECT_EQ(outcome.ending, ChildEnding::kStoppedByWatch);
   EXPECT_NE(outcome.watch_message.find("more than the limit of 3"), std::string::npos)
       << outcome.watch_message;
