@@ -50,7 +50,7 @@ void SimpleCollisionStage<D>::apply(const StepContext& context, State& state) {
   const auto velocity_of = [&state](int p) -> Vec<D> { return particle_vec<D>(state.v, p); };
   for_each_in_course_order(
       *pairs_, PairQuery{state.q, state.q, 0.0}, [&](const CandidatePair& pair) {
-        const Separation<D> s = separation<D>(model, pair, state.q);
+        const Separation<D> s = simple_separation<D>(model, pair, state.q);
         if (!is_colliding<D>(model, pair, s, state.v)) return;
         context.record.collisions.push_back(make_record<D>(pair, s.n, 0.0));
         const Impulse<D> impulse = compute_impulse<D>(model, pair, s.n, s.alpha, velocity_of, cor);

@@ -12,7 +12,7 @@
 namespace fosssim {
 
 /// The velocity changes of one collision, for the (at most three) particles it involves.
-/// Fixed particles get no entry.
+/// Fixed particles get no entry (but for the course's 2D half-planes, compute_impulse).
 template <int D>
 struct Impulse {
   int count = 0;
@@ -33,23 +33,26 @@ inline double impulse_mass(const SceneModel& model, int p) {
 
 /// The response to a collision of `pair` along n (the unnormalised shortest vector, from the
 /// particle to the other object), computed from the velocities w_of(p) -> Vec<D> with the
-/// restitution factor c = (1 + cor)/2 and n̂ = n/‖n‖:
-///   particle-particle, s = 2 (w_2 - w_1)·n̂:
-///     Δv_1 = c s/(1 + M_1/M_2) n̂,  Δv_2 = -c s/(M_2/M_1 + 1) n̂;
-///   particle-edge (1 = particle, 2, 3 = the edge's ends), w_e = (1-α) w_2 + α w_3,
-///   s = 2 (w_e - w_1)·n̂:
-///     Δv_1 = c s/(1 + (1-α)² M_1/M_2 + α² M_1/M_3) n̂,
-///     Δv_2 = -c (1-α) s/(M_2/M_1 + (1-α)² + α² M_2/M_3) n̂,
-///     Δv_3 = -c α s/(M_3/M_1 + (1-α)² M_3/M_2 + α²) n̂;
-///   particle-half-plane and particle-sphere (an object at rest):  Δv = -c 2 (w·n̂) n̂.
-/// M is +∞ for fixed particles, which get no change. The divisions are written exactly in
-/// these forms (course-compatible): a fixed particle against an edge with one fixed end and
-/// alpha 0 or 1 gives 0/0, a NaN, on the free end, as in the course.
+/// coefficient of restitution cor, n̂ = n × (1/‖n‖) and S = s (1 + cor), in the course's order
+/// of operations (docs/collisions.md, 'Course-exact arithmetic'):
+///   particle-particle, s = (w_2 - w_1)·n̂:
+///     Δv_1 = n̂ (S ÷ ((M_1 ÷ M_2) + 1)),  Δv_2 = -n̂ (S ÷ ((M_2 ÷ M_1) + 1));
+///   particle-edge (1 = particle, 2, 3 = the edge's ends), β = 1 - α,
+///   w_e = (w_3 - w_2) α + w_2, s = (w_e - w_1)·n̂:
+///     Δv_1 = n̂ (S ÷ ((((β² M_1) ÷ M_2) + 1) + ((M_1 α²) ÷ M_3))),
+///     Δv_2 = -n̂ ((β S) ÷ (((M_2 ÷ M_1) + β²) + ((M_2 α²) ÷ M_3))),
+///     Δv_3 = -n̂ ((S α) ÷ (((M_3 ÷ M_1) + ((M_3 β²) ÷ M_2)) + α²));
+///   particle-half-plane and particle-sphere (an object at rest), s = w·n̂:  Δv = -n̂ S.
+/// M is +∞ for fixed particles, which get no change, except against a 2D half-plane: the course
+/// bounces a fixed particle off a half-plane too (it then moves with its new velocity). The
+/// divisions are written exactly in these forms: a fixed particle against an edge with one fixed
+/// end and alpha 0 or 1 gives 0/0, a NaN, on the free end, as in the course.
 template <int D, typename VelocityOf>
 Impulse<D> compute_impulse(const SceneModel& model, const CandidatePair& pair, const Vec<D>& n,
                            double alpha, const VelocityOf& w_of, double cor) {
-  const double c = (1.0 + cor) / 2.0;
-  const Vec<D> nhat = n / n.norm();
+  const double restitution = 1.0 + cor;
+  const double reciprocal = 1.0 / n.norm();
+  const Vec<D> nhat = n * reciprocal;
   const int p1 = pair.particle;
   const double M1 = impulse_mass(model, p1);
   const Vec<D> w1 = w_of(p1);
@@ -58,9 +61,9 @@ Impulse<D> compute_impulse(const SceneModel& model, const CandidatePair& pair, c
     case CollisionKind::kParticleParticle: {
       const int p2 = pair.other;
       const double M2 = impulse_mass(model, p2);
-      const double s = 2.0 * (w_of(p2) - w1).dot(nhat);
-      if (!model.fixed[p1]) impulse.add(p1, c * s / (1.0 + M1 / M2) * nhat);
-      if (!model.fixed[p2]) impulse.add(p2, -(c * s / (M2 / M1 + 1.0)) * nhat);
+      const double S = (w_of(p2) - w1).dot(nhat) * restitution;
+      if (!model.fixed[p1]) impulse.add(p1, nhat * (S / ((M1 / M2) + 1.0)));
+      if (!model.fixed[p2]) impulse.add(p2, -(nhat * (S / ((M2 / M1) + 1.0))));
       break;
     }
     case CollisionKind::kParticleEdge: {
@@ -68,23 +71,29 @@ Impulse<D> compute_impulse(const SceneModel& model, const CandidatePair& pair, c
       const int p2 = edge.i, p3 = edge.j;
       const double M2 = impulse_mass(model, p2), M3 = impulse_mass(model, p3);
       const double a = alpha, b = 1.0 - alpha;
-      const Vec<D> we = b * w_of(p2) + a * w_of(p3);
-      const double s = 2.0 * (we - w1).dot(nhat);
+      const double a2 = a * a, b2 = b * b;
+      const Vec<D> w2 = w_of(p2);
+      const Vec<D> we = (w_of(p3) - w2) * a + w2;
+      const double S = (we - w1).dot(nhat) * restitution;
       if (!model.fixed[p1]) {
-        impulse.add(p1, c * s / (1.0 + b * b * M1 / M2 + a * a * M1 / M3) * nhat);
+        impulse.add(p1, nhat * (S / ((((b2 * M1) / M2) + 1.0) + ((M1 * a2) / M3))));
       }
       if (!model.fixed[p2]) {
-        impulse.add(p2, -(c * b * s / (M2 / M1 + b * b + a * a * M2 / M3)) * nhat);
+        impulse.add(p2, -(nhat * ((b * S) / (((M2 / M1) + b2) + ((M2 * a2) / M3)))));
       }
       if (!model.fixed[p3]) {
-        impulse.add(p3, -(c * a * s / (M3 / M1 + b * b * M3 / M2 + a * a)) * nhat);
+        impulse.add(p3, -(nhat * ((S * a) / (((M3 / M1) + ((M3 * b2) / M2)) + a2))));
       }
       break;
     }
     case CollisionKind::kParticleHalfPlane:
-    case CollisionKind::kParticleSphere:
-      if (!model.fixed[p1]) impulse.add(p1, -(c * 2.0 * w1.dot(nhat)) * nhat);
+    case CollisionKind::kParticleSphere: {
+      const bool bounces_fixed = D == 2 && pair.kind == CollisionKind::kParticleHalfPlane;
+      if (!model.fixed[p1] || bounces_fixed) {
+        impulse.add(p1, -(nhat * (w1.dot(nhat) * restitution)));
+      }
       break;
+    }
   }
   return impulse;
 }

@@ -20,10 +20,43 @@ struct Contact {
   Separation<D> separation;
   double distance = 0.0;  // d = ‖n‖ (signed for 3D half-spaces, Separation::distance)
   double delta = 0.0;     // δ = d - R - T < 0
+  double particle_radius = 0.0;  // r_i, of pair.particle
+  double other_radius = 0.0;     // the other particle's or the edge's; 0 for obstacles
   bool half_plane = false;
   bool interior_edge_point = false;
-  Vec<D> edge;  // x_b - x_a, for interior edge points
+  Vec<D> edge = Vec<D>::Zero();  // x_b - x_a, for interior edge points
+  Vec<D> plane_normal = Vec<D>::Zero();  // N as the scene gives it, for half-planes
 };
+
+/// Adds one contact's -F in 2D, in the course's order of operations (docs/collisions.md,
+/// 'Course-exact arithmetic').
+template <int D>
+void add_course_gradient(const Contact<D>& c, double k, double thickness, Vector& gradient) {
+  // n̂ = n × (1/l), δ = ((l - r_i) - r_other) - T with the radii subtracted one by one.
+  const double l = c.distance;
+  const Vec<D> nhat = c.separation.n * (1.0 / l);
+  const double delta = ((l - c.particle_radius) - c.other_radius) - thickness;
+  const auto add_to = [&gradient](int p, const Vec<D>& value) {
+    for (int i = 0; i < D; ++i) gradient[D * p + i] = value[i] + gradient[D * p + i];
+  };
+  if (c.half_plane) {
+    // The force re-projected onto the scene's N: -N ((n̂·N) s ÷ (N·N)), s = ((l - r_i) - T) k.
+    const Vec<D>& N = c.plane_normal;
+    const double s = ((l - c.particle_radius) - thickness) * k;
+    const double scale = (nhat.dot(N) * s) / N.dot(N);
+    add_to(c.particle[0], -(N * scale));
+    return;
+  }
+  const double s = delta * k;
+  add_to(c.particle[0], -(nhat * s));
+  if (c.count == 2) {
+    add_to(c.particle[1], nhat * s);
+  } else if (c.count == 3) {
+    const double alpha = c.weight[2];
+    add_to(c.particle[1], nhat * (((1.0 - alpha) * k) * delta));
+    add_to(c.particle[2], nhat * ((alpha * k) * delta));
+  }
+}
 
 }  // namespace
 
@@ -54,12 +87,14 @@ void PenaltyForce<D>::for_each_contact(const Vector& q, PenaltyPairs which, Visi
       if (c.separation.n.isZero(0.0)) return;  // no direction to push along
     }
     c.delta = c.distance - c.separation.radii - thickness_;
+    c.particle_radius = model.particle_radius[pair.particle];
     const double alpha = c.separation.alpha;
     switch (pair.kind) {
       case CollisionKind::kParticleParticle:
         c.count = 2;
         c.particle = {pair.particle, pair.other, 0};
         c.weight = {-1.0, 1.0, 0.0};
+        c.other_radius = model.particle_radius[pair.other];
         break;
       case CollisionKind::kParticleEdge: {
         const Edge& edge = model.edges[pair.other];
@@ -68,6 +103,7 @@ void PenaltyForce<D>::for_each_contact(const Vector& q, PenaltyPairs which, Visi
         c.weight = {-1.0, 1.0 - alpha, alpha};
         c.interior_edge_point = alpha > 0.0 && alpha < 1.0;
         c.edge = particle_vec<D>(q, edge.j) - particle_vec<D>(q, edge.i);
+        c.other_radius = model.edge_radius[pair.other];
         break;
       }
       case CollisionKind::kParticleHalfPlane:
@@ -76,6 +112,7 @@ void PenaltyForce<D>::for_each_contact(const Vector& q, PenaltyPairs which, Visi
         c.particle = {pair.particle, 0, 0};
         c.weight = {-1.0, 0.0, 0.0};
         c.half_plane = pair.kind == CollisionKind::kParticleHalfPlane;
+        if (c.half_plane) c.plane_normal = model.half_planes[pair.other].normal.template head<D>();
         break;
     }
     visit(c);
@@ -97,6 +134,10 @@ template <int D>
 void PenaltyForce<D>::add_gradient(const ForceInput& in, Vector& gradient,
                                    PenaltyPairs which) const {
   for_each_contact(in.q, which, [&](const Contact<D>& c) {
+    if constexpr (D == 2) {
+      add_course_gradient<D>(c, k_, thickness_, gradient);
+      return;
+    }
     const Vec<D> nhat = c.separation.n / c.separation.n.norm();
     // The particle's force is k δ n̂ and the other object's -k δ n̂ shared by the weights;
     // gradE = -F.

@@ -42,6 +42,18 @@ Vec<D> half_plane_vector(const Vec<D>& x, const HalfPlane& plane) {
   return ((P - x).dot(N) / N.dot(N)) * N;
 }
 
+/// The half-plane vector of the course's simple collisions (2D), with the normal made a unit
+/// vector by its reciprocal length: N̂ = N × (1/√(N·N)), n = ((P - x)·N̂) N̂. The same vector as
+/// half_plane_vector up to round-off, rounded as the course's detection rounds it (its records
+/// hold this n).
+template <int D>
+Vec<D> unit_half_plane_vector(const Vec<D>& x, const HalfPlane& plane) {
+  const Vec<D> N = plane.normal.head<D>();
+  const Vec<D> unit = N * (1.0 / std::sqrt(N.dot(N)));
+  const double distance = (plane.point.head<D>() - x).dot(unit);
+  return unit * distance;
+}
+
 /// The separation of `pair` for the positions x_of(p) -> Vec<D>.
 template <int D, typename PositionOf>
 Separation<D> separation_of(const SceneModel& model, const CandidatePair& pair,
@@ -93,6 +105,22 @@ Separation<D> separation_of(const SceneModel& model, const CandidatePair& pair,
 template <int D>
 Separation<D> separation(const SceneModel& model, const CandidatePair& pair, const Vector& q) {
   return separation_of<D>(model, pair, [&q](int p) -> Vec<D> { return particle_vec<D>(q, p); });
+}
+
+/// The separation the course's simple collisions detect with: separation() but for a 2D
+/// half-plane, whose vector is unit_half_plane_vector.
+template <int D>
+Separation<D> simple_separation(const SceneModel& model, const CandidatePair& pair,
+                                const Vector& q) {
+  Separation<D> s = separation<D>(model, pair, q);
+  if constexpr (D == 2) {
+    if (pair.kind == CollisionKind::kParticleHalfPlane) {
+      s.n = unit_half_plane_vector<D>(particle_vec<D>(q, pair.particle),
+                                      model.half_planes[pair.other]);
+      s.distance = s.n.norm();
+    }
+  }
+  return s;
 }
 
 /// The velocity of the particle relative to the closest point of the other object, (v_i - v_other)

@@ -16,7 +16,6 @@ Vec<D> SpringForce<D>::extension(const Vector& q) const {
 
 template <int D>
 Vec<D> SpringForce<D>::relative_velocity(const Vector& v) const {
-  if (b_ == 0.0) return Vec<D>::Zero();
   return particle_vec<D>(v, j_) - particle_vec<D>(v, i_);
 }
 
@@ -27,17 +26,20 @@ void SpringForce<D>::add_energy(const ForceInput& in, double& energy) const {
 
 template <int D>
 void SpringForce<D>::add_gradient(const ForceInput& in, Vector& gradient) const {
-  const Vec<D> force_i =
-      spring_force_on_i<D>(extension(in.q), relative_velocity(in.v), k_, l0_, b_);
-  gradient.template segment<D>(D * i_) -= force_i;
-  gradient.template segment<D>(D * j_) += force_i;
+  add_spring_gradient<D>(
+      i_, j_, spring_force_on_i<D>(extension(in.q), relative_velocity(in.v), k_, l0_, b_),
+      gradient);
 }
 
 template <int D>
 void SpringForce<D>::add_hessian_x(const ForceInput& in, HessianBuilder& hessian) const {
-  hessian.add_pair<D>(i_, j_,
-                      spring_hessian_x<D>(extension(in.q), relative_velocity(in.v), k_, l0_, b_,
-                                          in.definite_hessian));
+  const SpringHessianParts<D> parts = spring_hessian_x_parts<D>(
+      extension(in.q), relative_velocity(in.v), k_, l0_, b_, in.definite_hessian);
+  if (b_ == 0.0) {
+    hessian.add_pair<D>(i_, j_, parts.elastic);
+  } else {
+    hessian.add_pair<D>(i_, j_, Mat<D>(parts.elastic + parts.damping));
+  }
 }
 
 template <int D>
@@ -45,6 +47,21 @@ void SpringForce<D>::add_hessian_v(const ForceInput& in, HessianBuilder& hessian
   if (b_ == 0.0) return;
   const Vec<D> d = extension(in.q);
   if (l0_ == 0.0 && d.norm() == 0.0) return;  // the damping direction is undefined: no entries
+  hessian.add_pair<D>(i_, j_, spring_hessian_v<D>(d, l0_, b_));
+}
+
+template <int D>
+void SpringForce<D>::add_course_hessian_x(const ForceInput& in, HessianBuilder& hessian) const {
+  const SpringHessianParts<D> parts = spring_hessian_x_parts<D>(
+      extension(in.q), relative_velocity(in.v), k_, l0_, b_, in.definite_hessian);
+  hessian.add_pair<D>(i_, j_, parts.elastic);
+  hessian.add_pair<D>(i_, j_, parts.damping);
+}
+
+template <int D>
+void SpringForce<D>::add_course_hessian_v(const ForceInput& in, HessianBuilder& hessian) const {
+  const Vec<D> d = extension(in.q);
+  if (l0_ == 0.0 && d.norm() == 0.0) return;
   hessian.add_pair<D>(i_, j_, spring_hessian_v<D>(d, l0_, b_));
 }
 

@@ -27,6 +27,13 @@ class SpringForce final : public Force {
   void add_gradient(const ForceInput& in, Vector& gradient) const override;
   void add_hessian_x(const ForceInput& in, HessianBuilder& hessian) const override;
   void add_hessian_v(const ForceInput& in, HessianBuilder& hessian) const override;
+  /// hessX as the course's dense assembly adds it (StepMatrix::assemble_course): the elastic
+  /// block, then the damping block (even for b = 0), so that each entry's sum rounds as the
+  /// course's; add_hessian_x adds their sum as one block.
+  void add_course_hessian_x(const ForceInput& in, HessianBuilder& hessian) const;
+  /// hessV as the course adds it: the block b P even for b = 0 (zeros), where add_hessian_v
+  /// adds nothing.
+  void add_course_hessian_v(const ForceInput& in, HessianBuilder& hessian) const;
   bool is_conservative() const override { return b_ == 0.0; }
   bool has_symmetric_jacobians() const override { return b_ == 0.0; }
   std::string label() const override;

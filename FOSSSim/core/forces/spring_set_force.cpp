@@ -26,9 +26,7 @@ void SpringSetForce<D>::add_gradient(const ForceInput& in, Vector& gradient) con
     const Vec<D> d = particle_vec<D>(in.q, s.j) - particle_vec<D>(in.q, s.i);
     Vec<D> dv = Vec<D>::Zero();
     if (s.b != 0.0) dv = particle_vec<D>(in.v, s.j) - particle_vec<D>(in.v, s.i);
-    const Vec<D> force_i = spring_force_on_i<D>(d, dv, s.k, s.l0, s.b);
-    gradient.template segment<D>(D * s.i) -= force_i;
-    gradient.template segment<D>(D * s.j) += force_i;
+    add_spring_gradient<D>(s.i, s.j, spring_force_on_i<D>(d, dv, s.k, s.l0, s.b), gradient);
   }
 }
 
@@ -39,7 +37,14 @@ void SpringSetForce<D>::add_hessian_x(const ForceInput& in, HessianBuilder& hess
     const Vec<D> d = particle_vec<D>(in.q, s.j) - particle_vec<D>(in.q, s.i);
     Vec<D> dv = Vec<D>::Zero();
     if (s.b != 0.0) dv = particle_vec<D>(in.v, s.j) - particle_vec<D>(in.v, s.i);
-    hessian.add_pair<D>(s.i, s.j, spring_hessian_x<D>(d, dv, s.k, s.l0, s.b, in.definite_hessian));
+    const SpringHessianParts<D> parts =
+        spring_hessian_x_parts<D>(d, dv, s.k, s.l0, s.b, in.definite_hessian);
+    // The same blocks as SpringForce writes, so the sums have the same bits.
+    if (s.b == 0.0) {
+      hessian.add_pair<D>(s.i, s.j, parts.elastic);
+    } else {
+      hessian.add_pair<D>(s.i, s.j, Mat<D>(parts.elastic + parts.damping));
+    }
   }
 }
 

@@ -1,18 +1,34 @@
 #include "core/forces/vortex_force.h"
 
 #include "core/forces/pair_checks.h"
+#include "core/forces/ordered_arithmetic.h"
 #include "core/scene_model.h"
 
 namespace fosssim {
 
 template <int D>
 void VortexForce<D>::add_gradient(const ForceInput& in, Vector& gradient) const {
+  // In 2D the course's order of operations (docs/forces.md, 'Course-exact arithmetic'):
+  // n = d × (1/l), w_c = (((R n)_c kbs - dv_c) × (1/(l l))) kvc.
   const Vec<D> d = particle_vec<D>(in.q, j_) - particle_vec<D>(in.q, i_);
   const Vec<D> dv = particle_vec<D>(in.v, j_) - particle_vec<D>(in.v, i_);
-  const double l = d.norm();
-  const Vec<D> w = (kvc_ / (l * l)) * (kbs_ * (rotation_ * (d / l)) - dv);
-  gradient.template segment<D>(D * i_) += w;
-  gradient.template segment<D>(D * j_) -= w;
+  if constexpr (D == 3) {  // FOSSSim's own order in 3D, where there is no course to match
+    const double l = d.norm();
+    const Vec<D> w = (kvc_ / (l * l)) * (kbs_ * (rotation_ * (d / l)) - dv);
+    gradient.template segment<D>(D * i_) += w;
+    gradient.template segment<D>(D * j_) -= w;
+  } else {
+    const double l = ordered_norm<D>(d);
+    const double r = 1.0 / l;
+    const double inverse_square = 1.0 / (l * l);
+    const double nx = d[0] * r, ny = d[1] * r;
+    const double turned[2] = {-ny, nx};  // R n, the quarter turn, exactly
+    for (int c = 0; c < 2; ++c) {
+      const double w = ((turned[c] * kbs_ - dv[c]) * inverse_square) * kvc_;
+      gradient[D * i_ + c] = gradient[D * i_ + c] + w;
+      gradient[D * j_ + c] = gradient[D * j_ + c] - w;
+    }
+  }
 }
 
 template <int D>

@@ -12,6 +12,14 @@ namespace fosssim {
 void ImplicitEuler::prepare() {
   matrix_.emplace(forces(), FixedParticleRule::kIdentityRows);
   solver_.emplace(forces().has_symmetric_jacobians(), settings_.solver);
+  course_ = uses_course_lu(settings_.solver, model().dim, matrix_->size());
+}
+
+std::optional<Vector> ImplicitEuler::correction(const Vector& q, const Vector& v, double h,
+                                                const Vector& rhs) {
+  if (!course_) return solver_->solve(matrix_->assemble(q, v, h), rhs);
+  if (!course_lu_.factor(matrix_->assemble_course(q, v, h))) return std::nullopt;
+  return course_lu_.solve(rhs);
 }
 
 ImplicitEuler::NewtonResult ImplicitEuler::solve(const BackwardEulerStep& problem, bool line_search,
@@ -24,15 +32,14 @@ ImplicitEuler::NewtonResult ImplicitEuler::solve(const BackwardEulerStep& proble
   Vector rhs = problem.residual(dv);
   for (int iteration = 1; iteration <= settings_.max_iterations; ++iteration) {
     const Vector v = state.v + dv;
-    const SparseMatrix& A = matrix_->assemble(state.q + h * v, v, h);
-    const auto delta = solver_->solve(A, rhs);
+    const auto delta = correction(state.q + h * v, v, h, rhs);
     if (!delta) {
       throw StepError(state.step + 1,
                       "implicit Euler: the Newton matrix is singular at iteration " +
                           std::to_string(iteration));
     }
     result.iterations = iteration;
-    result.last_correction_norm = delta->norm();
+    result.last_correction_norm = course_ ? two_lane_norm(*delta) : delta->norm();
     if (result.last_correction_norm < settings_.tolerance) {
       dv += *delta;
       result.converged = true;

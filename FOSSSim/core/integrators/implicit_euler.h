@@ -56,10 +56,14 @@ class ImplicitEuler final : public Integrator {
     int iterations = 0;
     double last_correction_norm = 0.0;
   };
+  /// The Newton correction: A Δ = rhs with A at (q, v); nullopt when A is singular.
+  std::optional<Vector> correction(const Vector& q, const Vector& v, double h, const Vector& rhs);
   /// Runs Newton from dv = 0 on `problem`; dv receives the result.
   NewtonResult solve(const BackwardEulerStep& problem, bool line_search, Vector& dv);
 
   NewtonSettings settings_;
+  bool course_ = false;  // the course's dense assembly, LU and norm
+  CourseLu course_lu_;
   std::optional<StepMatrix> matrix_;
   std::optional<StepSolver> solver_;
   int last_iterations_ = 0;

@@ -12,14 +12,21 @@ namespace fosssim {
 void LinearizedImplicitEuler::prepare() {
   matrix_.emplace(forces(), FixedParticleRule::kIdentityRows);
   solver_.emplace(forces().has_symmetric_jacobians(), choice_);
+  course_ = uses_course_lu(choice_, model().dim, matrix_->size());
 }
 
 void LinearizedImplicitEuler::advance(State& state) {
   const double h = model().integrator.dt;
   const Vector predicted_q = state.q + h * state.v;
   const Vector rhs = matrix_->restrict(h * compute_force(forces(), predicted_q, state.v));
-  const SparseMatrix& A = matrix_->assemble(predicted_q, state.v, h);
-  const auto dv = solver_->solve(A, rhs);
+  std::optional<Vector> dv;
+  if (course_) {
+    if (course_lu_.factor(matrix_->assemble_course(predicted_q, state.v, h))) {
+      dv = course_lu_.solve(rhs);
+    }
+  } else {
+    dv = solver_->solve(matrix_->assemble(predicted_q, state.v, h), rhs);
+  }
   if (!dv) {
     throw StepError(state.step + 1, "linearized implicit Euler: the step matrix is singular");
   }

@@ -12,6 +12,8 @@ namespace fosssim {
 /// update order (docs/integrators.md):
 ///   q* = qⁿ + h vⁿ;  A = M + h² hessX(q*, vⁿ) + h hessV(q*, vⁿ);  A δv = h F(q*, vⁿ)
 ///   with the course's identity rows for fixed particles;  vⁿ⁺¹ = vⁿ + δv;  qⁿ⁺¹ = qⁿ + h vⁿ⁺¹.
+/// Small 2D systems are assembled and solved the course's way (StepMatrix::assemble_course,
+/// CourseLu; uses_course_lu), bit for bit the course's steps; larger ones by StepSolver.
 /// Baraff and Witkin, "Large steps in cloth simulation", SIGGRAPH 1998.
 class LinearizedImplicitEuler final : public Integrator {
  public:
@@ -26,6 +28,8 @@ class LinearizedImplicitEuler final : public Integrator {
 
  private:
   SolverChoice choice_;
+  bool course_ = false;  // the course's dense assembly and LU
+  CourseLu course_lu_;
   std::optional<StepMatrix> matrix_;
   std::optional<StepSolver> solver_;
 };

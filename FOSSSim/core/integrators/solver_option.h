@@ -14,8 +14,9 @@ inline constexpr std::array<std::string_view, 3> kSolverChoices = {"auto", "eige
 /// The declaration of the option, shared by every integrator that has it.
 inline constexpr OptionSpec kSolverOption = OptionSpec::choice(
     "solver", kSolverChoices,
-    "linear solves: Eigen's LDLT/LU below 1000 unknowns, CHOLMOD with reused factors from there "
-    "on (auto), or always one of them (eigen, cholmod)");
+    "linear solves: the course's dense LU for 2D systems of at most 64 unknowns (bit for bit the "
+    "course's steps), Eigen's LDLT/LU below 1000 unknowns, CHOLMOD with reused factors from "
+    "there on (auto), or always one of the sparse ones (eigen, cholmod)");
 
 /// The SolverChoice an integrator's options hold.
 inline SolverChoice solver_choice(const OptionValues& options) {

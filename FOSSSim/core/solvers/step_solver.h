@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/solvers/cholesky_factor.h"
+#include "core/solvers/course_lu.h"
 #include "core/solvers/gmres.h"
 #include "core/solvers/ldlt_factor.h"
 #include "core/solvers/lu_factor.h"
@@ -18,10 +19,19 @@ namespace fosssim {
 
 /// Which library solves the step systems (the option "solver" of the implicit integrators).
 enum class SolverChoice {
-  kAuto,     ///< Eigen below StepSolver::kCholmodFromSize unknowns, SuiteSparse from there on
+  kAuto,     ///< the course's dense LU for 2D systems of at most kCourseLuMaxUnknowns unknowns
+             ///< (integrators ask uses_course_lu), Eigen below StepSolver::kCholmodFromSize
+             ///< unknowns, SuiteSparse from there on
   kEigen,    ///< Eigen's sparse LDLᵀ and LU, factored at every solve
   kCholmod,  ///< sparse direct libraries (MUMPS, CHOLMOD, UMFPACK), reused through GMRES
 };
+
+/// Whether an implicit integrator solves its step systems the course's way, with a dense
+/// StepMatrix::assemble_course and CourseLu, bit for bit the course's results: under kAuto, for
+/// 2D systems of at most kCourseLuMaxUnknowns unknowns (course_lu.h).
+inline bool uses_course_lu(SolverChoice choice, int dim, int unknowns) {
+  return choice == SolverChoice::kAuto && dim == 2 && unknowns <= kCourseLuMaxUnknowns;
+}
 
 /// What solved the last system.
 enum class Factorization {

@@ -1,8 +1,10 @@
 #include "core/systems/step_matrix.h"
 
 #include <algorithm>
+#include <cassert>
 
 #include "core/force_evaluation.h"
+#include "core/forces/spring_force.h"
 
 namespace fosssim {
 
@@ -136,6 +138,55 @@ void StepMatrix::build_from_triplets(const ForceInput& in, double h, const Vecto
     }
   }
   out = scratch_.build(size());
+}
+
+const Eigen::MatrixXd& StepMatrix::assemble_course(const Vector& q, const Vector& v, double h) {
+  assert(rule_ == FixedParticleRule::kIdentityRows);
+  const SceneModel& model = forces_->model();
+  const int n = model.num_dofs();
+  const ForceInput in{q, v, model.mass, definite_hessian_};
+  dense_.setZero(n, n);
+  // Adds the builder's values entry by entry, in the order the forces wrote them.
+  const auto add_written = [this]() {
+    for (const Triplet& t : scratch_.triplets()) {
+      dense_(t.row(), t.col()) = dense_(t.row(), t.col()) + t.value();
+    }
+    scratch_.clear();
+  };
+  scratch_.clear();
+  scratch_.set_scale(1.0);
+  scratch_.set_product(nullptr, nullptr);
+  // A 2D spring writes its blocks as the course does (SpringForce::add_course_hessian_x/_v):
+  // elastic and damping apart, and its hessV even when undamped. Other forces' blocks are
+  // already the course's.
+  for (const Force* force : *forces_) {
+    if (const auto* spring = dynamic_cast<const SpringForce<2>*>(force)) {
+      spring->add_course_hessian_x(in, scratch_);
+    } else {
+      force->add_hessian_x(in, scratch_);
+    }
+  }
+  add_written();
+  dense_ *= h;
+  for (const Force* force : *forces_) {
+    if (const auto* spring = dynamic_cast<const SpringForce<2>*>(force)) {
+      spring->add_course_hessian_v(in, scratch_);
+    } else {
+      force->add_hessian_v(in, scratch_);
+    }
+  }
+  add_written();
+  dense_ *= h;
+  for (int dof = 0; dof < n; ++dof) dense_(dof, dof) = dense_(dof, dof) + model.mass[dof];
+  if (any_fixed_) {
+    for (int dof = 0; dof < n; ++dof) {
+      if (!model.is_fixed_dof(dof)) continue;
+      dense_.row(dof).setZero();
+      dense_.col(dof).setZero();
+      dense_(dof, dof) = 1.0;
+    }
+  }
+  return dense_;
 }
 
 Vector StepMatrix::restrict(const Vector& b) const {

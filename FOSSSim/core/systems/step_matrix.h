@@ -1,6 +1,8 @@
 #pragma once
 // The matrix of an implicit Euler step, A = M + h² hessX + h hessV, with fixed particles.
 
+#include <Eigen/Core>
+
 #include "core/force_set.h"
 #include "core/hessian_builder.h"
 #include "core/hessian_pattern.h"
@@ -49,6 +51,15 @@ class StepMatrix {
   const SparseMatrix& assemble_from_triplets(const Vector& q, const Vector& v, double h,
                                              const Vector* u = nullptr, Vector* rhs = nullptr);
 
+  /// A as the course's reference programs assemble it, dense, over every DOF (the rule must be
+  /// kIdentityRows): starting from +0, every force in order adds its hessX blocks; every entry
+  /// is multiplied by h; every force adds its hessV blocks; every entry is multiplied by h again
+  /// and the masses are added on the diagonal; then each fixed DOF's row and column become 0
+  /// and its diagonal 1. So each entry is h (h ΣhessX + ΣhessV) + m, summed in force order:
+  /// the course's bits (docs/solvers.md, 'The course-exact dense path'). n² storage: for small
+  /// systems only.
+  const Eigen::MatrixXd& assemble_course(const Vector& q, const Vector& v, double h);
+
   /// A full right-hand side over the unknowns: b with fixed DOFs zeroed (kIdentityRows) or P b.
   Vector restrict(const Vector& b) const;
   /// full += the solution x over the unknowns (x itself, or Pᵀ x).
@@ -83,6 +94,7 @@ class StepMatrix {
   Vector saved_rhs_;
   SparseMatrix matrix_;
   SparseMatrix definite_;
+  Eigen::MatrixXd dense_;
 };
 
 }  // namespace fosssim

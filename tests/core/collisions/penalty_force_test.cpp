@@ -154,5 +154,22 @@ TEST(PenaltyForce, StiffContactIsStableUnderImplicitEulerOnlyWithTheExactJacobia
   }
 }
 
+TEST(PenaltyForce, WorkedExampleE2HalfPlaneForceIsTheCoursesToTheLastBit) {
+  // The course's program: the force re-projected onto the scene's N, -N ((n̂·N) s ÷ (N·N)),
+  // gives these bits after one symplectic step; k δ n̂ with n̂ = n ÷ l gives
+  // v = (182.84271247461899, ...), x = (181.892712474619, 181.992712474619).
+  TestScene scene(2, "symplectic-euler", 1.0);
+  scene.add_particle(1, vec({-0.95, -0.85}), vec({0, 0}), false, 0.2);
+  scene.add_half_plane(vec({-1, -1}), vec({1, 1}));
+  scene.model.collisions.method = CollisionMethod::kPenalty;
+  scene.model.collisions.stiffness = 1000.0;
+  scene.model.collisions.thickness = 0.2;
+  const State next = testing::run_steps(scene.model, scene.initial, 1);
+  EXPECT_EQ(next.v[0], 182.84271247461902);
+  EXPECT_EQ(next.v[1], 182.84271247461902);
+  EXPECT_EQ(next.q[0], 181.89271247461903);
+  EXPECT_EQ(next.q[1], 181.99271247461903);
+}
+
 }  // namespace
 }  // namespace fosssim

@@ -284,5 +284,42 @@ TEST(Collisions3D, HalfSpacesParticlesAndEdgesWithEveryMethodButHybrid) {
   EXPECT_EQ(record.collisions[1].kind, CollisionKind::kParticleEdge);
 }
 
+TEST(SimpleCollisions, WorkedExampleE3HalfPlaneNormalAndImpulseAreTheCoursesBits) {
+  // The course's program on this scene records n = (-0.12499999999999997, ...) (the normal
+  // made a unit vector by its reciprocal length) and bounces to these velocities; the naive
+  // ((P - x)·N ÷ N·N) N and n ÷ ‖n‖ give n = (-0.125, -0.125) and v = (1.2499999999999996, ...).
+  TestScene scene(2, "explicit-euler", 1e-20);
+  scene.add_particle(1, vec({-0.9, -0.85}), vec({-1, -2}), false, 0.2);
+  scene.add_half_plane(vec({-1, -1}), vec({1, 1}));
+  scene.model.collisions.method = CollisionMethod::kSimple;
+  scene.model.collisions.cor = 0.5;
+  const StepRecord record = step_once(scene);
+  ASSERT_EQ(record.collisions.size(), 1u);
+  EXPECT_EQ(record.collisions[0].kind, CollisionKind::kParticleHalfPlane);
+  EXPECT_EQ(record.collisions[0].normal[0], -0.12499999999999997);
+  EXPECT_EQ(record.collisions[0].normal[1], -0.12499999999999997);
+  EXPECT_EQ(scene.initial.v[0], 1.2500000000000004);
+  EXPECT_EQ(scene.initial.v[1], 0.25000000000000044);
+}
+
+TEST(SimpleCollisions, AFixedParticleBouncesOffAHalfPlaneAndThenMoves) {
+  // The course's rule: a half-plane's impulse applies to a fixed particle too. With h = 1/16
+  // the particle reaches y = 0.125 (n = (-0, -0.125), n̂ = (-0, -1) exactly) and leaves with
+  // v = -1 + 1.5 = 0.5; the next step moves it by h · 0.5.
+  TestScene scene(2, "explicit-euler", 0.0625);
+  scene.add_particle(1, vec({0, 0.1875}), vec({0, -1}), true, 0.2);
+  scene.add_half_plane(vec({0, 0}), vec({0, 1}));
+  scene.model.collisions.method = CollisionMethod::kSimple;
+  scene.model.collisions.cor = 0.5;
+  const StepRecord record = step_once(scene);
+  ASSERT_EQ(record.collisions.size(), 1u);
+  EXPECT_EQ(scene.initial.q[1], 0.125);
+  EXPECT_EQ(scene.initial.v[0], 0.0);
+  EXPECT_EQ(scene.initial.v[1], 0.5);
+  step_once(scene);
+  EXPECT_EQ(scene.initial.q[1], 0.15625);
+  EXPECT_EQ(scene.initial.v[1], 0.5);
+}
+
 }  // namespace
 }  // namespace fosssim
