@@ -16,12 +16,24 @@
 
 namespace fosssim {
 
-/// The course's pass criteria: every sum of residuals below `accumulated_limit` and every single
-/// residual below `maximum_limit`, strictly.
+/// The course's pass criteria: every sum of residuals below `accumulated_limit`, every single
+/// position residual (and sync-record residual) below `maximum_limit` and every single velocity
+/// residual below `maximum_velocity_limit`, strictly. The defaults are the Theme 1 program's;
+/// criteria_for chooses by scene.
 struct GradingCriteria {
   double accumulated_limit = 1e-6;
   double maximum_limit = 1e-10;
+  double maximum_velocity_limit = 1e-10;
 };
+
+/// The Theme 4 (elastic bodies) program's criteria: as Theme 1's, but a single velocity residual
+/// may reach 1e-9 (measured: 1.0e-9 passes, 1.001e-9 fails; SPEC-elastica section 5).
+constexpr GradingCriteria kTheme4Criteria{1e-6, 1e-10, 1e-9};
+
+/// The criteria of the course program that grades this scene's kind: Theme 4's when the scene
+/// declares one of the Theme 4 elastic forces (Scene::grading_theme), else Theme 1's
+/// (docs/command-line.md, 'Grading').
+GradingCriteria criteria_for(const Scene& scene);
 
 /// Residuals of one step k: the reference step from the file's frame k-1 against its frame k.
 struct StepResidual {
@@ -123,10 +135,11 @@ std::array<Criterion, 4> criteria_of(const GradeReport& report);
 using GradingProgress = std::function<void(std::int64_t, std::int64_t)>;
 
 /// Grades `file` against `scene`: for every step k overwrites the state with frame k-1, takes one
-/// reference step and compares with frame k, for every particle (fixed ones included). Throws
-/// Error (kBadInput) when the file does not hold exactly num_steps() + 1 frames.
+/// reference step and compares with frame k, for every particle (fixed ones included), with
+/// `criteria` or, when none are given, criteria_for(scene). Throws Error (kBadInput) when the
+/// file does not hold exactly num_steps() + 1 frames.
 GradeReport grade_trajectory(const Scene& scene, TrajectoryReader& file,
-                             const GradingCriteria& criteria = {},
+                             const std::optional<GradingCriteria>& criteria = std::nullopt,
                              const GradingProgress& progress = {});
 
 /// Prints the course's report lines: the collision report's lines (if any), four
