@@ -65,6 +65,7 @@ void print_grade_report(std::ostream& out, const GradeReport& report) {
   if (report.collisions) {
     out << "Collisions Passed: " << (report.collisions->passed() ? "Yes." : "No.") << "\n";
   }
+  if (report.criteria.reports_hybrid_collisions) out << "Hybrid Collisions Passed: Yes.\n";
   out << "Overall success: " << (report.passed() ? "Passed." : "Failed.") << std::endl;
 }
 
@@ -73,6 +74,7 @@ void write_residual_file(const std::string& path, const GradeReport& report) {
     for (const Criterion& c : criteria_of(report)) {
       out << (c.passed ? 1 : 0) << "   " << c.value << "\n";
     }
+    if (report.criteria.reports_hybrid_collisions) out << "1\n";
   });
 }
 

@@ -8,7 +8,9 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <memory>
+#include <sstream>
 
 #include "grading/grader.h"
 #include "io/scene_loader.h"
@@ -135,6 +137,30 @@ TEST_F(Theme4Criteria, Theme1ScenesKeepTheStricterVelocityLimit) {
   const GradeReport report = grade();
   EXPECT_FALSE(report.max_velocity_passed());
   EXPECT_FALSE(report.passed());
+}
+
+TEST_F(Theme4Criteria, ReportHasTheTheme4ProgramsHybridCollisionLines) {
+  use(kTheme4Scene);
+  const GradeReport report = grade();
+  std::ostringstream out;
+  print_grade_report(out, report);
+  EXPECT_EQ(out.str(),
+            "Accumulated Position Residual: 0   Passed.\n"
+            "Accumulated Velocity Residual: 0   Passed.\n"
+            "Maximum Position Residual: 0   Passed.\n"
+            "Maximum Velocity Residual: 0   Passed.\n"
+            "Hybrid Collisions Passed: Yes.\n"
+            "Overall success: Passed.\n");
+  const std::string residual = folder_ / "residual.txt";
+  write_residual_file(residual, report);
+  std::ifstream in(residual);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text, "1   0\n1   0\n1   0\n1   0\n1\n");
+  // Theme 1's report has neither.
+  use(kTheme1Scene);
+  std::ostringstream theme1;
+  print_grade_report(theme1, grade());
+  EXPECT_EQ(theme1.str().find("Hybrid"), std::string::npos);
 }
 
 }  // namespace
