@@ -30,6 +30,13 @@ class ForceParameters {
   [[noreturn]] virtual void fail(const std::string& problem) = 0;
   /// Reports a problem with one parameter; never returns.
   [[noreturn]] virtual void fail(const char* name, const std::string& problem) = 0;
+  /// Records a warning about the declaration (an unusual but valid value); loading goes on.
+  /// Sources without a warning channel drop it.
+  virtual void warn(const std::string& /*problem*/) {}
+  /// Declares `name` a parameter that is known but not supported (a handout's attribute that
+  /// the course's program never read): if present, it is ignored with a warning that says
+  /// `why`, rather than reported as unknown.
+  virtual void unsupported(const char* /*name*/, const std::string& /*why*/) {}
 
   /// A required non-negative number.
   double non_negative(const char* name);

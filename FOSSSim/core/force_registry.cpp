@@ -4,6 +4,9 @@
 
 #include "core/forces/constant_force.h"
 #include "core/forces/drag_damping_force.h"
+#include "core/forces/elastic_body_bending_force.h"
+#include "core/forces/elastic_body_cst_force.h"
+#include "core/forces/elastic_body_spring_force.h"
 #include "core/forces/gravitational_force.h"
 #include "core/forces/simple_gravity_force.h"
 #include "core/forces/spring_force.h"
@@ -19,6 +22,9 @@ constexpr std::array kForceKinds = {
     ForceKind{"constantforce", &make_constant_force},
     ForceKind{"dragdamping", &make_drag_damping_force},
     ForceKind{"vortexforce", &make_vortex_force},
+    ForceKind{"elasticbodyspringforce", &make_elastic_body_spring_force, 4},
+    ForceKind{"elasticbodybendingforce", &make_elastic_body_bending_force, 4},
+    ForceKind{"elasticbodycstforce", &make_elastic_body_cst_force, 4},
 };
 }  // namespace
 

@@ -9,8 +9,14 @@
 namespace fosssim {
 
 struct ForceKind {
+  constexpr ForceKind(std::string_view tag_, ForceFactory create_, int course_theme_ = 1)
+      : tag(tag_), create(create_), course_theme(course_theme_) {}
+
   std::string_view tag;  ///< element name in scene files
   ForceFactory create;
+  /// The course theme that introduced the force: a scene with a Theme 4 force is graded with
+  /// the Theme 4 program's criteria (Scene::grading_theme).
+  int course_theme;
 };
 
 /// All force kinds. Forces are summed grouped by kind in this order, each group in document

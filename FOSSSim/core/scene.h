@@ -84,6 +84,10 @@ struct Scene {
   std::vector<std::string> particle_tags;  ///< per particle, empty when untagged
   double max_sim_frequency = 100.0;        ///< window throttle, steps per wall second
   std::vector<std::string> warnings;       ///< things that were accepted but look wrong
+  /// The course theme whose grading program this scene belongs to: 4 when it declares a
+  /// Theme 4 elastic force (its program allows larger velocity residuals), else 1. Grading
+  /// chooses its criteria by it (grading/grader.h, criteria_for).
+  int grading_theme = 1;
 };
 
 }  // namespace fosssim

@@ -17,7 +17,8 @@ std::array<Criterion, 4> criteria_of(const GradeReport& r) {
        {"Accumulated Velocity Residual", r.accumulated_velocity, c.accumulated_limit,
         r.accumulated_velocity_passed()},
        {"Maximum Position Residual", r.max_position, c.maximum_limit, r.max_position_passed()},
-       {"Maximum Velocity Residual", r.max_velocity, c.maximum_limit, r.max_velocity_passed()}}};
+       {"Maximum Velocity Residual", r.max_velocity, c.maximum_velocity_limit,
+        r.max_velocity_passed()}}};
 }
 
 bool GradeReport::accumulated_position_passed() const {
@@ -30,15 +31,20 @@ bool GradeReport::max_position_passed() const {
   return below_limit(max_position, criteria.maximum_limit);
 }
 bool GradeReport::max_velocity_passed() const {
-  return below_limit(max_velocity, criteria.maximum_limit);
+  return below_limit(max_velocity, criteria.maximum_velocity_limit);
 }
 bool GradeReport::passed() const {
   return !reference_failure && accumulated_position_passed() && accumulated_velocity_passed() &&
          max_position_passed() && max_velocity_passed() && (!collisions || collisions->passed());
 }
 
+GradingCriteria criteria_for(const Scene& scene) {
+  return scene.grading_theme == 4 ? kTheme4Criteria : GradingCriteria{};
+}
+
 GradeReport grade_trajectory(const Scene& scene, TrajectoryReader& file,
-                             const GradingCriteria& criteria, const GradingProgress& progress) {
+                             const std::optional<GradingCriteria>& criteria,
+                             const GradingProgress& progress) {
   StepGrader grader = StepGrader::open(scene, file, criteria);
   while (grader.grade_next_step()) {
     if (progress) progress(grader.steps_graded(), grader.report().steps);
@@ -59,6 +65,7 @@ void print_grade_report(std::ostream& out, const GradeReport& report) {
   if (report.collisions) {
     out << "Collisions Passed: " << (report.collisions->passed() ? "Yes." : "No.") << "\n";
   }
+  if (report.criteria.reports_hybrid_collisions) out << "Hybrid Collisions Passed: Yes.\n";
   out << "Overall success: " << (report.passed() ? "Passed." : "Failed.") << std::endl;
 }
 
@@ -67,6 +74,7 @@ void write_residual_file(const std::string& path, const GradeReport& report) {
     for (const Criterion& c : criteria_of(report)) {
       out << (c.passed ? 1 : 0) << "   " << c.value << "\n";
     }
+    if (report.criteria.reports_hybrid_collisions) out << "1\n";
   });
 }
 

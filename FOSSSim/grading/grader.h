@@ -16,12 +16,28 @@
 
 namespace fosssim {
 
-/// The course's pass criteria: every sum of residuals below `accumulated_limit` and every single
-/// residual below `maximum_limit`, strictly.
+/// The course's pass criteria: every sum of residuals below `accumulated_limit`, every single
+/// position residual (and sync-record residual) below `maximum_limit` and every single velocity
+/// residual below `maximum_velocity_limit`, strictly. The defaults are the Theme 1 program's;
+/// criteria_for chooses by scene.
 struct GradingCriteria {
   double accumulated_limit = 1e-6;
   double maximum_limit = 1e-10;
+  double maximum_velocity_limit = 1e-10;
+  /// The Theme 4 program's report: a line "Hybrid Collisions Passed: Yes." before the overall
+  /// verdict, and a fifth residual-file line "1" (its hybrid-collision flag, always set).
+  bool reports_hybrid_collisions = false;
 };
+
+/// The Theme 4 (elastic bodies) program's criteria: as Theme 1's, but a single velocity residual
+/// may reach 1e-9 (measured: 1.0e-9 passes, 1.001e-9 fails; SPEC-elastica section 5), and its
+/// report has the hybrid-collision line.
+constexpr GradingCriteria kTheme4Criteria{1e-6, 1e-10, 1e-9, true};
+
+/// The criteria of the course program that grades this scene's kind: Theme 4's when the scene
+/// declares one of the Theme 4 elastic forces (Scene::grading_theme), else Theme 1's
+/// (docs/command-line.md, 'Grading').
+GradingCriteria criteria_for(const Scene& scene);
 
 /// Residuals of one step k: the reference step from the file's frame k-1 against its frame k.
 struct StepResidual {
@@ -123,19 +139,22 @@ std::array<Criterion, 4> criteria_of(const GradeReport& report);
 using GradingProgress = std::function<void(std::int64_t, std::int64_t)>;
 
 /// Grades `file` against `scene`: for every step k overwrites the state with frame k-1, takes one
-/// reference step and compares with frame k, for every particle (fixed ones included). Throws
-/// Error (kBadInput) when the file does not hold exactly num_steps() + 1 frames.
+/// reference step and compares with frame k, for every particle (fixed ones included), with
+/// `criteria` or, when none are given, criteria_for(scene). Throws Error (kBadInput) when the
+/// file does not hold exactly num_steps() + 1 frames.
 GradeReport grade_trajectory(const Scene& scene, TrajectoryReader& file,
-                             const GradingCriteria& criteria = {},
+                             const std::optional<GradingCriteria>& criteria = std::nullopt,
                              const GradingProgress& progress = {});
 
 /// Prints the course's report lines: the collision report's lines (if any), four
 /// "<criterion>: <value>   Passed." lines, "Collisions Passed: Yes." or "No." for trajectories
-/// with collisions, then "Overall success: Passed." or "Failed.".
+/// with collisions, "Hybrid Collisions Passed: Yes." under the Theme 4 criteria, then
+/// "Overall success: Passed." or "Failed.".
 void print_grade_report(std::ostream& out, const GradeReport& report);
 
-/// Writes residual.txt: one "<1|0>   <value>" line per criterion, in the report's order. The file
-/// is written under a temporary name and renamed, so it is never left half written.
+/// Writes residual.txt: one "<1|0>   <value>" line per criterion, in the report's order, and under
+/// the Theme 4 criteria a fifth line "1". The file is written under a temporary name and
+/// renamed, so it is never left half written.
 void write_residual_file(const std::string& path, const GradeReport& report);
 
 /// A human explanation of where and why grading failed, for the terminal; empty when passed.

@@ -19,7 +19,7 @@ StepGrader::StepGrader(const Scene& scene, TrajectoryReader& file, const Grading
 }
 
 StepGrader StepGrader::open(const Scene& scene, TrajectoryReader& file,
-                            const GradingCriteria& criteria) {
+                            const std::optional<GradingCriteria>& criteria) {
   const std::int64_t steps = scene.model.num_steps();
   if (file.num_frames() != steps + 1) {
     throw Error(ErrorKind::kBadInput,
@@ -29,7 +29,7 @@ StepGrader StepGrader::open(const Scene& scene, TrajectoryReader& file,
                     " (the initial state and one frame per step)" +
                     (file.num_frames() < steps + 1 ? "; the file was cut short" : ""));
   }
-  return StepGrader(scene, file, criteria);
+  return StepGrader(scene, file, criteria ? *criteria : criteria_for(scene));
 }
 
 bool StepGrader::finished() const {
@@ -141,7 +141,8 @@ void StepGrader::compare(const State& reference, const Vector& previous_q,
       residual.max_velocity_particle = p;
     }
     if (!report_.first_divergence &&
-        !(below_limit(rx, criteria.maximum_limit) && below_limit(rv, criteria.maximum_limit))) {
+        !(below_limit(rx, criteria.maximum_limit) &&
+          below_limit(rv, criteria.maximum_velocity_limit))) {
       FirstDivergence d;
       d.step = residual.step;
       d.particle = p;

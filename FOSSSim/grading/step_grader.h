@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,8 +31,9 @@ class StepGrader {
  public:
   /// Starts grading. `scene` and `file` must outlive the grader. Throws Error (kBadInput) when
   /// the file does not hold exactly num_steps() + 1 frames (the message does not name the file).
+  /// Without `criteria`, grades with those of the scene's course program (criteria_for).
   static StepGrader open(const Scene& scene, TrajectoryReader& file,
-                         const GradingCriteria& criteria = {});
+                         const std::optional<GradingCriteria>& criteria = std::nullopt);
 
   /// Grades the next step. Returns false, grading nothing, once every step is graded or the
   /// reference integrator has failed (report().reference_failure says why).

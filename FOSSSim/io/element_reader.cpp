@@ -2,6 +2,9 @@
 
 #include <tinyxml2.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "core/text.h"
 #include "io/scene_error.h"
 #include "io/text_lines.h"
@@ -18,6 +21,38 @@ std::string_view trimmed(const char* text) {
   while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
   while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
   return s;
+}
+
+/// The optimal-string-alignment distance (insertions, deletions, substitutions and swaps of
+/// neighbours), stopping early: returns `cap` + 1 for anything farther than `cap`. Attribute
+/// names are short, so the quadratic table is small.
+int edit_distance(std::string_view a, std::string_view b, int cap) {
+  const int n = static_cast<int>(a.size());
+  const int m = static_cast<int>(b.size());
+  if (n - m > cap || m - n > cap || n > 64 || m > 64) return cap + 1;
+  std::vector<std::vector<int>> d(n + 1, std::vector<int>(m + 1, 0));
+  for (int i = 0; i <= n; ++i) d[i][0] = i;
+  for (int j = 0; j <= m; ++j) d[0][j] = j;
+  for (int i = 1; i <= n; ++i) {
+    for (int j = 1; j <= m; ++j) {
+      const int cost = a[i - 1] == b[j - 1] ? 0 : 1;
+      int best = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+        best = std::min(best, d[i - 2][j - 2] + 1);
+      }
+      d[i][j] = best;
+    }
+  }
+  return std::min(d[n][m], cap + 1);
+}
+
+/// Two edits catch the usual slips ("alhpa", "poisonratio") without pairing unrelated
+/// short names; names of two letters or fewer are never suggested ("px" is not "vx").
+constexpr int kMisspellingEdits = 2;
+bool looks_like_misspelling(std::string_view unknown, std::string_view known) {
+  if (known.size() <= 2 || unknown == known) return false;
+  const int cap = known.size() <= 4 ? 1 : kMisspellingEdits;
+  return edit_distance(unknown, known, cap) <= cap;
 }
 
 }  // namespace
@@ -65,7 +100,13 @@ void ElementReader::remember(const char* name) {
 const char* ElementReader::raw(const char* name) {
   remember(name);
   const char* value = element_.Attribute(name);
-  if (value == nullptr) fail(name, "is missing");
+  if (value == nullptr) {
+    if (const char* typo = likely_misspelling_of(name)) {
+      fail(name, std::string("is missing (the element has \"") + typo +
+                     "\", which is not read: a misspelling?)");
+    }
+    fail(name, "is missing");
+  }
   return value;
 }
 
@@ -152,11 +193,38 @@ std::string ElementReader::warning(const std::string& text) const {
   return file_ + ":" + std::to_string(line()) + ": warning: " + location() + ": " + text;
 }
 
+void ElementReader::warn(const std::string& problem) { notes_.push_back(warning(problem)); }
+
+void ElementReader::unsupported(const char* name, const std::string& why) {
+  if (!has(name) || was_asked(name)) return;
+  remember(name);
+  notes_.push_back(
+      warning(std::string("attribute \"") + name + "\" is not supported (" + why + "); ignored"));
+}
+
+const std::string* ElementReader::likely_meant(std::string_view unknown) const {
+  for (const std::string& asked : asked_) {
+    if (looks_like_misspelling(unknown, asked)) return &asked;
+  }
+  return nullptr;
+}
+
+const char* ElementReader::likely_misspelling_of(std::string_view name) const {
+  for (const auto* a = element_.FirstAttribute(); a != nullptr; a = a->Next()) {
+    if (!was_asked(a->Name()) && looks_like_misspelling(a->Name(), name)) return a->Name();
+  }
+  return nullptr;
+}
+
 std::vector<std::string> ElementReader::unknown_attribute_warnings() const {
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings = notes_;
   for (const auto* a = element_.FirstAttribute(); a != nullptr; a = a->Next()) {
     if (!was_asked(a->Name())) {
-      warnings.push_back(warning(std::string("unknown attribute \"") + a->Name() + "\" ignored"));
+      std::string text = std::string("unknown attribute \"") + a->Name() + "\" ignored";
+      if (const std::string* meant = likely_meant(a->Name())) {
+        text += " (did you mean \"" + *meant + "\"?)";
+      }
+      warnings.push_back(warning(text));
     }
   }
   return warnings;

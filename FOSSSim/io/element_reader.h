@@ -28,6 +28,8 @@ class ElementReader final : public ForceParameters {
   int edge_index(const char* name) override;
   [[noreturn]] void fail(const std::string& problem) override;
   [[noreturn]] void fail(const char* name, const std::string& problem) override;
+  void warn(const std::string& problem) override;
+  void unsupported(const char* name, const std::string& why) override;
 
   /// A required number > 0.
   double positive(const char* name);
@@ -46,7 +48,9 @@ class ElementReader final : public ForceParameters {
 
   /// A warning about this element, located like errors: "file:line: warning: <element> k: text".
   std::string warning(const std::string& text) const;
-  /// Warnings for attributes that no accessor asked for.
+  /// The warnings recorded by warn() and unsupported(), then one for each attribute that no
+  /// accessor asked for; an unknown attribute within two edits of an asked one is named as its
+  /// likely misspelling ("alhpa": did you mean "alpha"?).
   std::vector<std::string> unknown_attribute_warnings() const;
   int line() const;
 
@@ -62,7 +66,13 @@ class ElementReader final : public ForceParameters {
   bool was_asked(const char* name) const;
   void remember(const char* name);
 
+  /// The asked-for attribute that `unknown` most likely misspells, or nullptr.
+  const std::string* likely_meant(std::string_view unknown) const;
+  /// An attribute of the element that is likely a misspelling of `name`, or nullptr.
+  const char* likely_misspelling_of(std::string_view name) const;
+
   std::vector<std::string> asked_;  // a handful: a list is faster than a set
+  std::vector<std::string> notes_;  // warnings recorded by warn() and unsupported()
 };
 
 }  // namespace fosssim

@@ -2,6 +2,7 @@
 
 #include <tinyxml2.h>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <filesystem>
@@ -303,6 +304,9 @@ class SceneParser {
         ElementReader r = reader(*declarations[k], k);
         scene_.model.forces.push_back(kind.create(r, context));
         keep_warnings(r);
+      }
+      if (!declarations.empty()) {
+        scene_.grading_theme = std::max(scene_.grading_theme, kind.course_theme);
       }
       if (kind.tag == "springforce") {  // mesh springs sum right after the <springforce> group
         for (auto& force : mesh_forces_) scene_.model.forces.push_back(std::move(force));
