@@ -27,6 +27,8 @@ struct Options {
   std::string residual_file = "residual.txt";
   bool check_derivatives = false;
   bool quiet = false;
+  std::string progress = "auto";  ///< --progress auto|bar|lines|off
+  double progress_every = 10.0;    ///< --progress-every SECONDS between progress lines
 
   // Pictures (docs/viewing.md).
   int png = 0;  ///< -g 0|1: one PNG per state into png_directory

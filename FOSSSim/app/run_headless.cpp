@@ -26,7 +26,8 @@ int run_headless(const Scene& scene, const Options& options) {
     Simulation simulation(scene.model, scene.initial, scripted_additions(scene));
     SceneView view(scene, simulation.state(), options.width, options.height);
     ProgressBar progress("simulating", scene.model.num_steps(),
-                         !options.quiet && stderr_is_terminal());
+                         choose_progress_style(options.progress, options.quiet),
+                         options.progress_every);
     try {
       outputs.write(simulation.state(), view);
       while (!simulation.finished()) {
