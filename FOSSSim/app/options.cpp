@@ -49,6 +49,13 @@ void add_picture_options(CLI::App& app, Options& options) {
   app.add_flag("--orthographic", options.orthographic,
                "3D scenes: parallel projection instead of perspective")
       ->group(group);
+  app.add_option("--frame", options.frame,
+                 "Where the scene sets no viewport (or 3D camera target and distance), fit the\n"
+                 "camera of pictures and movies to what the whole run covers (run: the scene is\n"
+                 "simulated once more first) or to the initial state (first)")
+      ->check(CLI::IsMember({"run", "first"}))
+      ->capture_default_str()
+      ->group(group);
   app.add_option("--energy-plot", options.energy_plot,
                  "Plot kinetic, potential and total energy over the run into this PNG (or .svg)")
       ->group(group);
