@@ -49,6 +49,13 @@ void add_picture_options(CLI::App& app, Options& options) {
   app.add_flag("--orthographic", options.orthographic,
                "3D scenes: parallel projection instead of perspective")
       ->group(group);
+  app.add_option("--frame", options.frame,
+                 "Where the scene sets no viewport (or 3D camera target and distance), fit the\n"
+                 "camera of pictures and movies to what the whole run covers (run: the scene is\n"
+                 "simulated once more first) or to the initial state (first)")
+      ->check(CLI::IsMember({"run", "first"}))
+      ->capture_default_str()
+      ->group(group);
   app.add_option("--energy-plot", options.energy_plot,
                  "Plot kinetic, potential and total energy over the run into this PNG (or .svg)")
       ->group(group);
@@ -314,6 +321,26 @@ void add_options(CLI::App& app, Options& options) {
                "Check every force's gradient and Hessians against finite differences at the\n"
                "scene's initial state, print a table and exit (1 if any check fails)");
   app.add_flag("-q,--quiet", options.quiet, "No progress bar and no description");
+  app.add_option("--progress", options.progress,
+                 "How a run reports progress on standard error: a bar redrawn in place, a line\n"
+                 "every 10 s (from the 10th second on: logs, nohup, batch jobs), or nothing;\n"
+                 "auto is a bar at a terminal and lines otherwise")
+      ->check(CLI::IsMember({"auto", "bar", "lines", "off"}))
+      ->default_str("auto");
+  app.add_option("--progress-every", options.progress_every,
+                 "Seconds between two progress lines (--progress lines)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            // CLI::Range lets NaN through (every comparison with it is false).
+            char* end = nullptr;
+            const double seconds = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0' || !(seconds >= 1e-3 && seconds <= 1e6)) {
+              return "expected a number of seconds from 0.001 to 1e6, got '" + text + "'";
+            }
+            return {};
+          },
+          "SECONDS"))
+      ->default_str("10");
   add_picture_options(app, options);
   add_limit_options(app, options);
   app.set_version_flag("--version", "FOSSSim 0.1.0");

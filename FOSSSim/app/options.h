@@ -27,6 +27,8 @@ struct Options {
   std::string residual_file = "residual.txt";
   bool check_derivatives = false;
   bool quiet = false;
+  std::string progress = "auto";  ///< --progress auto|bar|lines|off
+  double progress_every = 10.0;    ///< --progress-every SECONDS between progress lines
 
   // Pictures (docs/viewing.md).
   int png = 0;  ///< -g 0|1: one PNG per state into png_directory
@@ -41,6 +43,7 @@ struct Options {
   std::string energy_csv;           ///< --energy-csv FILE.csv
   std::string view;                 ///< --view YAW,PITCH[,DISTANCE] of 3D scenes
   bool orthographic = false;        ///< --orthographic: parallel projection of 3D scenes
+  std::string frame = "run";        ///< --frame run|first: what the pictures' camera fits
   std::string window_screenshot;    ///< test aid: PNG of the window at window_screenshot_step
   std::int64_t window_screenshot_step = 0;
   bool display_given = false;  ///< -d appeared on the command line

@@ -12,7 +12,9 @@ namespace fosssim {
 
 int run_grading(const Scene& scene, const Options& options) {
   TrajectoryReader file = open_trajectory(options.input, scene.model);
-  ProgressBar progress("grading", scene.model.num_steps(), !options.quiet && stderr_is_terminal());
+  ProgressBar progress("grading", scene.model.num_steps(),
+                       choose_progress_style(options.progress, options.quiet),
+                       options.progress_every);
   GradeReport report;
   try {
     StepGrader grader = StepGrader::open(scene, file);

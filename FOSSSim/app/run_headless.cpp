@@ -1,4 +1,5 @@
 #include <iostream>
+#include <optional>
 
 #include "app/commands.h"
 #include "app/frame_outputs.h"
@@ -7,6 +8,7 @@
 #include "cli/exit_codes.h"
 #include "core/step/simulation.h"
 #include "core/step_error.h"
+#include "render/camera.h"
 #include "render/scene_view.h"
 #include "scripting/step_hooks.h"
 
@@ -18,15 +20,58 @@ std::string kept_note(FrameOutputs& outputs) {
   const std::string notes = outputs.abandon();
   return notes.empty() ? "" : "; " + notes;
 }
+
+/// True when the run writes pictures or a movie and the scene leaves their camera to the
+/// particles' positions (no 2D <viewport>; no <camera3d> or --view fixing target and distance).
+bool pictures_frame_positions(const Scene& scene, const Options& options) {
+  const bool pictures = options.png == 1 || !options.svg_directory.empty() || !options.movie.empty();
+  if (!pictures || options.frame != "run") return false;
+  const Appearance& look = scene.appearance;
+  if (scene.model.dim == 3 && look.camera3d) {
+    return !(look.camera3d->target && look.camera3d->distance);
+  }
+  return !look.viewport;
+}
+
+/// The corners (low, high) of the box the particle centres cover over the whole run, as the
+/// positions of two particles: the scene is run once without outputs, so that the pictures'
+/// camera frames all of the run and not only its first state. A failed step or an interrupt
+/// ends this pass with what it covered; the run proper then reports them.
+Vector whole_run_corners(const Scene& scene, const Options& options) {
+  const int dim = scene.model.dim;
+  auto [low, high] = compute_bounding_box(scene.initial.q, dim);
+  ProgressBar progress("framing the pictures", scene.model.num_steps(),
+                       choose_progress_style(options.progress, options.quiet),
+                       options.progress_every);
+  try {
+    Simulation simulation(scene.model, scene.initial, scripted_additions(scene));
+    while (!simulation.finished() && !interrupt_requested()) {
+      simulation.step();
+      const auto [step_low, step_high] = compute_bounding_box(simulation.state().q, dim);
+      low = low.cwiseMin(step_low);
+      high = high.cwiseMax(step_high);
+      progress.update(simulation.state().step);
+    }
+  } catch (const StepError&) {
+  }
+  progress.finish();
+  Vector corners(2 * dim);
+  corners << low.head(dim), high.head(dim);
+  return corners;
+}
 }  // namespace
 
 int run_headless(const Scene& scene, const Options& options) {
   FrameOutputs outputs = FrameOutputs::open(scene, options);
   try {
+    std::optional<Vector> frame;
+    if (pictures_frame_positions(scene, options)) frame = whole_run_corners(scene, options);
     Simulation simulation(scene.model, scene.initial, scripted_additions(scene));
-    SceneView view(scene, simulation.state(), options.width, options.height);
+    SceneView view(scene, simulation.state(), options.width, options.height,
+                   frame ? &*frame : nullptr);
     ProgressBar progress("simulating", scene.model.num_steps(),
-                         !options.quiet && stderr_is_terminal());
+                         choose_progress_style(options.progress, options.quiet),
+                         options.progress_every);
     try {
       outputs.write(simulation.state(), view);
       while (!simulation.finished()) {

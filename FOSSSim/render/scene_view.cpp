@@ -2,14 +2,24 @@
 
 namespace fosssim {
 
-SceneView::SceneView(const Scene& scene, const State& initial, int width, int height)
+namespace {
+/// `initial` with the positions `frame` when given: what the first camera is fitted to.
+State framing_state(const State& initial, const Vector* frame) {
+  State framing = initial;
+  if (frame) framing.q = *frame;
+  return framing;
+}
+}  // namespace
+
+SceneView::SceneView(const Scene& scene, const State& initial, int width, int height,
+                     const Vector* frame)
     : scene_(scene),
       width_(width),
       height_(height),
-      camera_(initial_camera(scene, initial, width, height)),
+      camera_(initial_camera(scene, framing_state(initial, frame), width, height)),
       paths_(scene) {
   if (scene.model.dim == 3) {
-    orbit_ = initial_orbit_camera(scene, initial, width, height);
+    orbit_ = initial_orbit_camera(scene, framing_state(initial, frame), width, height);
     parts_ = compute_scene_parts_3d(scene);
   }
   paths_.record(initial.q, scene.model.dim);

@@ -20,9 +20,12 @@ namespace fosssim {
 /// (initial_orbit_camera). The scene must outlive it.
 class SceneView {
  public:
-  /// width, height: picture size in pixels. The camera is the scene's viewport or is fitted to
-  /// `initial`, whose positions start the trails.
-  SceneView(const Scene& scene, const State& initial, int width, int height);
+  /// width, height: picture size in pixels. The camera is the scene's viewport (2D) or
+  /// <camera3d> where they fix it, and is otherwise fitted to the positions `frame` (interleaved
+  /// like q; for instance the corners of the box a whole run covers) or, without them, to
+  /// `initial`'s. `initial`'s positions start the trails.
+  SceneView(const Scene& scene, const State& initial, int width, int height,
+            const Vector* frame = nullptr);
 
   /// Records a new state's positions in the trails; call once per step.
   void record(const State& state);

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "pictures/cairo_painter.h"
+#include "support/pixel_counts.h"
 #include "support/run_program.h"
 #include "support/scratch_folder.h"
 #include "support/tiny_scenes.h"
@@ -111,6 +112,26 @@ TEST_F(CliPictures, FountainRunsAreReproducibleAndGradeAsPassed) {
   const auto graded = fosssim("-s fountain.xml -d 0 -i a.bin");
   EXPECT_EQ(graded.status, 0) << graded.out << graded.err;
   EXPECT_NE(graded.out.find("Overall success: Passed."), std::string::npos);
+}
+
+// A particle that leaves its first state's box: with no <viewport>, pictures frame what the
+// whole run covers (--frame run, the default), so the last picture still shows it; fitted to the
+// first state only (--frame first) it has left the picture.
+TEST_F(CliPictures, PicturesFrameTheWholeRun) {
+  folder_.write("leaving.xml", R"(<scene>
+  <duration time="1"/><integrator type="explicit-euler" dt="0.1"/>
+  <particle m="1" px="0" py="0" vx="0" vy="0" fixed="1" radius="0.05"/>
+  <particle m="1" px="1" py="0" vx="2" vy="0" fixed="0" radius="0.05"/>
+  <particlecolor i="1" r="1" g="0" b="0"/>
+</scene>)");
+  ASSERT_EQ(fosssim("-s leaving.xml -d 0 -g 1 --png-dir run").status, 0);
+  ASSERT_EQ(fosssim("-s leaving.xml -d 0 -g 1 --png-dir first --frame first").status, 0);
+  EXPECT_GT(testing::count_color(read_png(folder_ / "run/frame_00010.png"), testing::kRed), 20);
+  EXPECT_EQ(testing::count_color(read_png(folder_ / "first/frame_00010.png"), testing::kRed), 0);
+  // Both show the particle at the start.
+  EXPECT_GT(testing::count_color(read_png(folder_ / "run/frame_00000.png"), testing::kRed), 20);
+  EXPECT_GT(testing::count_color(read_png(folder_ / "first/frame_00000.png"), testing::kRed), 20);
+  EXPECT_EQ(fosssim("-s leaving.xml -d 0 -g 1 --frame sometimes").status, 2);
 }
 
 }  // namespace

@@ -294,11 +294,37 @@ TEST_F(CommandLine, UnwritableOutputIsAnIoError) {
   EXPECT_NE(r.err.find("cannot create missing/dir/out.bin.partial"), std::string::npos) << r.err;
 }
 
+TEST_F(CommandLine, ProgressLinesWhenStandardErrorIsNotATerminal) {
+  // The tests' standard error is a pipe: a short run prints no progress by default ...
+  const ProgramResult quiet = fosssim({"-s", "spring.xml", "-d", "0", "-o", "a.bin"});
+  EXPECT_EQ(quiet.status, 0) << quiet.err;
+  EXPECT_EQ(quiet.err.find("FOSSSim: simulating"), std::string::npos) << quiet.err;
+  // ... and lines at the interval asked for, ending with the last step.
+  const ProgramResult lines = fosssim(
+      {"-s", "spring.xml", "-d", "0", "-o", "b.bin", "--progress", "lines", "--progress-every",
+       "0.001"});
+  EXPECT_EQ(lines.status, 0) << lines.err;
+  EXPECT_NE(lines.err.find("FOSSSim: simulating: step "), std::string::npos) << lines.err;
+  EXPECT_NE(lines.err.find("step 100 of 100 (100%)"), std::string::npos) << lines.err;
+  const ProgramResult off = fosssim({"-s", "spring.xml", "-d", "0", "-i", "b.bin", "--progress",
+                                     "off"});
+  EXPECT_EQ(off.err.find("FOSSSim: grading"), std::string::npos) << off.err;
+  for (const char* bad : {"nan", "0", "-1", "1e9", "10s"}) {
+    const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "--progress-every", bad});
+    EXPECT_EQ(r.status, 2) << bad << ": " << r.err;
+  }
+  EXPECT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "--progress", "sometimes"}).status, 2);
+}
+
 TEST_F(CommandLine, ChecksDerivativesOfAScene) {
   const ProgramResult r = fosssim({"-s", "spring.xml", "--check-derivatives", "-q"});
   EXPECT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("springforce(0, 1)"), std::string::npos);
   EXPECT_NE(r.out.find("all passed"), std::string::npos);
+  // Gravity's Hessians vanish: the table says so instead of a relative error of noise over
+  // noise (1.000e+00 with the verdict ok).
+  EXPECT_NE(r.out.find("ok (zero)"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("1.000e+00"), std::string::npos) << r.out;
 }
 
 }  // namespace

@@ -42,6 +42,9 @@ struct DerivativeCheck {
   bool passed() const { return allowance_used <= 1.0; }
   /// Error relative to the scale, 0 when both sides vanish.
   double relative_error() const { return scale > 0.0 ? absolute_error / scale : 0.0; }
+  /// True when the derivative and its estimate are both within round-off of zero in the worst
+  /// direction (hessV of an undamped spring): a relative error means nothing there.
+  bool vanishes() const { return scale <= noise_floor; }
 };
 
 /// Checks gradient, hessX and hessV of one force at (q, v) by Richardson-extrapolated central

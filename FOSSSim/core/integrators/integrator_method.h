@@ -41,11 +41,11 @@ struct IntegratorProperties {
 struct IntegratorMethod {
   std::string_view name;  ///< the canonical type string of <integrator type="...">
   /// Other type strings for the same method (the course's handouts print short forms).
-  std::span<const std::string_view> aliases;
+  std::span<const std::string_view> aliases = {};
   std::string_view summary;  ///< one line for --help and messages
   /// The method's settings: attributes of <integrator>, keys of JSON scenes, and
   /// --integrator-option NAME=VALUE.
-  std::span<const OptionSpec> options;
+  std::span<const OptionSpec> options = {};
   IntegratorProperties properties;
   /// Makes an unbound integrator for scenes of dimension `dim` (2 or 3) with these settings
   /// (values of `options`).

@@ -5,6 +5,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "core/solvers/solver_failure.h"
+
 namespace fosssim {
 
 /// CHOLMOD's state: its workspace (cholmod_common), the factor, and the dense buffers that
@@ -94,7 +96,7 @@ void CholeskyFactor::analyze(const SparseMatrix& A) {
   size_ = static_cast<int>(A.rows());
   cholmod_sparse view = view_triangle(A, options_.triangle);
   cholmod_->factor = cholmod_analyze(&view, &cholmod_->common);
-  if (cholmod_->factor == nullptr) throw std::runtime_error("CHOLMOD: the analysis failed");
+  if (cholmod_->factor == nullptr) throw SolverFailure("CHOLMOD: the analysis failed");
 }
 
 bool CholeskyFactor::is_analyzed() const { return cholmod_->factor != nullptr; }
@@ -114,7 +116,7 @@ void CholeskyFactor::solve(const double* B, double* X, int columns) const {
   cholmod_dense b = view_dense(B, size_, columns);
   Cholmod& c = *cholmod_;
   if (cholmod_solve2(CHOLMOD_A, c.factor, &b, nullptr, &c.x, nullptr, &c.y, &c.e, &c.common) == 0) {
-    throw std::runtime_error("CHOLMOD: the solve failed");
+    throw SolverFailure("CHOLMOD: the solve failed");
   }
   std::memcpy(X, c.x->x, sizeof(double) * static_cast<std::size_t>(size_) * columns);
 }

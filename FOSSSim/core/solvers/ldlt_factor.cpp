@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/solvers/solver_failure.h"
+
 namespace fosssim {
 
 namespace {
@@ -65,7 +67,7 @@ class MumpsOf final : public LdltFactor::Mumps {
     id_.par = 1;  // this process takes part in the work
     id_.sym = 2;  // general symmetric: L D Lᵀ with 1×1 and 2×2 pivots
     run(-1);
-    if (id_.infog[0] < 0) throw std::runtime_error("MUMPS: could not start");
+    if (id_.infog[0] < 0) throw SolverFailure("MUMPS: could not start");
     // Never print: failures are reported through return values.
     control(1) = -1;
     control(2) = -1;
@@ -154,7 +156,7 @@ void LdltFactor::analyze(const SparseMatrix& A) {
   }
   mumps_->analyze(size_, rows_, columns_);
   if (mumps_->info(1) < 0) {
-    throw std::runtime_error(
+    throw SolverFailure(
         "MUMPS: the analysis failed (INFOG(1) = " + std::to_string(mumps_->info(1)) + ")");
   }
   analysed_ = true;
@@ -190,7 +192,7 @@ bool LdltFactor::factorize(const SparseMatrix& A) {
 void LdltFactor::solve(const double* b, double* x) const {
   if (!factored_) throw std::logic_error("LdltFactor::solve without a factor");
   mumps_->solve(b, x);
-  if (mumps_->info(1) < 0) throw std::runtime_error("MUMPS: the solve failed");
+  if (mumps_->info(1) < 0) throw SolverFailure("MUMPS: the solve failed");
 }
 
 }  // namespace fosssim

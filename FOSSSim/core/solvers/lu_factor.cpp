@@ -4,6 +4,8 @@
 
 #include <stdexcept>
 
+#include "core/solvers/solver_failure.h"
+
 namespace fosssim {
 
 LuFactor::LuFactor() : control_(UMFPACK_CONTROL), info_(UMFPACK_INFO) {
@@ -29,7 +31,7 @@ void LuFactor::analyze(const SparseMatrix& A) {
   size_ = static_cast<int>(A.rows());
   const int status = umfpack_di_symbolic(size_, size_, A.outerIndexPtr(), A.innerIndexPtr(),
                                          A.valuePtr(), &symbolic_, control_.data(), info_.data());
-  if (status != UMFPACK_OK) throw std::runtime_error("UMFPACK: the analysis failed");
+  if (status != UMFPACK_OK) throw SolverFailure("UMFPACK: the analysis failed");
   integer_work_.resize(static_cast<std::size_t>(size_));
   work_.resize(static_cast<std::size_t>(size_));
 }
@@ -53,7 +55,7 @@ void LuFactor::solve(const double* b, double* x) const {
   const int status =
       umfpack_di_wsolve(UMFPACK_A, nullptr, nullptr, nullptr, x, b, numeric_, control_.data(),
                         info_.data(), integer_work_.data(), work_.data());
-  if (status != UMFPACK_OK) throw std::runtime_error("UMFPACK: the solve failed");
+  if (status != UMFPACK_OK) throw SolverFailure("UMFPACK: the solve failed");
 }
 
 }  // namespace fosssim

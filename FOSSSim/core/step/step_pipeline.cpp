@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/collisions/collision_stages.h"
+#include "core/solvers/solver_failure.h"
 #include "core/step_error.h"
 
 namespace fosssim {
@@ -26,13 +27,19 @@ void StepPipeline::add_stage(StagePhase phase, std::unique_ptr<StepStage> stage)
 void StepPipeline::step(State& state, StepRecord* record) {
   StepRecord& out = record != nullptr ? *record : own_record_;
   out.clear();
-  if (stages_.empty()) {
-    integrator_->step(state);
-  } else {
-    const State start = state;
-    integrator_->step(state);
-    const StepContext context{*model_, start, model_->integrator.dt, out};
-    for (auto& [phase, stage] : stages_) stage->apply(context, state);
+  const std::int64_t step = state.step + 1;
+  try {
+    if (stages_.empty()) {
+      integrator_->step(state);
+    } else {
+      const State start = state;
+      integrator_->step(state);
+      const StepContext context{*model_, start, model_->integrator.dt, out};
+      for (auto& [phase, stage] : stages_) stage->apply(context, state);
+    }
+  } catch (const SolverFailure& failure) {
+    // A solver library gave up on this step's matrix: a failed step, named as such.
+    throw StepError(step, failure.what());
   }
   if (check_health_) check_state_is_finite(*model_, state);
 }

@@ -6,6 +6,8 @@
 //   (step n) and the state so far (step n + 1, already integrated);
 // - the health check throws StepError on a non-finite state a stage leaves, and can be turned
 //   off (the grader compares such states instead);
+// - a solver library's failure (SolverFailure) during a step becomes a StepError naming that
+//   step, so the programs report a failed step (exit 3), not bad input;
 // - an interaction force handed to the pipeline acts exactly as the same force in the model
 //   would, summed last: identical bits, with every integrator of the registry.
 
@@ -19,6 +21,7 @@
 #include <vector>
 
 #include "core/forces/drag_spring_force.h"
+#include "core/solvers/solver_failure.h"
 #include "core/step_error.h"
 #include "support/scene_builder.h"
 #include "support/typed_tests.h"
@@ -78,6 +81,29 @@ TEST(StepPipeline, TheHealthCheckCatchesWhatAStageSpoilsUnlessTurnedOff) {
   state = scene.initial;
   EXPECT_NO_THROW(pipeline.step(state));
   EXPECT_TRUE(std::isnan(state.v[0]));
+}
+
+/// Throws what a sparse solver throws when its library gives up.
+class FailingSolveStage final : public StepStage {
+ public:
+  void apply(const StepContext&, State&) override { throw SolverFailure("MUMPS: the solve failed"); }
+};
+
+TEST(StepPipeline, ASolverFailureIsAFailedStepNamingTheStep) {
+  const TestScene scene = moving_particle();
+  StepPipeline pipeline(scene.model);
+  State state = scene.initial;
+  pipeline.step(state);
+  pipeline.step(state);
+  pipeline.add_stage(StagePhase::kResponse, std::make_unique<FailingSolveStage>());
+  try {
+    pipeline.step(state);
+    FAIL() << "expected a StepError";
+  } catch (const StepError& error) {
+    EXPECT_EQ(error.step(), 3);
+    EXPECT_EQ(error.kind(), ErrorKind::kStepFailed);
+    EXPECT_STREQ(error.what(), "step 3: MUMPS: the solve failed");
+  }
 }
 
 TEST(StepPipeline, AnInteractionForceActsAsTheSameForceInTheModelWould) {
