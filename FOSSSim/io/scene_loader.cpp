@@ -2,6 +2,7 @@
 
 #include <tinyxml2.h>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <filesystem>
@@ -144,6 +145,15 @@ class SceneParser {
       if (!is_known_element(e->Name())) {
         throw SceneError(file_, e->GetLineNum(), std::string("<") + e->Name() + ">",
                          "unknown element");
+      }
+      // Only the mesh elements hold elements (<pin>, read with them); anything inside another
+      // element would otherwise be dropped without a word.
+      const XMLElement* child = e->FirstChildElement();
+      if (child != nullptr && !is_mesh_element(e->Name())) {
+        throw SceneError(file_, child->GetLineNum(), std::string("<") + child->Name() + ">",
+                         std::string("inside <") + e->Name() +
+                             ">, which holds no elements: close <" + e->Name() +
+                             " .../> before it");
       }
       elements_[e->Name()].push_back(e);
     }
@@ -350,6 +360,14 @@ class SceneParser {
 Scene load_scene_text(std::string_view text, const std::string& name, InputFiles& files) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
     throw SceneError(name, 0, "", "the file is empty (expected a <scene> element)");
+  }
+  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+    // tinyxml2 would stop reading there and ignore the rest of the file.
+    const auto line =
+        1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
+    throw SceneError(name, static_cast<int>(line), "",
+                     "a NUL byte (at byte " + std::to_string(nul) +
+                         "): a scene file is text, and nothing after it would be read");
   }
   std::vector<std::string> warnings;
   const std::string fixed = separate_run_together_attributes(text, name, warnings);

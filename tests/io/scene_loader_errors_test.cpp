@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 
 #include "core/integrators/integrator_registry.h"
@@ -119,12 +120,31 @@ const Case kCases[] = {
      "bad.xml:3: error: <duration>: may appear only once (first at line 2)"},
     {"NonPositiveViewport", "<viewport cx=\"0\" cy=\"0\" size=\"0\"/>\n",
      "bad.xml:3: error: <viewport>: attribute \"size\" must be positive, found 0"},
+    // Elements nested in one that holds none were dropped without a word.
+    {"ElementInsideParticle",
+     "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\">\n"
+     "<simplegravity fx=\"0\" fy=\"-9.81\"/>\n</particle>\n",
+     "bad.xml:4: error: <simplegravity>: inside <particle>, which holds no elements: close "
+     "<particle .../> before it"},
+    {"SpringInsideEdge",
+     std::string(kTwoParticles, std::strlen(kTwoParticles) - 20) +
+         "<edge i=\"0\" j=\"1\"><springforce edge=\"0\" k=\"1\" l0=\"1\"/></edge>\n",
+     "bad.xml:5: error: <springforce>: inside <edge>, which holds no elements: close <edge .../> "
+     "before it"},
 };
 
 INSTANTIATE_TEST_SUITE_P(SceneLoader, MalformedScene, ::testing::ValuesIn(kCases),
                          [](const ::testing::TestParamInfo<Case>& info) {
                            return info.param.name;
                          });
+
+TEST(SceneLoaderErrors, ANulByteIsRefusedWithItsLine) {
+  const std::string text = std::string(kHeader) + kTwoParticles + std::string(1, '\0') +
+                           "<simplegravity fx=\"0\" fy=\"-9.81\"/>\n</scene>\n";
+  const std::size_t at = std::string(kHeader).size() + std::string(kTwoParticles).size();
+  EXPECT_EQ(error_of(text), "bad.xml:6: error: a NUL byte (at byte " + std::to_string(at) +
+                                "): a scene file is text, and nothing after it would be read");
+}
 
 TEST(SceneLoaderErrors, UnknownIntegratorListsEveryTypeOfTheRegistry) {
   const std::string error =
