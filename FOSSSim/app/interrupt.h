@@ -8,8 +8,9 @@ namespace fosssim {
 /// real-time signals. Long runs then stop between steps and keep what they computed, as for
 /// Ctrl-C; a write that the signal interrupts fails with an error instead (SIGPIPE: the reader
 /// is gone; SIGXFSZ: the file size limit). Only SIGKILL (and SIGSTOP) cannot be handled.
-/// SIGINT, SIGHUP and SIGQUIT stay ignored when the program started with them ignored (nohup,
-/// a background job of a non-interactive shell).
+/// Only signals at their default action are taken: one ignored from the start (nohup, a
+/// background job of a non-interactive shell) stays ignored, and one another library already
+/// handles (a profiler's SIGPROF) stays with it.
 void install_interrupt_handler();
 
 /// True once one of those signals was received.

@@ -86,6 +86,11 @@ void add_limit_options(CLI::App& app, Options& options) {
       ->type_name("MIB")
       ->capture_default_str()
       ->group(group);
+  app.add_option("--max-attributes", options.max_attributes,
+                 "Refuse an XML element of more attributes than this")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 20))
+      ->capture_default_str()
+      ->group(group);
   app.add_option("--max-face-corners", options.max_face_corners,
                  "Refuse an OBJ face of more corners than this (a face of n corners makes\n"
                  "n (n - 1) / 2 springs)")
@@ -256,6 +261,7 @@ Limits limits_of(const Options& options) {
   limits.max_particles = options.max_particles;
   limits.max_file_bytes = options.max_file_mib << 20;
   limits.max_face_corners = options.max_face_corners;
+  limits.max_attributes = options.max_attributes;
   return limits;
 }
 
@@ -326,7 +332,7 @@ void add_options(CLI::App& app, Options& options) {
   for (const char* name :
        {"-d", "-p", "--duration", "--dt", "--newton-max-iterations", "--newton-tolerance", "-g",
         "--movie-stride", "--fps", "--window-screenshot-step", "--max-steps", "--max-particles",
-        "--max-file-size", "--max-face-corners"}) {
+        "--max-file-size", "--max-face-corners", "--max-attributes"}) {
     app.get_option(name)->check(decimal_number());
   }
   for (const char* name : {"-s", "-o", "-i", "--residual-file", "--png-dir", "-m", "--movie",

@@ -50,6 +50,7 @@ struct Options {
   std::int64_t max_particles = Limits{}.max_particles;        ///< --max-particles
   std::int64_t max_file_mib = Limits{}.max_file_bytes >> 20;  ///< --max-file-size, MiB
   std::int64_t max_face_corners = Limits{}.max_face_corners;  ///< --max-face-corners
+  std::int64_t max_attributes = Limits{}.max_attributes;      ///< --max-attributes
 };
 
 /// The limits the options set.

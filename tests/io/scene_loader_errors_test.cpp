@@ -146,6 +146,28 @@ TEST(SceneLoaderErrors, ANulByteIsRefusedWithItsLine) {
                                 "): a scene file is text, and nothing after it would be read");
 }
 
+TEST(SceneLoaderErrors, AnElementOfTooManyAttributesIsRefusedBeforeParsing) {
+  std::string many = "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"";
+  for (int k = 0; k < 300000; ++k) many += " a" + std::to_string(k) + "='='";
+  const std::string text = std::string(kHeader) + "<!-- a=1 b=2 -->\n" + many + "/>\n</scene>\n";
+  // Refused at once (tinyxml2 alone takes quadratic time: 60,000 attributes took 16 s).
+  EXPECT_EQ(error_of(text),
+            "bad.xml:4: error: an element with more than the limit of 100 attributes (raise it "
+            "with --max-attributes N)");
+  // The limit counts '=' outside quotes within a tag, and can be raised.
+  Limits limits;
+  limits.max_attributes = 6;
+  InputFiles files(limits);
+  const std::string six = std::string(kHeader) +
+                          "<description text=\"a=1, b=2, c=3, d=4, e=5, f=6, g=7\"/>\n"
+                          "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
+                          "</scene>\n";
+  EXPECT_EQ(load_scene_text(six, "six.xml", files).model.num_particles(), 1);
+  limits.max_attributes = 5;
+  InputFiles fewer(limits);
+  EXPECT_THROW(load_scene_text(six, "six.xml", fewer), SceneError);
+}
+
 TEST(SceneLoaderErrors, UnknownIntegratorListsEveryTypeOfTheRegistry) {
   const std::string error =
       error_of("<scene>\n<duration time=\"1\"/>\n<integrator type=\"rk4\" dt=\"0.1\"/>\n</scene>");
