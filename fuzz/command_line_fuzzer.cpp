@@ -1,9 +1,11 @@
 // Fuzz target: FOSSSim's command line (app/options.h) up to the point where a run would start:
 // parsing, the checks of picture options, the overrides applied to a scene, the step limit and
-// the check that no output replaces an input. The input is the arguments, separated by NUL
-// bytes. Nothing is run and nothing is written: the target works in a folder of its own that
-// holds the scene's files (scene.xml, cloth.obj, run.bin and pngs/frame_00000.png, which the
-// outputs must spare).
+// the check that no output replaces an input, the check that no two outputs name one file, and
+// the opening of each output file (io/output_file.h: empty names, folders, links, FIFOs), whose
+// temporary file is then discarded. The input is the arguments, separated by NUL bytes. Nothing
+// is run and nothing is kept: the target works in a folder of its own that holds the scene's
+// files (scene.xml, cloth.obj, run.bin and pngs/frame_00000.png, which the outputs must spare),
+// and only names inside it are opened.
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -19,6 +21,7 @@
 
 #include "app/options.h"
 #include "fuzz_support.h"
+#include "io/output_file.h"
 #include "io/scene_loader.h"
 
 namespace {
@@ -79,6 +82,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     apply_overrides(options, scene);
     check_step_count(scene.model, limits_of(options));
     check_outputs_spare_inputs(options, scene);
+    check_outputs_distinct(options);
+    for (const std::string* name : {&options.output, &options.energy_csv, &options.energy_plot,
+                                    &options.movie, &options.residual_file}) {
+      const std::filesystem::path path(*name);
+      bool inside = path.is_relative();
+      for (const auto& part : path) inside = inside && part != "..";
+      if (!inside || name->empty()) continue;
+      try {
+        OutputFile output(*name);
+        output.discard();
+      } catch (const Error&) {
+      }
+    }
   } catch (const Error&) {
   }
   return 0;

@@ -1,9 +1,14 @@
 #include "app/frame_outputs.h"
 
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <optional>
+#include <utility>
 
 #include "core/analysis/energy.h"
 #include "core/error.h"
@@ -57,8 +62,11 @@ class TrajectoryOutput final : public FrameOutput {
     return "the trajectory " + writer_.path() + " (" + std::to_string(frames_) + " frames)";
   }
   std::string abandon() override {
-    return "the " + std::to_string(frames_) + " frames computed so far are in " +
-           writer_.abandon() + " (" + writer_.path() + " was not written)";
+    const std::string kept = writer_.abandon();
+    if (kept.empty()) return writer_.path() + " was not written";
+    if (kept == writer_.path()) return "";  // a device or FIFO: the frames went there
+    return "the " + std::to_string(frames_) + " frames computed so far are in " + kept + " (" +
+           writer_.path() + " was not written)";
   }
 
  private:
@@ -122,66 +130,97 @@ class MovieOutput final : public FrameOutput {
   std::int64_t frames_ = 0;
 };
 
-/// --energy-plot and --energy-csv: the energies of every state, written when the run ends.
-class EnergyOutput final : public FrameOutput {
+/// --energy-csv: one line of energies per state, streamed to the file as the run goes, so that
+/// nothing grows with the number of steps.
+class EnergyCsvOutput final : public FrameOutput {
  public:
-  EnergyOutput(const Scene& scene, std::string plot, std::string csv)
-      : scene_(scene), plot_(std::move(plot)), csv_(std::move(csv)) {}
+  EnergyCsvOutput(const Scene& scene, const std::string& path)
+      : scene_(scene), output_(path), file_(output_.take_stream()) {
+    std::fputs("time,kinetic,potential,total\n", file_);
+  }
+  ~EnergyCsvOutput() override { close(); }
+  void write(Frame& frame) override {
+    const EnergyReport e = compute_energies(scene_.model, frame.state());
+    const EnergySample s{frame.state().time, e.kinetic, e.potential};
+    if (std::fprintf(file_, "%.17g,%.17g,%.17g,%.17g\n", s.time, s.kinetic, s.potential,
+                     s.total()) < 0) {
+      fail(errno);
+    }
+  }
+  void commit() override {
+    std::FILE* file = std::exchange(file_, nullptr);
+    errno = 0;
+    const bool flushed = std::fflush(file) == 0 && !std::ferror(file) &&
+                         (output_.in_place() || ::fsync(::fileno(file)) == 0);
+    const int error = errno != 0 ? errno : EIO;
+    if (std::fclose(file) != 0 || !flushed) fail(flushed ? errno : error);
+    output_.commit();
+  }
+  std::string describe() const override { return "the energies " + output_.path(); }
+  std::string abandon() override {
+    close();
+    const std::string kept = output_.keep_unfinished();
+    return kept.empty() || output_.in_place() ? "" : "the energies so far are in " + kept;
+  }
+
+ private:
+  void close() {
+    if (file_ != nullptr) std::fclose(std::exchange(file_, nullptr));
+  }
+  [[noreturn]] void fail(int error) {
+    close();
+    output_.discard();
+    throw Error(ErrorKind::kCannotWrite,
+                "cannot write " + output_.path() + ": " + std::strerror(error));
+  }
+
+  const Scene& scene_;
+  OutputFile output_;
+  std::FILE* file_;
+};
+
+/// --energy-plot: the energies of every state, drawn when the run ends.
+class EnergyPlotOutput final : public FrameOutput {
+ public:
+  EnergyPlotOutput(const Scene& scene, std::string plot) : scene_(scene), plot_(std::move(plot)) {}
   void write(Frame& frame) override {
     const EnergyReport e = compute_energies(scene_.model, frame.state());
     samples_.push_back({frame.state().time, e.kinetic, e.potential});
   }
-  void commit() override { write_files(""); }
-  std::string describe() const override {
-    std::string out;
-    if (!plot_.empty()) out = "the energy plot " + plot_;
-    if (!csv_.empty()) out += (out.empty() ? "" : " and ") + std::string("the energies ") + csv_;
-    return out;
+  void commit() override {
+    committing_ = true;
+    write_plot(plot_);
   }
+  std::string describe() const override { return "the energy plot " + plot_; }
   std::string abandon() override {
+    // Nothing beside a device or FIFO, and nothing more after a plot that failed to be written.
+    if (committing_ || output_is_in_place(plot_)) return "";
     try {
-      write_files(".incomplete");
+      write_plot(plot_ + ".incomplete");
     } catch (const Error&) {
       return "";
     }
-    return "the energies so far are in " + join_names(".incomplete");
+    return "the energies so far are in " + plot_ + ".incomplete";
   }
 
  private:
-  void write_files(const std::string& suffix) {
-    if (!plot_.empty()) {
-      EnergyPlotStyle style;
-      style.title = std::filesystem::path(scene_.source).filename().string() + "  -  " +
-                    std::string(scene_.model.integrator.method->name) +
-                    ", dt = " + format_dt(scene_.model.integrator.dt);
-      write_energy_plot(samples_, plot_ + suffix, style);
-    }
-    if (!csv_.empty()) write_csv(csv_ + suffix);
-  }
-  std::string join_names(const std::string& suffix) const {
-    if (plot_.empty()) return csv_ + suffix;
-    return csv_.empty() ? plot_ + suffix : plot_ + suffix + " and " + csv_ + suffix;
+  void write_plot(const std::string& path) {
+    EnergyPlotStyle style;
+    style.title = std::filesystem::path(scene_.source).filename().string() + "  -  " +
+                  std::string(scene_.model.integrator.method->name) +
+                  ", dt = " + format_dt(scene_.model.integrator.dt);
+    write_energy_plot(samples_, path, style);
   }
   static std::string format_dt(double dt) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%g", dt);
     return buffer;
   }
-  void write_csv(const std::string& path) const {
-    write_output_file(path, [this](std::ostream& out) {
-      out << "time,kinetic,potential,total\n";
-      char line[128];
-      for (const EnergySample& s : samples_) {
-        std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g\n", s.time, s.kinetic,
-                      s.potential, s.total());
-        out << line;
-      }
-    });
-  }
 
   const Scene& scene_;
-  std::string plot_, csv_;
+  std::string plot_;
   std::vector<EnergySample> samples_;
+  bool committing_ = false;
 };
 
 void make_directory(const std::string& directory) {
@@ -220,9 +259,11 @@ FrameOutputs FrameOutputs::open(const Scene& scene, const Options& options) {
         std::make_unique<MovieOutput>(MovieWriter::open(options.movie, movie_settings(options)),
                                       movie_stride(options, scene.model.integrator.dt)));
   }
-  if (!options.energy_plot.empty() || !options.energy_csv.empty()) {
-    outputs.outputs_.push_back(
-        std::make_unique<EnergyOutput>(scene, options.energy_plot, options.energy_csv));
+  if (!options.energy_plot.empty()) {
+    outputs.outputs_.push_back(std::make_unique<EnergyPlotOutput>(scene, options.energy_plot));
+  }
+  if (!options.energy_csv.empty()) {
+    outputs.outputs_.push_back(std::make_unique<EnergyCsvOutput>(scene, options.energy_csv));
   }
   return outputs;
 }

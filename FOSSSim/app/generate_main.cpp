@@ -3,13 +3,16 @@
 // benchmarks need no outside data. Exit status: 0 written, 2 bad command line, 4 I/O error.
 
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <vector>
 
 #include "cli/exit_codes.h"
 #include "cli/parse_command_line.h"
 #include "core/limits.h"
 #include "core/text.h"
+#include "io/file_identity.h"
 #include "io/mesh_writer.h"
 #include "io/output_file.h"
 #include "mesh/generators.h"
@@ -31,14 +34,37 @@ struct GenerateOptions {
   std::int64_t max_vertices = Limits{}.max_particles;
 };
 
+/// The largest size (metres) and stiffness FOSSSim-generate writes: far beyond any scene, and
+/// small enough that every coordinate and spring length it leads to stays finite.
+constexpr double kMaxSize = 1e6;
+constexpr double kMaxStiffness = 1e12;
+
+/// `text` as a JSON string, quotes and escapes included.
+std::string json_string(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(c));
+      out += escaped;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
 /// Writes {"obj": <mesh file relative to the JSON>, "k": k, "b": [pins, 1-based]}.
 void write_json_scene(const std::string& path, const std::string& mesh_path, double k,
                       const std::vector<int>& pinned) {
   const auto relative = std::filesystem::path(mesh_path).lexically_relative(
       std::filesystem::absolute(path).parent_path());
   write_output_file(path, [&](std::ostream& out) {
-    out << "{\n  \"obj\": \"" << relative.generic_string() << "\",\n  \"k\": " << to_text(k)
-        << ",\n  \"b\": [";
+    out << "{\n  \"obj\": " << json_string(relative.generic_string())
+        << ",\n  \"k\": " << to_text(k) << ",\n  \"b\": [";
     for (std::size_t p = 0; p < pinned.size(); ++p) out << (p ? ", " : "") << pinned[p] + 1;
     out << "]\n}\n";
   });
@@ -94,7 +120,48 @@ int main(int argc, char** argv) {
   auto* ball = app.add_subcommand("tetball", "a ball of tetrahedralized cubes");
   ball->add_option("--cells", o.cells, "Cubes along the diameter")->capture_default_str();
   ball->add_option("--radius", o.radius)->capture_default_str();
+  // Every number decimal and finite, as FOSSSim reads them; no empty file names.
+  for (CLI::App* command : std::vector<CLI::App*>{&app, cloth, chain, net, skirt, box, ball}) {
+    for (CLI::Option* option : command->get_options()) {
+      const std::string name = option->get_name();
+      if (option->get_type_size_max() == 0 || name == "--help") continue;  // a flag
+      if (name == "--output" || name == "--json" || name == "--pins" || name == "--plane") {
+        option->check(nonempty_name());
+      } else {
+        option->check(decimal_number());
+      }
+    }
+  }
   if (auto status = parse_command_line(app, argc, argv)) return *status;
+  if (!(o.k >= 0.0 && o.k <= kMaxStiffness)) {
+    std::cerr << "FOSSSim-generate: error: --k must be between 0 and " << to_text(kMaxStiffness)
+              << " N/m, found " << to_text(o.k) << "\n";
+    return kExitBadInput;
+  }
+  for (const double size : {o.width, o.height, o.depth, o.length, o.top_radius, o.bottom_radius,
+                            o.sx, o.sy, o.sz, o.radius}) {
+    if (size > kMaxSize || size < -kMaxSize) {
+      std::cerr << "FOSSSim-generate: error: sizes must be at most " << to_text(kMaxSize)
+                << " m, found " << to_text(size) << "\n";
+      return kExitBadInput;
+    }
+  }
+  if (!o.json.empty()) {
+    const auto same_name = std::filesystem::absolute(o.json).lexically_normal() ==
+                           std::filesystem::absolute(o.output).lexically_normal();
+    const auto json_file = file_identity(o.json);
+    if (same_name || (json_file && json_file == file_identity(o.output))) {
+      std::cerr << "FOSSSim-generate: error: --json " << o.json << " and -o " << o.output
+                << " name the same file: one would replace the other\n";
+      return kExitBadInput;
+    }
+    // FOSSSim reads a scene as JSON by its extension; another name would be read as XML.
+    if (std::filesystem::path(o.json).extension() != ".json") {
+      std::cerr << "FOSSSim-generate: error: --json " << o.json
+                << " must end in .json (FOSSSim tells scene formats by their extension)\n";
+      return kExitBadInput;
+    }
+  }
 
   const auto positive = [](double x) { return x > 0.0; };
   const std::int64_t m = o.max_vertices;
@@ -133,6 +200,13 @@ int main(int argc, char** argv) {
     std::cerr << "FOSSSim-generate: error: counts must be at least 2 (cubes, links: 1; skirt "
                  "segments: 3) and sizes positive\n";
     return kExitBadInput;
+  }
+  for (const auto& vertex : generated.mesh.vertices) {
+    if (!vertex.allFinite()) {  // cannot happen within the limits above; never written anyway
+      std::cerr << "FOSSSim-generate: error: the sizes give vertices beyond the range of a "
+                   "double\n";
+      return kExitBadInput;
+    }
   }
   const bool tets = !generated.mesh.tets.empty();
   const std::string extension = std::filesystem::path(o.output).extension().string();

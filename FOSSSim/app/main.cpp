@@ -34,6 +34,7 @@ int run(Options& options) {
   try {
     apply_overrides(options, scene);
     if (!options.check_derivatives) check_step_count(scene.model, limits);
+    check_outputs_distinct(options);
     check_outputs_spare_inputs(options, scene);
   } catch (const Error&) {
     for (const std::string& warning : scene.warnings) std::cerr << warning << "\n";

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "cli/parse_command_line.h"
 #include "core/error.h"
 #include "core/integrators/integrator_registry.h"
 #include "core/text.h"
@@ -92,6 +93,17 @@ void add_limit_options(CLI::App& app, Options& options) {
       ->type_name("MIB")
       ->capture_default_str()
       ->group(group);
+  app.add_option("--max-attributes", options.max_attributes,
+                 "Refuse an XML element of more attributes than this")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 20))
+      ->capture_default_str()
+      ->group(group);
+  app.add_option("--max-face-corners", options.max_face_corners,
+                 "Refuse an OBJ face of more corners than this (a face of n corners makes\n"
+                 "n (n - 1) / 2 springs)")
+      ->check(CLI::Range(std::int64_t{3}, std::int64_t{1} << 16))
+      ->capture_default_str()
+      ->group(group);
 }
 
 /// Throws Error (kBadInput) with a message.
@@ -120,9 +132,9 @@ void parse_view(const std::string& text, OrbitViewSettings& view) {
     const std::size_t comma = text.find(',', start);
     const std::string item =
         text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    char* end = nullptr;
-    const double value = std::strtod(item.c_str(), &end);
-    numbers = numbers && !item.empty() && *end == '\0' && std::isfinite(value);
+    const bool number = is_decimal_number(item);
+    const double value = number ? std::strtod(item.c_str(), nullptr) : 0.0;
+    numbers = numbers && number;
     values.push_back(value);
     if (comma == std::string::npos) break;
     start = comma + 1;
@@ -162,12 +174,10 @@ class CommandLineOptions final : public OptionSource {
   bool has(std::string_view name) override { return find(name) != nullptr; }
   double number(std::string_view name) override {
     const std::string& text = *find(name);
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || !std::isfinite(value)) {
-      fail(name, "must be a finite number, found '" + text + "'");
+    if (!is_decimal_number(text)) {
+      fail(name, "must be a finite decimal number, found '" + text + "'");
     }
-    return value;
+    return std::strtod(text.c_str(), nullptr);
   }
   std::string text(std::string_view name) override { return *find(name); }
   [[noreturn]] void fail(std::string_view name, const std::string& problem) override {
@@ -257,6 +267,8 @@ Limits limits_of(const Options& options) {
   limits.max_steps = options.max_steps;
   limits.max_particles = options.max_particles;
   limits.max_file_bytes = options.max_file_mib << 20;
+  limits.max_face_corners = options.max_face_corners;
+  limits.max_attributes = options.max_attributes;
   return limits;
 }
 
@@ -343,6 +355,17 @@ void add_options(CLI::App& app, Options& options) {
       ->default_str("10");
   add_picture_options(app, options);
   add_limit_options(app, options);
+  // Numbers read as the scene readers read them (no "0x10"), and no empty file names.
+  for (const char* name :
+       {"-d", "-p", "--duration", "--dt", "--newton-max-iterations", "--newton-tolerance", "-g",
+        "--movie-stride", "--fps", "--window-screenshot-step", "--max-steps", "--max-particles",
+        "--max-file-size", "--max-face-corners", "--max-attributes"}) {
+    app.get_option(name)->check(decimal_number());
+  }
+  for (const char* name : {"-s", "-o", "-i", "--residual-file", "--png-dir", "-m", "--movie",
+                           "--energy-plot", "--energy-csv", "--window-screenshot"}) {
+    app.get_option(name)->check(nonempty_name());
+  }
   app.set_version_flag("--version", "FOSSSim 0.1.0");
   app.footer(integrator_help() +
              "\nExit status: 0 success or passed; 1 grading failed; 2 bad command line, scene or\n"

@@ -52,6 +52,8 @@ struct Options {
   std::int64_t max_steps = Limits{}.max_steps;                ///< --max-steps
   std::int64_t max_particles = Limits{}.max_particles;        ///< --max-particles
   std::int64_t max_file_mib = Limits{}.max_file_bytes >> 20;  ///< --max-file-size, MiB
+  std::int64_t max_face_corners = Limits{}.max_face_corners;  ///< --max-face-corners
+  std::int64_t max_attributes = Limits{}.max_attributes;      ///< --max-attributes
 };
 
 /// The limits the options set.
@@ -72,6 +74,12 @@ MovieSettings movie_settings(const Options& options);
 /// (scene.files) or the trajectory to grade, compared by file identity (io/file_identity.h),
 /// under every name an output is written to on the way (app/protected_inputs.cpp).
 void check_outputs_spare_inputs(const Options& options, const Scene& scene);
+
+/// Refuses, with an Error (kBadInput) naming both options, two outputs of the run that name
+/// the same file (-o X --energy-csv X, a movie and -o through a link, a file output and a
+/// picture folder), compared by absolute path with links resolved and by file identity.
+/// Character devices (/dev/null) may be named more than once.
+void check_outputs_distinct(const Options& options);
 
 /// Applies the command line's overrides to a loaded scene. Throws Error (kBadInput) when one is
 /// invalid; an integrator option the scene's integrator does not have becomes a warning in

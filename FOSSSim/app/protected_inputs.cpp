@@ -93,7 +93,59 @@ void check_folder(const std::string& option, const std::string& folder, std::str
   }
 }
 
+/// The names under which `path` is compared with the other outputs: as written, and made
+/// absolute with every link of its existing part resolved.
+std::vector<std::string> comparable_names(const std::string& path) {
+  std::vector<std::string> names = {fs::absolute(path).lexically_normal().string()};
+  std::error_code error;
+  const fs::path canonical = fs::weakly_canonical(path, error);
+  if (!error) names.push_back(canonical.lexically_normal().string());
+  return names;
+}
+
+bool is_character_device(const std::string& path) {
+  std::error_code error;
+  return fs::is_character_file(fs::status(path, error));
+}
+
 }  // namespace
+
+void check_outputs_distinct(const Options& options) {
+  struct Output {
+    std::string option, path;
+  };
+  std::vector<Output> outputs;
+  const auto add = [&outputs](const char* option, const std::string& path) {
+    if (!path.empty()) outputs.push_back({option, path});
+  };
+  add("-o", options.output);
+  if (!options.input.empty()) add("--residual-file", options.residual_file);
+  add("--energy-plot", options.energy_plot);
+  add("--energy-csv", options.energy_csv);
+  add("--movie", options.movie);
+  if (options.display == 1) add("--window-screenshot", options.window_screenshot);
+  const std::size_t files = outputs.size();
+  if (options.png == 1) add("--png-dir", options.png_directory);
+  add("-m", options.svg_directory);
+  for (std::size_t a = 0; a < files; ++a) {
+    // Writing twice to /dev/null (or a terminal) loses nothing.
+    if (is_character_device(outputs[a].path)) continue;
+    const std::vector<std::string> names_a = comparable_names(outputs[a].path);
+    const auto identity_a = file_identity(outputs[a].path);
+    for (std::size_t b = a + 1; b < outputs.size(); ++b) {
+      const std::vector<std::string> names_b = comparable_names(outputs[b].path);
+      bool same = identity_a && identity_a == file_identity(outputs[b].path);
+      for (const std::string& x : names_a)
+        for (const std::string& y : names_b) same = same || x == y;
+      if (!same) continue;
+      throw Error(ErrorKind::kBadInput,
+                  outputs[a].option + " " + outputs[a].path + " and " + outputs[b].option + " " +
+                      outputs[b].path +
+                      " name the same file: one output would replace the other; give each "
+                      "output its own name");
+    }
+  }
+}
 
 void check_outputs_spare_inputs(const Options& options, const Scene& scene) {
   const std::vector<Input> inputs = inputs_of(options, scene);

@@ -1,3 +1,4 @@
+#include <cstring>
 #include <iostream>
 #include <optional>
 
@@ -77,7 +78,8 @@ int run_headless(const Scene& scene, const Options& options) {
       while (!simulation.finished()) {
         if (interrupt_requested()) {
           progress.finish();
-          std::cerr << "FOSSSim: interrupted at step " << simulation.state().step
+          std::cerr << "FOSSSim: interrupted by signal " << interrupt_signal() << " ("
+                    << strsignal(interrupt_signal()) << ") at step " << simulation.state().step
                     << kept_note(outputs) << "\n";
           return kExitInterrupted;
         }

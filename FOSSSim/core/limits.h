@@ -24,6 +24,12 @@ struct Limits {
   std::int64_t max_particles = 1'000'000;
   /// Bytes of one scene or mesh file (--max-file-size, given in MiB).
   std::int64_t max_file_bytes = std::int64_t{256} << 20;
+  /// Corners of one OBJ face: a face of n corners becomes n (n - 1) / 2 springs
+  /// (--max-face-corners).
+  std::int64_t max_face_corners = 64;
+  /// Attributes of one XML element: tinyxml2 checks each new attribute against the earlier
+  /// ones, so an element of n attributes costs n² (--max-attributes).
+  std::int64_t max_attributes = 100;
 };
 
 /// The step count ceil(duration / dt) as a double, without converting it to an integer (it may

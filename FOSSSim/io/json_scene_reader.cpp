@@ -131,8 +131,18 @@ class JsonSceneParser {
     if (!root.contains("obj")) fail("the required key \"obj\" (the OBJ mesh file) is missing");
     if (!root.at("obj").is_string())
       fail("\"obj\" must be a file name, found " + root.at("obj").dump());
-    Mesh mesh = read_referenced_mesh(files_, name_, root.at("obj").get<std::string>(),
-                                     read_obj_text, "the \"obj\" of " + name_);
+    const std::string obj = root.at("obj").get<std::string>();
+    // A "\u0000" in the name would cut it short where the system reads it.
+    if (obj.find('\0') != std::string::npos)
+      fail("\"obj\" must be a file name, found one holding a NUL character: " +
+           root.at("obj").dump());
+    const std::int64_t corners = files_.limits().max_face_corners;
+    Mesh mesh = read_referenced_mesh(
+        files_, name_, obj,
+        [corners](std::string_view text, const std::string& name) {
+          return read_obj_text(text, name, corners);
+        },
+        "the \"obj\" of " + name_);
     if (mesh.num_vertices() > files_.limits().max_particles) {
       fail("the \"obj\" mesh has " + std::to_string(mesh.num_vertices()) + " vertices, " +
            over_limit(files_.limits().max_particles, "particles", "--max-particles"));

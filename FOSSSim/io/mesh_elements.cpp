@@ -174,7 +174,11 @@ std::vector<std::unique_ptr<Force>> read_mesh_elements(const XMLElement& root, S
     MeshDeclaration mesh;
     mesh.label = kind + " " + std::to_string(index);
     if (kind == "clothmesh") {
-      mesh.mesh = read_mesh_file(r, file, files, read_obj_text);
+      const std::int64_t corners = files.limits().max_face_corners;
+      mesh.mesh =
+          read_mesh_file(r, file, files, [corners](std::string_view text, const std::string& name) {
+            return read_obj_text(text, name, corners);
+          });
     } else if (kind == "tetmesh") {
       mesh.mesh = read_mesh_file(r, file, files, read_medit_text);
     } else {

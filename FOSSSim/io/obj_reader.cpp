@@ -21,7 +21,8 @@ struct PendingElement {
 
 class ObjParser {
  public:
-  explicit ObjParser(const std::string& name) : name_(name) {}
+  ObjParser(const std::string& name, std::int64_t max_face_corners)
+      : name_(name), max_face_corners_(max_face_corners) {}
 
   Mesh parse(std::string_view text) {
     int line = 0;
@@ -82,6 +83,12 @@ class ObjParser {
 
   void read_element(const std::vector<std::string_view>& words, int line, bool polyline) {
     PendingElement element{polyline, {}, line};
+    const auto corners = static_cast<std::int64_t>(words.size() - 1);
+    if (!polyline && corners > max_face_corners_) {
+      fail(line, "a face of " + std::to_string(corners) + " corners (it would make " +
+                     std::to_string(corners * (corners - 1) / 2) + " springs), " +
+                     over_limit(max_face_corners_, "corners", "--max-face-corners"));
+    }
     for (std::size_t k = 1; k < words.size(); ++k)
       element.corners.push_back(read_corner(words[k], line));
     const std::size_t needed = 2;
@@ -100,6 +107,7 @@ class ObjParser {
     if (!parse_int(index_text, index))
       fail(line, "corner " + quote(word) + " does not start with an integer vertex index");
     if (index == 0) fail(line, "corner " + quote(word) + ": OBJ vertex indices start at 1");
+    check_corner_references(word, line);
     if (index < 0) {
       const int resolved = mesh_.num_vertices() + index;
       if (resolved < 0) {
@@ -109,6 +117,26 @@ class ObjParser {
       return resolved;
     }
     return index - 1;
+  }
+
+  /// Refuses a corner that is not v, v/vt, v//vn or v/vt/vn with integer vt and vn.
+  void check_corner_references(std::string_view word, int line) const {
+    const std::size_t first = word.find('/');
+    if (first == std::string_view::npos) return;
+    const std::string_view rest = word.substr(first + 1);
+    const std::size_t second = rest.find('/');
+    const std::string_view texture = rest.substr(0, second);
+    const std::string_view normal =
+        second == std::string_view::npos ? std::string_view() : rest.substr(second + 1);
+    int index = 0;
+    const bool texture_ok = texture.empty() ? second != std::string_view::npos
+                                            : parse_int(texture, index) && index != 0;
+    const bool normal_ok = second == std::string_view::npos ||
+                           (!normal.empty() && parse_int(normal, index) && index != 0);
+    if (!texture_ok || !normal_ok) {
+      fail(line, "corner " + quote(word) +
+                     " is not v, v/vt, v//vn or v/vt/vn with non-zero integer indices");
+    }
   }
 
   void add_element(const PendingElement& element) {
@@ -144,16 +172,21 @@ class ObjParser {
   }
 
   const std::string& name_;
+  std::int64_t max_face_corners_;
   Mesh mesh_;
   std::vector<PendingElement> pending_;
 };
 
 }  // namespace
 
-Mesh read_obj_text(std::string_view text, const std::string& name) {
-  return ObjParser(name).parse(text);
+Mesh read_obj_text(std::string_view text, const std::string& name, std::int64_t max_face_corners) {
+  return ObjParser(name, max_face_corners).parse(text);
 }
 
-Mesh read_obj_file(const std::string& path) { return parse_text_file(path, read_obj_text); }
+Mesh read_obj_file(const std::string& path) {
+  return parse_text_file(path, [](std::string_view text, const std::string& name) {
+    return read_obj_text(text, name);
+  });
+}
 
 }  // namespace fosssim

@@ -4,6 +4,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/limits.h"
 #include "io/scene_error.h"
 #include "mesh/mesh.h"
 
@@ -14,7 +15,8 @@ namespace fosssim {
 ///                      "v x y z r g b" (vertex colours) is accepted and the colour ignored
 ///   f a b c ...        a face of 3 or more corners; "f a b" (2 corners) is one spring
 ///   l a b c ...        a polyline: springs between consecutive vertices
-/// Corners may be written v, v/vt, v//vn or v/vt/vn; indices start at 1, and a negative index
+/// Corners may be written v, v/vt, v//vn or v/vt/vn, each index a non-zero integer (anything
+/// else, such as "1/", "1/x" or "1/2/3/4", is an error); indices start at 1, and a negative index
 /// counts back from the last vertex read so far. vt, vn, vp, o, g, s, usemtl, mtllib and
 /// comments (#) are ignored. Anything else is an error naming file, line and problem: an
 /// unknown statement, a malformed or non-finite number, an index of 0 or past the last
@@ -22,7 +24,10 @@ namespace fosssim {
 /// (thrown as SceneError).
 Mesh read_obj_file(const std::string& path);
 
-/// Reads OBJ text; `name` stands for the file in messages.
-Mesh read_obj_text(std::string_view text, const std::string& name);
+/// Reads OBJ text; `name` stands for the file in messages. A face of more than
+/// `max_face_corners` corners is refused (it would become n (n - 1) / 2 springs; the limit is
+/// Limits::max_face_corners, --max-face-corners).
+Mesh read_obj_text(std::string_view text, const std::string& name,
+                   std::int64_t max_face_corners = Limits{}.max_face_corners);
 
 }  // namespace fosssim

@@ -146,6 +146,15 @@ class SceneParser {
         throw SceneError(file_, e->GetLineNum(), std::string("<") + e->Name() + ">",
                          "unknown element");
       }
+      // Only the mesh elements hold elements (<pin>, read with them); anything inside another
+      // element would otherwise be dropped without a word.
+      const XMLElement* child = e->FirstChildElement();
+      if (child != nullptr && !is_mesh_element(e->Name())) {
+        throw SceneError(file_, child->GetLineNum(), std::string("<") + child->Name() + ">",
+                         std::string("inside <") + e->Name() +
+                             ">, which holds no elements: close <" + e->Name() +
+                             " .../> before it");
+      }
       elements_[e->Name()].push_back(e);
     }
   }
@@ -349,12 +358,58 @@ class SceneParser {
   std::vector<std::unique_ptr<Force>> mesh_forces_;
 };
 
+/// Refuses, before tinyxml2 reads it, an element of more than `limit` attributes (counted as the
+/// '=' signs outside quotes within its tag), in one linear pass: tinyxml2's own check for
+/// repeated attributes takes quadratic time (60,000 attributes took 16 s).
+void check_attribute_counts(std::string_view text, const std::string& name, std::int64_t limit) {
+  int line = 1, tag_line = 1;
+  bool in_tag = false;
+  char quote_char = 0;
+  std::int64_t count = 0;
+  for (std::size_t k = 0; k < text.size(); ++k) {
+    const char c = text[k];
+    if (c == '\n') ++line;
+    if (quote_char != 0) {
+      if (c == quote_char) quote_char = 0;
+    } else if (in_tag) {
+      if (c == '"' || c == '\'') quote_char = c;
+      if (c == '>') in_tag = false;
+      if (c == '=' && ++count > limit) {
+        throw SceneError(name, tag_line, "",
+                         "an element with " + over_limit(limit, "attributes", "--max-attributes"));
+      }
+    } else if (c == '<') {
+      if (text.substr(k, 4) == "<!--") {  // a comment: skip it whole
+        const std::size_t end = text.find("-->", k + 4);
+        const std::size_t stop = end == std::string_view::npos ? text.size() : end + 3;
+        line +=
+            static_cast<int>(std::count(text.begin() + static_cast<std::ptrdiff_t>(k),
+                                        text.begin() + static_cast<std::ptrdiff_t>(stop), '\n'));
+        k = stop - 1;
+        continue;
+      }
+      in_tag = true;
+      tag_line = line;
+      count = 0;
+    }
+  }
+}
+
 }  // namespace
 
 Scene load_scene_text(std::string_view text, const std::string& name, InputFiles& files) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
     throw SceneError(name, 0, "", "the file is empty (expected a <scene> element)");
   }
+  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+    // tinyxml2 would stop reading there and ignore the rest of the file.
+    const auto line =
+        1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
+    throw SceneError(name, static_cast<int>(line), "",
+                     "a NUL byte (at byte " + std::to_string(nul) +
+                         "): a scene file is text, and nothing after it would be read");
+  }
+  check_attribute_counts(text, name, files.limits().max_attributes);
   std::vector<std::string> warnings;
   const std::string fixed = separate_run_together_attributes(text, name, warnings);
   tinyxml2::XMLDocument doc;

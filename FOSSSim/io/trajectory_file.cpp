@@ -108,11 +108,7 @@ TrajectoryWriter::~TrajectoryWriter() {
 
 TrajectoryWriter TrajectoryWriter::open(const std::string& path) {
   OutputFile output(path);
-  std::FILE* file = std::fopen(output.write_path().c_str(), "wb");
-  if (file == nullptr) {
-    throw Error(ErrorKind::kCannotWrite,
-                "cannot create " + output.write_path() + ": " + system_reason());
-  }
+  std::FILE* file = output.take_stream();
   std::setvbuf(file, nullptr, _IOFBF, 1 << 20);
   return TrajectoryWriter(path, std::move(output), file);
 }
@@ -126,8 +122,7 @@ void TrajectoryWriter::write_doubles(const double* data, std::size_t count) {
     data = swapped.data();
   }
   if (std::fwrite(data, sizeof(double), count, file_) != count) {
-    throw Error(ErrorKind::kCannotWrite,
-                "cannot write " + output_.write_path() + ": " + system_reason());
+    throw Error(ErrorKind::kCannotWrite, "cannot write " + path_ + ": " + system_reason());
   }
 }
 
@@ -142,8 +137,7 @@ void TrajectoryWriter::write_int(std::int32_t value) {
                                   static_cast<unsigned char>(u >> 16),
                                   static_cast<unsigned char>(u >> 24)};
   if (std::fwrite(bytes, 1, 4, file_) != 4) {
-    throw Error(ErrorKind::kCannotWrite,
-                "cannot write " + output_.write_path() + ": " + system_reason());
+    throw Error(ErrorKind::kCannotWrite, "cannot write " + path_ + ": " + system_reason());
   }
 }
 
@@ -178,7 +172,7 @@ void TrajectoryWriter::close_file() {
 }
 
 void TrajectoryWriter::commit() {
-  const std::string& partial = output_.write_path();
+  const std::string& partial = path_;
   // fsync makes the renamed file durable; devices such as /dev/null do not support it.
   if (std::fflush(file_) != 0 || (!output_.in_place() && ::fsync(fileno(file_)) != 0)) {
     throw Error(ErrorKind::kCannotWrite, "cannot write " + partial + ": " + system_reason());
@@ -193,10 +187,16 @@ void TrajectoryWriter::commit() {
 }
 
 std::string TrajectoryWriter::abandon() {
+  // A run that stopped before its first frame (another output could not be opened) keeps
+  // nothing: an empty OUT.incomplete would only say that.
+  const bool empty = file_ != nullptr && std::ftell(file_) == 0;
   close_file();
   finished_ = true;
-  const std::string kept = output_.keep_unfinished(".incomplete");
-  return kept.empty() ? output_.write_path() : kept;
+  if (empty && !output_.in_place()) {
+    output_.discard();
+    return "";
+  }
+  return output_.keep_unfinished(".incomplete");
 }
 
 // ---- TrajectoryReader -------------------------------------------------------------------------

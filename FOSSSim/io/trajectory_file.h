@@ -48,14 +48,15 @@ struct TrajectoryRecord {
 inline std::int64_t collision_record_bytes(int dim) { return 12 + 8 * (dim + 1); }
 
 /// Writes a trajectory so that an interrupted or failed run never leaves a file that looks
-/// complete: frames go to "<path>.partial", which becomes <path> only on commit(). A writer
+/// complete: frames go to a new temporary file beside it ("<path>.<random>.partial",
+/// io/output_file.h), which becomes <path> only on commit(). A writer
 /// destroyed without commit() keeps its frames as "<path>.incomplete" and leaves any earlier
 /// file at <path> untouched. A path that is a device or FIFO (-o /dev/null) is written in
 /// place, never renamed over (io/output_file.h).
 class TrajectoryWriter {
  public:
-  /// Creates "<path>.partial". Throws Error (kCannotWrite) naming the path and the system's
-  /// reason.
+  /// Creates the temporary file. Throws Error (kCannotWrite) naming the path and the system's
+  /// reason, or (kBadInput) for a name that cannot be an output (io/output_file.h).
   static TrajectoryWriter open(const std::string& path);
 
   TrajectoryWriter(TrajectoryWriter&&) noexcept;
@@ -71,7 +72,8 @@ class TrajectoryWriter {
                     const std::vector<Polynomial>& polynomials);
   /// Flushes to disk and renames the file to its final name. Throws on an I/O error.
   void commit();
-  /// Closes the file and renames it to "<path>.incomplete"; returns that name.
+  /// Closes the file and renames it to "<path>.incomplete"; returns that name ("" when nothing
+  /// was written or nothing could be kept; the path itself for a device or FIFO).
   std::string abandon();
 
   const std::string& path() const { return path_; }

@@ -4,6 +4,8 @@
 #include <cairo.h>
 
 #include <algorithm>
+#include <array>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -52,35 +54,217 @@ void paint_text(cairo_t* cr, const Drawing& drawing) {
   }
 }
 
-void paint_polyline(cairo_t* cr, const Polyline& line) {
+// ---- Sizes Cairo can draw ---------------------------------------------------------------------
+// Cairo keeps coordinates in 24.8 fixed point and flattens arcs into segments: a radius of 1e300
+// pixels or a point at 1e12 (a tiny viewport, a huge particle radius, --view 0,0,1e-308) makes
+// it overflow or loop for minutes over gigabytes. Shapes are therefore brought within reach
+// first: coordinates beyond kReach pixels from the picture's centre are clipped away (exactly:
+// what is clipped lies far outside the picture), and a circle wider than kMaxRadius is replaced
+// by one of that radius touching the same point nearest the picture (off by less than
+// size² / (2 kMaxRadius), a fraction of a pixel at 8192 pixels). Non-finite shapes are skipped.
+
+constexpr double kReach = 1e6;      // pixels from the picture's centre
+constexpr double kMaxRadius = 1e5;  // pixels, for circles and line widths
+
+/// The picture's centre and half diagonal, in pixels.
+struct Canvas {
+  Point2 centre;
+  double half_diagonal;
+};
+
+Canvas canvas_of(cairo_t* cr) {
+  double x1 = 0, y1 = 0, x2 = 0, y2 = 0;
+  cairo_clip_extents(cr, &x1, &y1, &x2, &y2);
+  return {{0.5 * (x1 + x2), 0.5 * (y1 + y2)}, 0.5 * std::hypot(x2 - x1, y2 - y1)};
+}
+
+bool finite(const Point2& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+bool within_reach(const Point2& p, const Canvas& canvas) {
+  return std::abs(p.x - canvas.centre.x) <= kReach && std::abs(p.y - canvas.centre.y) <= kReach;
+}
+
+/// What to draw of a circle of `radius` around `centre` whose drawing reaches `spread` pixels
+/// beyond it (half a stroke width): nothing, the whole picture (a disc covering it), or a circle
+/// within reach.
+struct FittedCircle {
+  enum { kNothing, kEverything, kCircle } what = kNothing;
+  Point2 centre;
+  double radius = 0.0;
+};
+
+FittedCircle fit_circle(const Point2& centre, double radius, double spread, const Canvas& canvas,
+                        bool filled) {
+  if (!finite(centre) || !std::isfinite(radius) || !std::isfinite(spread)) return {};
+  if (radius <= kMaxRadius && within_reach(centre, canvas)) {
+    return {FittedCircle::kCircle, centre, radius};
+  }
+  const double dx = centre.x - canvas.centre.x, dy = centre.y - canvas.centre.y;
+  const double distance = std::hypot(dx, dy);
+  if (!std::isfinite(distance)) return {};
+  const double outside = distance - radius;  // signed distance of the canvas centre to the rim
+  const double reach = canvas.half_diagonal + spread;
+  if (outside > reach) return {};
+  if (-outside > reach)
+    return filled ? FittedCircle{FittedCircle::kEverything, {}, 0.0} : FittedCircle{};
+  const double ux = distance > 0.0 ? dx / distance : 1.0, uy = distance > 0.0 ? dy / distance : 0.0;
+  const double along = outside + kMaxRadius;
+  return {FittedCircle::kCircle,
+          {canvas.centre.x + ux * along, canvas.centre.y + uy * along},
+          kMaxRadius};
+}
+
+/// The point of segment p-q where coordinate `axis` equals `bound` (p and q on either side).
+/// The other coordinate is interpolated from the clipped one, which stays exact however far
+/// the ends are (a parameter along the segment would lose the picture's pixels in rounding).
+Point2 crossing(const Point2& p, const Point2& q, int axis, double bound) {
+  if (axis == 0) return {bound, p.y + (bound - p.x) * ((q.y - p.y) / (q.x - p.x))};
+  return {p.x + (bound - p.y) * ((q.x - p.x) / (q.y - p.y)), bound};
+}
+
+/// The four sides of the square of half side kReach around the canvas centre: coordinate
+/// `axis` times `side` at most `bound`.
+struct Side {
+  int axis;
+  double side, bound;
+  bool inside(const Point2& p) const { return side * (axis == 0 ? p.x : p.y) <= side * bound; }
+};
+
+std::array<Side, 4> sides_of(const Canvas& canvas) {
+  return {{{0, -1.0, canvas.centre.x - kReach},
+           {0, 1.0, canvas.centre.x + kReach},
+           {1, -1.0, canvas.centre.y - kReach},
+           {1, 1.0, canvas.centre.y + kReach}}};
+}
+
+/// The part of segment a-b within the square of half side kReach around the canvas centre;
+/// false when none of it is.
+bool clip_segment(Point2& a, Point2& b, const Canvas& canvas) {
+  for (const Side& side : sides_of(canvas)) {
+    const bool a_in = side.inside(a), b_in = side.inside(b);
+    if (!a_in && !b_in) return false;
+    if (!a_in) a = crossing(a, b, side.axis, side.bound);
+    if (!b_in) b = crossing(a, b, side.axis, side.bound);
+  }
+  return finite(a) && finite(b);
+}
+
+/// The polygon clipped to the square of half side kReach around the canvas centre
+/// (Sutherland-Hodgman); empty when nothing of it is inside or a corner is not finite.
+std::vector<Point2> clip_polygon(const std::vector<Point2>& corners, const Canvas& canvas) {
+  for (const Point2& p : corners)
+    if (!finite(p)) return {};
+  std::vector<Point2> out = corners;
+  for (const Side& side : sides_of(canvas)) {
+    std::vector<Point2> kept;
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      const Point2& p = out[k];
+      const Point2& q = out[(k + 1) % out.size()];
+      const bool p_in = side.inside(p), q_in = side.inside(q);
+      if (p_in) kept.push_back(p);
+      if (p_in != q_in) kept.push_back(crossing(p, q, side.axis, side.bound));
+    }
+    out = std::move(kept);
+    if (out.empty()) return out;
+  }
+  for (const Point2& p : out)
+    if (!finite(p)) return {};
+  return out;
+}
+
+bool all_within_reach(const std::vector<Point2>& points, const Canvas& canvas) {
+  for (const Point2& p : points)
+    if (!finite(p) || !within_reach(p, canvas)) return false;
+  return true;
+}
+
+/// A polygon's path, clipped when a corner is out of reach; false when nothing is left.
+bool polygon_path(cairo_t* cr, const std::vector<Point2>& corners) {
+  const Canvas canvas = canvas_of(cr);
+  const std::vector<Point2> clipped =
+      all_within_reach(corners, canvas) ? corners : clip_polygon(corners, canvas);
   cairo_new_path(cr);
-  for (const Point2& p : line.points) cairo_line_to(cr, p.x, p.y);
-  cairo_set_line_width(cr, line.width);
+  if (clipped.size() < 3) return false;
+  for (const Point2& p : clipped) cairo_line_to(cr, p.x, p.y);
+  cairo_close_path(cr);
+  return true;
+}
+
+double line_width(double width) {
+  return std::isfinite(width) ? std::clamp(width, 0.0, 2.0 * kMaxRadius) : 0.0;
+}
+
+void paint_polyline(cairo_t* cr, const Polyline& line) {
+  const Canvas canvas = canvas_of(cr);
+  cairo_new_path(cr);
+  if (all_within_reach(line.points, canvas)) {
+    for (const Point2& p : line.points) cairo_line_to(cr, p.x, p.y);
+  } else {
+    for (std::size_t k = 0; k + 1 < line.points.size(); ++k) {
+      Point2 a = line.points[k], b = line.points[k + 1];
+      if (!finite(a) || !finite(b) || !clip_segment(a, b, canvas)) continue;
+      cairo_move_to(cr, a.x, a.y);
+      cairo_line_to(cr, b.x, b.y);
+    }
+  }
+  cairo_set_line_width(cr, line_width(line.width));
   set_color(cr, line.color);
   cairo_stroke(cr);
 }
 
+void paint_circle(cairo_t* cr, const Point2& centre, double radius, double stroke,
+                  const Color& color) {
+  const bool filled = stroke <= 0.0;
+  const FittedCircle circle =
+      fit_circle(centre, radius, filled ? 0.0 : 0.5 * stroke, canvas_of(cr), filled);
+  if (circle.what == FittedCircle::kNothing) return;
+  set_color(cr, color);
+  if (circle.what == FittedCircle::kEverything) {
+    cairo_paint(cr);
+    return;
+  }
+  cairo_new_path(cr);
+  cairo_arc(cr, circle.centre.x, circle.centre.y, circle.radius, 0.0, 2.0 * std::numbers::pi);
+  if (filled) {
+    cairo_fill(cr);
+  } else {
+    cairo_set_line_width(cr, line_width(stroke));
+    cairo_stroke(cr);
+  }
+}
+
 void paint_shape(cairo_t* cr, const Capsule& edge) {
-  cairo_move_to(cr, edge.a.x, edge.a.y);
-  cairo_line_to(cr, edge.b.x, edge.b.y);
-  cairo_set_line_width(cr, 2.0 * edge.radius);
+  const Canvas canvas = canvas_of(cr);
+  Point2 a = edge.a, b = edge.b;
+  if (!finite(a) || !finite(b) || !std::isfinite(edge.radius)) return;
+  if (edge.radius > kMaxRadius) {
+    // A very wide edge: near the picture its rim is that of the disc around the segment's point
+    // nearest the picture's centre.
+    const double dx = b.x - a.x, dy = b.y - a.y, length2 = dx * dx + dy * dy;
+    double t = length2 > 0.0
+                   ? ((canvas.centre.x - a.x) * dx + (canvas.centre.y - a.y) * dy) / length2
+                   : 0.0;
+    t = std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
+    paint_circle(cr, {a.x + t * dx, a.y + t * dy}, edge.radius, 0.0, edge.color);
+    return;
+  }
+  if ((!within_reach(a, canvas) || !within_reach(b, canvas)) && !clip_segment(a, b, canvas)) {
+    return;
+  }
+  cairo_move_to(cr, a.x, a.y);
+  cairo_line_to(cr, b.x, b.y);
+  cairo_set_line_width(cr, line_width(2.0 * edge.radius));
   set_color(cr, edge.color);
   cairo_stroke(cr);
 }
 
 void paint_shape(cairo_t* cr, const Disc& disc) {
-  cairo_new_path(cr);
-  cairo_arc(cr, disc.center.x, disc.center.y, disc.radius, 0.0, 2.0 * std::numbers::pi);
-  set_color(cr, disc.color);
-  cairo_fill(cr);
+  paint_circle(cr, disc.center, disc.radius, 0.0, disc.color);
 }
 
 void paint_shape(cairo_t* cr, const Ring& ring) {
-  cairo_new_path(cr);
-  cairo_arc(cr, ring.center.x, ring.center.y, ring.radius, 0.0, 2.0 * std::numbers::pi);
-  cairo_set_line_width(cr, ring.width);
-  set_color(cr, ring.color);
-  cairo_stroke(cr);
+  if (!(ring.width > 0.0)) return;
+  paint_circle(cr, ring.center, ring.radius, ring.width, ring.color);
 }
 
 /// Corner `a` of a triangle moved outward so that both its sides move out by kSeamPixels
@@ -102,18 +286,12 @@ Point2 grown_corner(const Point2& a, const Point2& b, const Point2& c) {
 void paint_shape(cairo_t* cr, const Triangle& triangle) {
   const auto& [a, b, c] = triangle.corners;
   const Point2 ga = grown_corner(a, b, c), gb = grown_corner(b, c, a), gc = grown_corner(c, a, b);
-  cairo_move_to(cr, ga.x, ga.y);
-  cairo_line_to(cr, gb.x, gb.y);
-  cairo_line_to(cr, gc.x, gc.y);
-  cairo_close_path(cr);
+  if (!polygon_path(cr, {ga, gb, gc})) return;
   set_color(cr, triangle.color);
   cairo_fill(cr);
   if (triangle.outline_width <= 0.0) return;
-  cairo_move_to(cr, a.x, a.y);
-  cairo_line_to(cr, b.x, b.y);
-  cairo_line_to(cr, c.x, c.y);
-  cairo_close_path(cr);
-  cairo_set_line_width(cr, triangle.outline_width);
+  if (!polygon_path(cr, {a, b, c})) return;
+  cairo_set_line_width(cr, line_width(triangle.outline_width));
   set_color(cr, triangle.outline_color);
   cairo_stroke(cr);
 }
@@ -151,12 +329,7 @@ void paint_drawing(cairo_t* cr, const Drawing& drawing) {
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   for (const Region& region : drawing.regions) {
     cairo_set_source_rgb(cr, region.color.r, region.color.g, region.color.b);
-    cairo_move_to(cr, region.corners[0].x, region.corners[0].y);
-    for (std::size_t k = 1; k < region.corners.size(); ++k) {
-      cairo_line_to(cr, region.corners[k].x, region.corners[k].y);
-    }
-    cairo_close_path(cr);
-    cairo_fill(cr);
+    if (polygon_path(cr, region.corners)) cairo_fill(cr);
   }
   for (const Polyline& line : drawing.paths) paint_polyline(cr, line);
   for (const Shape& shape : drawing.shapes) {
@@ -201,13 +374,22 @@ PictureFormat picture_format_for(const std::string& path) {
   return has_extension(path, ".svg") ? PictureFormat::kSvg : PictureFormat::kPng;
 }
 
+namespace {
+/// Cairo's write callback: the bytes go to the output's descriptor.
+cairo_status_t write_to_output(void* closure, const unsigned char* data, unsigned int length) {
+  const int fd = static_cast<const OutputFile*>(closure)->descriptor();
+  return write_all(fd, data, length) ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
+}
+}  // namespace
+
 void write_picture(const std::string& path, PictureFormat format, int width, int height,
                    const std::function<void(cairo_t*)>& paint) {
-  const OutputFile output(path);
-  const std::string& target = output.write_path();
+  OutputFile output(path);
   const bool svg = format == PictureFormat::kSvg;
-  SurfacePtr surface(svg ? cairo_svg_surface_create(target.c_str(), width, height)
-                         : cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
+  int write_error = 0;
+  SurfacePtr surface(
+      svg ? cairo_svg_surface_create_for_stream(write_to_output, &output, width, height)
+          : cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
   cairo_status_t status = cairo_surface_status(surface.get());
   if (status == CAIRO_STATUS_SUCCESS) {
     if (svg) cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
@@ -215,15 +397,19 @@ void write_picture(const std::string& path, PictureFormat format, int width, int
       ContextPtr cr(cairo_create(surface.get()));
       paint(cr.get());
     }
-    if (!svg) status = cairo_surface_write_to_png(surface.get(), target.c_str());
+    errno = 0;
+    if (!svg) status = cairo_surface_write_to_png_stream(surface.get(), write_to_output, &output);
     cairo_surface_finish(surface.get());
     if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface.get());
+    write_error = errno;
   }
   surface.reset();
   if (status != CAIRO_STATUS_SUCCESS) {
     output.discard();
-    throw Error(ErrorKind::kCannotWrite,
-                "cannot write " + target + ": " + cairo_status_to_string(status));
+    const std::string why = status == CAIRO_STATUS_WRITE_ERROR && write_error != 0
+                                ? std::strerror(write_error)
+                                : cairo_status_to_string(status);
+    throw Error(ErrorKind::kCannotWrite, "cannot write " + path + ": " + why);
   }
   output.commit();
 }

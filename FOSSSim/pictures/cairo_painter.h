@@ -20,8 +20,8 @@ void paint_drawing(cairo_t* cr, const Drawing& drawing);
 /// `drawing` painted into a new image of its size.
 Image render_image(const Drawing& drawing);
 
-/// Writes `drawing` as a PNG file. Written to "<path>.partial" and renamed, so `path` is never
-/// half written. Throws Error (kCannotWrite) naming the path and the reason.
+/// Writes `drawing` as a PNG file. Written to a temporary file beside it and renamed, so `path` is
+/// never half written. Throws Error (kCannotWrite) naming the path and the reason.
 void write_png(const Drawing& drawing, const std::string& path);
 
 /// Writes `drawing` as an SVG file (vector shapes, sizes in px), atomically as write_png.
@@ -33,8 +33,8 @@ enum class PictureFormat { kPng, kSvg };
 PictureFormat picture_format_for(const std::string& path);
 
 /// Makes a width × height picture, lets `paint` draw on it (user space in pixels, origin top-left)
-/// and writes it to `path` as PNG or SVG: to "<path>.partial" first, renamed when complete.
-/// Throws Error (kCannotWrite) naming the path and Cairo's reason.
+/// and writes it to `path` as PNG or SVG: to a temporary file first (io/output_file.h), renamed
+/// when complete. Throws Error (kCannotWrite) naming the path and Cairo's reason.
 void write_picture(const std::string& path, PictureFormat format, int width, int height,
                    const std::function<void(cairo_t*)>& paint);
 

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -86,6 +87,50 @@ std::string read_log(std::FILE* log) {
 
 }  // namespace
 
+std::string mp4_damage(int fd) {
+  struct stat status {};
+  if (fd < 0 || ::fstat(fd, &status) != 0) return "it cannot be read back";
+  if (!S_ISREG(status.st_mode)) return "";  // a device or FIFO cannot be read back
+  const auto size = static_cast<std::uint64_t>(status.st_size);
+  const auto read_at = [fd](std::uint64_t offset, unsigned char* out, std::size_t n) {
+    return ::pread(fd, out, n, static_cast<off_t>(offset)) == static_cast<ssize_t>(n);
+  };
+  const auto big_endian = [](const unsigned char* b, int n) {
+    std::uint64_t value = 0;
+    for (int k = 0; k < n; ++k) value = value << 8 | b[k];
+    return value;
+  };
+  if (size == 0) return "it is empty";
+  bool movie_box = false;
+  std::uint64_t offset = 0;
+  // Each box takes at least 8 bytes, so this loop ends within size / 8 turns.
+  while (offset < size) {
+    unsigned char header[16];
+    if (size - offset < 8 || !read_at(offset, header, 8)) {
+      return "it ends inside a box header at byte " + std::to_string(offset);
+    }
+    std::uint64_t box = big_endian(header, 4);
+    const std::string type(reinterpret_cast<const char*>(header + 4), 4);
+    std::uint64_t header_bytes = 8;
+    if (box == 1) {
+      if (size - offset < 16 || !read_at(offset + 8, header + 8, 8)) {
+        return "it ends inside the '" + type + "' box header";
+      }
+      box = big_endian(header + 8, 8);
+      header_bytes = 16;
+    } else if (box == 0) {
+      box = size - offset;
+    }
+    if (offset == 0 && type != "ftyp") return "it does not begin with an 'ftyp' box";
+    if (box < header_bytes || box > size - offset) {
+      return "its '" + type + "' box at byte " + std::to_string(offset) + " is cut short";
+    }
+    if (type == "moov") movie_box = true;
+    offset += box;
+  }
+  return movie_box ? "" : "it has no 'moov' box (the index of its frames)";
+}
+
 void check_movie_settings(const std::string& path, const MovieSettings& s) {
   const auto fail = [](const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); };
   if (!has_extension(path, ".mp4")) {
@@ -127,17 +172,30 @@ MovieWriter MovieWriter::open(const std::string& path, const MovieSettings& sett
                 "writing a movie needs the ffmpeg program, which is not on PATH "
                 "(on Debian: apt-get install ffmpeg)");
   }
-  // A dead ffmpeg must turn our next write into an EPIPE error, not kill FOSSSim.
-  std::signal(SIGPIPE, SIG_IGN);
+  // A dead ffmpeg must turn our next write into an EPIPE error, not kill FOSSSim. A handler
+  // already installed (app/interrupt.h) stays: it only records the signal.
+  struct sigaction pipe_action {};
+  if (::sigaction(SIGPIPE, nullptr, &pipe_action) == 0 && pipe_action.sa_handler == SIG_DFL) {
+    std::signal(SIGPIPE, SIG_IGN);
+  }
 
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) {
     throw Error(ErrorKind::kCannotWrite,
                 "cannot create a pipe: " + std::string(std::strerror(errno)));
   }
-  std::FILE* log = std::tmpfile();
   OutputFile output(path);
-  const auto arguments = ffmpeg_arguments(*program, settings, output.write_path());
+  // ffmpeg writes the file FOSSSim created exclusively, reached through the descriptor it
+  // inherits as 3, never by a name that could be swapped meanwhile.
+  const int movie_fd = ::fcntl(output.descriptor(), F_DUPFD_CLOEXEC, 10);
+  if (movie_fd < 0) {
+    const int error = errno;
+    ::close(fds[0]);
+    ::close(fds[1]);
+    throw Error(ErrorKind::kCannotWrite, "cannot write " + path + ": " + std::strerror(error));
+  }
+  std::FILE* log = std::tmpfile();
+  const auto arguments = ffmpeg_arguments(*program, settings, "/dev/fd/3");
   std::vector<char*> argv;
   for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
@@ -147,6 +205,7 @@ MovieWriter MovieWriter::open(const std::string& path, const MovieSettings& sett
   posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
   if (log != nullptr) posix_spawn_file_actions_adddup2(&actions, fileno(log), STDERR_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, movie_fd, 3);
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
   sigset_t defaults;
@@ -163,6 +222,7 @@ MovieWriter MovieWriter::open(const std::string& path, const MovieSettings& sett
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
   ::close(fds[0]);
+  ::close(movie_fd);
   if (spawned != 0) {
     ::close(fds[1]);
     if (log != nullptr) std::fclose(log);
@@ -241,7 +301,13 @@ std::optional<std::string> MovieWriter::finish_process() {
 
 void MovieWriter::commit() {
   done_ = true;
-  if (auto problem = finish_process()) {
+  std::optional<std::string> problem = finish_process();
+  // ffmpeg can report success for a file the disk could not hold: look at the file itself.
+  if (!problem) {
+    const std::string damage = mp4_damage(output_.descriptor());
+    if (!damage.empty()) problem = "the file ffmpeg wrote is incomplete: " + damage;
+  }
+  if (problem) {
     output_.discard();
     throw Error(ErrorKind::kCannotWrite, "cannot write the movie " + path_ + ": " + *problem);
   }

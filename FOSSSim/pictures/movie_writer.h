@@ -21,8 +21,10 @@ struct MovieSettings {
 };
 
 /// Writes an MP4 movie (H.264, yuv420p, faststart) by running `ffmpeg` and piping it raw BGRA
-/// frames. The movie is written to "<path>.partial" and renamed to `path` by commit() (see
-/// io/output_file.h), so a failed or interrupted run never leaves a file that looks complete.
+/// frames. The movie is written to a temporary file beside `path` that FOSSSim creates and
+/// hands to ffmpeg as an open descriptor, and renamed to `path` by commit() (see
+/// io/output_file.h) only once ffmpeg succeeded and the file's MP4 boxes are whole, so a failed
+/// or interrupted run, or a full disk, never leaves a file that looks complete.
 /// ffmpeg runs in its own process group, so Ctrl-C reaches FOSSSim, which then stops it cleanly.
 class MovieWriter {
  public:
@@ -67,6 +69,11 @@ class MovieWriter {
 /// Throws Error (kBadInput) saying why `path` and `settings` cannot make a movie (not *.mp4,
 /// odd size, bad frame rate); returns when they can.
 void check_movie_settings(const std::string& path, const MovieSettings& settings);
+
+/// What is wrong with the MP4 file open as `fd`: "" when its top-level boxes cover the file
+/// exactly, it starts with 'ftyp' and holds a 'moov' (a device or FIFO is not checked);
+/// otherwise a phrase such as "its 'mdat' box at byte 48 is cut short".
+std::string mp4_damage(int fd);
 
 /// The full path of an executable `name` on PATH, or nothing.
 std::optional<std::string> find_program(const std::string& name);

@@ -42,6 +42,17 @@ TEST_F(CliPictures3D, PngsShowTheShadedCloth) {
   EXPECT_NE(read_png(folder_ / "pngs/frame_00030.png").pixels, first.pixels) << "it falls";
 }
 
+// A camera 1e-308 from its target put the cloth at absurd pixel coordinates, which hung Cairo;
+// they are now clipped before drawing (pictures/cairo_painter.cpp), and the run ends at once.
+TEST_F(CliPictures3D, ACameraAtAnAbsurdDistanceStillDrawsAtOnce) {
+  const auto result = testing::run_command(
+      folder_, "env -u DISPLAY timeout -k 5 60 " + testing::quoted(testing::fosssim_program()) +
+                   " -s cloth.xml -d 0 -q --duration 0 -g 1 -m svgs --view 0,0,1e-308");
+  ASSERT_EQ(result.status, 0) << result.err;
+  EXPECT_TRUE(folder_.exists("pngs/frame_00000.png"));
+  EXPECT_TRUE(folder_.exists("svgs/frame_00000.svg"));
+}
+
 TEST_F(CliPictures3D, ViewSetsTheAnglesAndProjection) {
   ASSERT_EQ(fosssim("-s cloth.xml -d 0 --duration 0 -g 1").status, 0);
   const auto side = fosssim("-s cloth.xml -d 0 --duration 0 -g 1 --png-dir side --view 90,0");

@@ -30,6 +30,25 @@ class CliPictures : public ::testing::Test {
   testing::ScratchFolder folder_;
 };
 
+// A tiny viewport and a huge radius used to hang inside Cairo with over 1 GB, deaf to SIGTERM;
+// the sizes are now brought within Cairo's reach before drawing (pictures/cairo_painter.cpp).
+TEST_F(CliPictures, AbsurdDrawnSizesAreDrawnAtOnce) {
+  folder_.write("huge.xml", R"(<scene>
+  <duration time="0.02"/><integrator type="explicit-euler" dt="0.01"/>
+  <particle m="1" px="0" py="0" vx="0" vy="0" fixed="1" radius="1e300"/>
+  <particle m="1" px="1e-40" py="1e-45" vx="0" vy="0" fixed="1" radius="1e-300"/>
+  <edge i="0" j="1" radius="1e200"/>
+  <particlepath i="1" duration="1" r="1" g="1" b="0"/>
+  <viewport cx="0" cy="0" size="1e-50"/>
+</scene>)");
+  const auto result = testing::run_command(
+      folder_, "timeout -k 5 60 " + testing::quoted(testing::fosssim_program()) +
+                   " -s huge.xml -d 0 -q -g 1 -m svg --size 64x64");
+  ASSERT_EQ(result.status, 0) << result.err;
+  EXPECT_EQ(files_in("pngs").size(), 3u);
+  EXPECT_EQ(files_in("svg").size(), 3u);
+}
+
 TEST_F(CliPictures, PngPerStepGoesIntoPngs) {
   const auto result = fosssim("-s scene.xml -d 0 -g 1");
   ASSERT_EQ(result.status, 0) << result.err;

@@ -138,6 +138,37 @@ TEST_F(CommandLine3D, GeneratesMeshesAndJsonScenesThatRun) {
       2);
 }
 
+// FOSSSim-generate checks its numbers as FOSSSim does, so it never writes a file FOSSSim
+// refuses, and never lets one of its outputs replace the other.
+TEST_F(CommandLine3D, GenerateRefusesNumbersAndNamesThatWouldMakeBadFiles) {
+  const auto refused = [this](const std::string& arguments, const std::string& message) {
+    const ProgramResult r = run(kGenerate + " " + arguments);
+    EXPECT_EQ(r.status, 2) << arguments << "\n" << r.output();
+    EXPECT_NE(r.output().find(message), std::string::npos) << arguments << "\n" << r.output();
+  };
+  const std::string out = " -o " + path("c.obj") + " ";
+  refused(out + "--json " + path("c.json") + " --k nan cloth", "found 'nan'");
+  refused(out + "--json " + path("c.json") + " --k 1e400 cloth", "found '1e400'");
+  refused(out + "--json " + path("c.json") + " --k -1 cloth", "--k must be between 0 and");
+  refused(out + "--json " + path("c.json") + " --k 0x10 cloth", "found '0x10'");
+  refused(out + "cloth --width 1e308", "sizes must be at most 1e+06 m, found 1e+308");
+  refused(out + "cloth --nx 0x10", "found '0x10'");
+  refused(out + "--json " + path("c.obj") + " cloth", "name the same file");
+  refused(out + "--json " + path("./c.obj") + " cloth", "name the same file");
+  refused(out + "--json " + path("c.xml") + " cloth", "must end in .json");
+  refused("-o '' cloth", "the name cannot be empty");
+  EXPECT_FALSE(std::filesystem::exists(path("c.obj")));
+  EXPECT_FALSE(std::filesystem::exists(path("c.json")));
+  // What it writes, FOSSSim reads: a folder name with a quote is escaped in the JSON.
+  std::filesystem::create_directories(path("a\"b"));
+  const ProgramResult made = run(kGenerate + " -o '" + path("a\"b/c.obj") + "' --json " +
+                                 path("c.json") + " --k 100 cloth --nx 3 --ny 3");
+  ASSERT_EQ(made.status, 0) << made.output();
+  const ProgramResult ran =
+      run(kFosssim + " -s " + path("c.json") + " -d 0 -q --duration 0.01 -o /dev/null");
+  EXPECT_EQ(ran.status, 0) << ran.output();
+}
+
 TEST_F(CommandLine3D, SparseSolversGiveTheSameBitsFromRunToRunOnTwoThreads) {
   // A 50x50 cloth: 7500 unknowns, past the size where the step solver takes CHOLMOD's factors
   // (supernodal, with OpenBLAS behind it) and GMRES. With two BLAS and OpenMP threads the

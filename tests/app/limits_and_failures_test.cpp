@@ -16,6 +16,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -105,6 +106,41 @@ class LimitsAndFailures : public ::testing::Test {
 
   fs::path dir_;
 };
+
+// A face of many corners (n (n - 1) / 2 springs) and an element of many attributes (quadratic
+// in tinyxml2) are refused at once, naming the limit; each limit can be raised.
+TEST_F(LimitsAndFailures, FaceCornersAndAttributesAreBounded) {
+  std::string polygon;
+  std::string face = "f";
+  for (int k = 0; k < 3000; ++k) {
+    const double angle = 2.0 * 3.141592653589793 * k / 3000;
+    polygon +=
+        "v " + std::to_string(std::cos(angle)) + " " + std::to_string(std::sin(angle)) + " 0\n";
+    face += " " + std::to_string(k + 1);
+  }
+  write("cloth.obj", polygon + face + "\n");
+  expect_refused({"-s", "cloth.xml", "-d", "0", "-o", "out.bin"},
+                 "a face of 3000 corners (it would make 4498500 springs), more than the limit of "
+                 "64 corners (raise it with --max-face-corners N)");
+  write("cloth.obj", kCloth);
+  expect_refused({"-s", "cloth.xml", "-d", "0", "--max-face-corners", "3"},
+                 "a face of 4 corners (it would make 6 springs), more than the limit of 3 corners");
+  std::string attributes;
+  for (int k = 0; k < 60000; ++k) attributes += " a" + std::to_string(k) + "=\"0\"";
+  const std::string edge = "<edge i=\"0\" j=\"1\"";
+  std::string scene = kSpringScene;
+  scene.replace(scene.find(edge), edge.size(), edge + attributes);
+  write("many.xml", scene);
+  expect_refused({"-s", "many.xml", "-d", "0"},
+                 "many.xml:6: error: an element with more than the limit of 100 attributes (raise "
+                 "it with --max-attributes N)");
+  scene = kSpringScene;
+  scene.replace(scene.find(edge), edge.size(), edge + " a=\"0\"");
+  write("three.xml", scene);
+  expect_refused({"-s", "three.xml", "-d", "0", "--max-attributes", "2"},
+                 "more than the limit of 2 attributes");
+  EXPECT_EQ(fosssim({"-s", "three.xml", "-d", "0", "-q", "--max-attributes", "6"}).status, 0);
+}
 
 TEST_F(LimitsAndFailures, NoOutputOptionReplacesTheSceneOrItsMeshes) {
   const std::string refused = "an output must never replace an input";

@@ -103,6 +103,8 @@ TEST(JsonScene, RejectsBadScenesNamingTheProblem) {
       {R"({"obj": "lines.obj", "k": 1})", 0, "masses from areas need faces"},
       {"{\n  \"obj\": \"square.obj\",\n  \"k\": 1,,\n}", 3, "not valid JSON"},
       {"[1, 2]", 0, "must hold a JSON object"},
+      {R"({"obj": "square.obj\u0000.txt", "k": 1})", 0,
+       "\"obj\" must be a file name, found one holding a NUL character"},
       {"  \n", 0, "the file is empty"},
   };
   for (const Bad& c : cases) {

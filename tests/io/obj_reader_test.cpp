@@ -63,6 +63,13 @@ TEST(ObjReader, RejectsMalformedLinesWithTheirNumbers) {
       {"v 0 0 0\nf a b c\n", 2, "does not start with an integer vertex index"},
       {"v 0 0 0\ncurv 0 1 1 2\n", 2, "unknown statement \"curv\""},
       {"# nothing\n", 0, "the file has no vertices"},
+      {"v 0 0 0\nv 1 0 0\nl 1/ 2\n", 3,
+       "corner \"1/\" is not v, v/vt, v//vn or v/vt/vn with non-zero integer indices"},
+      {"v 0 0 0\nv 1 0 0\nl 1// 2\n", 3, "corner \"1//\" is not"},
+      {"v 0 0 0\nv 1 0 0\nl 1/x 2\n", 3, "corner \"1/x\" is not"},
+      {"v 0 0 0\nv 1 0 0\nl 1/2/3/4 2\n", 3, "corner \"1/2/3/4\" is not"},
+      {"v 0 0 0\nv 1 0 0\nl 1/0 2\n", 3, "corner \"1/0\" is not"},
+      {"v 0 0 0\nv 1 0 0\nl 1//2x 2\n", 3, "corner \"1//2x\" is not"},
   };
   for (const Malformed& c : cases) {
     const SceneError mesh_error = thrown_by<SceneError>([&] { read_obj_text(c.text, "bad.obj"); });
@@ -75,6 +82,26 @@ TEST(ObjReader, RejectsMalformedLinesWithTheirNumbers) {
           << mesh_error.what();
     }
   }
+}
+
+TEST(ObjReader, TakesEveryCornerForm) {
+  const auto mesh =
+      read_obj_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2/1 3//1\nf 1/1/1 2/-1/2 -1\n", "forms.obj");
+  EXPECT_EQ(mesh.faces.size(), 2u);
+}
+
+TEST(ObjReader, RefusesAFaceOfMoreCornersThanTheLimit) {
+  std::string text;
+  for (int k = 0; k < 5; ++k) text += "v " + std::to_string(k) + " 0 0\n";
+  text += "f 1 2 3 4 5\n";
+  EXPECT_EQ(read_obj_text(text, "five.obj", 5).faces.size(), 1u);
+  const SceneError error = thrown_by<SceneError>([&] { read_obj_text(text, "five.obj", 4); });
+  EXPECT_EQ(error.line(), 6);
+  EXPECT_EQ(error.problem(),
+            "a face of 5 corners (it would make 10 springs), more than the limit of 4 corners "
+            "(raise it with --max-face-corners N)");
+  // A polyline of many vertices makes one spring per segment: no limit.
+  EXPECT_EQ(read_obj_text(text + "l 1 2 3 4 5\n", "five.obj", 5).segments.size(), 4u);
 }
 
 TEST(ObjReader, ReportsMissingFiles) {

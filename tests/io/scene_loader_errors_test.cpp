@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 
 #include "core/integrators/integrator_registry.h"
@@ -119,12 +120,53 @@ const Case kCases[] = {
      "bad.xml:3: error: <duration>: may appear only once (first at line 2)"},
     {"NonPositiveViewport", "<viewport cx=\"0\" cy=\"0\" size=\"0\"/>\n",
      "bad.xml:3: error: <viewport>: attribute \"size\" must be positive, found 0"},
+    // Elements nested in one that holds none were dropped without a word.
+    {"ElementInsideParticle",
+     "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\">\n"
+     "<simplegravity fx=\"0\" fy=\"-9.81\"/>\n</particle>\n",
+     "bad.xml:4: error: <simplegravity>: inside <particle>, which holds no elements: close "
+     "<particle .../> before it"},
+    {"SpringInsideEdge",
+     std::string(kTwoParticles, std::strlen(kTwoParticles) - 20) +
+         "<edge i=\"0\" j=\"1\"><springforce edge=\"0\" k=\"1\" l0=\"1\"/></edge>\n",
+     "bad.xml:5: error: <springforce>: inside <edge>, which holds no elements: close <edge .../> "
+     "before it"},
 };
 
 INSTANTIATE_TEST_SUITE_P(SceneLoader, MalformedScene, ::testing::ValuesIn(kCases),
                          [](const ::testing::TestParamInfo<Case>& info) {
                            return info.param.name;
                          });
+
+TEST(SceneLoaderErrors, ANulByteIsRefusedWithItsLine) {
+  const std::string text = std::string(kHeader) + kTwoParticles + std::string(1, '\0') +
+                           "<simplegravity fx=\"0\" fy=\"-9.81\"/>\n</scene>\n";
+  const std::size_t at = std::string(kHeader).size() + std::string(kTwoParticles).size();
+  EXPECT_EQ(error_of(text), "bad.xml:6: error: a NUL byte (at byte " + std::to_string(at) +
+                                "): a scene file is text, and nothing after it would be read");
+}
+
+TEST(SceneLoaderErrors, AnElementOfTooManyAttributesIsRefusedBeforeParsing) {
+  std::string many = "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"";
+  for (int k = 0; k < 300000; ++k) many += " a" + std::to_string(k) + "='='";
+  const std::string text = std::string(kHeader) + "<!-- a=1 b=2 -->\n" + many + "/>\n</scene>\n";
+  // Refused at once (tinyxml2 alone takes quadratic time: 60,000 attributes took 16 s).
+  EXPECT_EQ(error_of(text),
+            "bad.xml:4: error: an element with more than the limit of 100 attributes (raise it "
+            "with --max-attributes N)");
+  // The limit counts '=' outside quotes within a tag, and can be raised.
+  Limits limits;
+  limits.max_attributes = 6;
+  InputFiles files(limits);
+  const std::string six = std::string(kHeader) +
+                          "<description text=\"a=1, b=2, c=3, d=4, e=5, f=6, g=7\"/>\n"
+                          "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
+                          "</scene>\n";
+  EXPECT_EQ(load_scene_text(six, "six.xml", files).model.num_particles(), 1);
+  limits.max_attributes = 5;
+  InputFiles fewer(limits);
+  EXPECT_THROW(load_scene_text(six, "six.xml", fewer), SceneError);
+}
 
 TEST(SceneLoaderErrors, UnknownIntegratorListsEveryTypeOfTheRegistry) {
   const std::string error =

@@ -20,6 +20,13 @@ namespace fs = std::filesystem;
 class TrajectoryFile : public ::testing::Test {
  protected:
   std::string path(const std::string& name) const { return folder_ / name; }
+  /// How many temporary "*.partial" files the folder holds.
+  int partial_files() const {
+    int count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder_.path()))
+      count += entry.path().filename().string().ends_with(".partial") ? 1 : 0;
+    return count;
+  }
 
   static State state(double base) {
     State s;
@@ -68,10 +75,10 @@ TEST_F(TrajectoryFile, FinalNameAppearsOnlyOnCommit) {
   auto writer = TrajectoryWriter::open(path("t.bin"));
   writer.write_frame(state(1));
   EXPECT_FALSE(fs::exists(path("t.bin")));
-  EXPECT_TRUE(fs::exists(path("t.bin.partial")));
+  EXPECT_EQ(partial_files(), 1);
   writer.commit();
   EXPECT_TRUE(fs::exists(path("t.bin")));
-  EXPECT_FALSE(fs::exists(path("t.bin.partial")));
+  EXPECT_EQ(partial_files(), 0);
 }
 
 TEST_F(TrajectoryFile, UnfinishedRunKeepsFramesAsIncompleteAndLeavesEarlierFileAlone) {
@@ -82,7 +89,7 @@ TEST_F(TrajectoryFile, UnfinishedRunKeepsFramesAsIncompleteAndLeavesEarlierFileA
     writer.write_frame(state(2));
   }  // destroyed without commit, as when a run fails
   EXPECT_EQ(testing::read_file(path("t.bin")), "an earlier complete run");
-  EXPECT_FALSE(fs::exists(path("t.bin.partial")));
+  EXPECT_EQ(partial_files(), 0);
   EXPECT_EQ(fs::file_size(path("t.bin.incomplete")), 2u * 8 * sizeof(double));
 }
 
@@ -93,12 +100,21 @@ TEST_F(TrajectoryFile, AbandonReportsWhereTheFramesAre) {
   EXPECT_TRUE(fs::exists(path("t.bin.incomplete")));
 }
 
+TEST_F(TrajectoryFile, AWriterAbandonedBeforeItsFirstFrameLeavesNothing) {
+  {
+    auto writer = TrajectoryWriter::open(path("t.bin"));
+    EXPECT_EQ(writer.abandon(), "");
+  }
+  { auto writer = TrajectoryWriter::open(path("u.bin")); }
+  EXPECT_TRUE(fs::is_empty(folder_.path()));
+}
+
 TEST_F(TrajectoryFile, OpenFailsWithTheReasonWhenTheFolderIsMissing) {
   const Error error = thrown_by([&] { TrajectoryWriter::open(path("no/such/dir/t.bin")); });
   EXPECT_EQ(error.kind(), ErrorKind::kCannotWrite);
-  EXPECT_STREQ(error.what(), ("cannot create " + path("no/such/dir/t.bin.partial") +
-                              ": No such file or directory")
-                                 .c_str());
+  EXPECT_STREQ(
+      error.what(),
+      ("cannot create " + path("no/such/dir/t.bin") + ": No such file or directory").c_str());
 }
 
 TEST_F(TrajectoryFile, ReaderRejectsCutShortFiles) {

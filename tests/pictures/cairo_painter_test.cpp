@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 #include <tinyxml2.h>
 
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <string>
 
+#include "support/pixel_counts.h"
 #include "support/scratch_folder.h"
 #include "support/tiny_scenes.h"
 
@@ -33,6 +36,46 @@ TEST(RenderImage, PutsTheExpectedColoursAtTheExpectedPixels) {
   EXPECT_LE(color_distance(image.color_at(128, 216), kBackground), kOneLevel);
   // Every pixel is opaque.
   for (std::uint32_t pixel : image.pixels) ASSERT_EQ(pixel >> 24, 0xffu);
+}
+
+// Sizes that made Cairo loop for minutes over gigabytes (a radius of 1e300 pixels, points at
+// 1e12) are brought within its reach: each picture below is drawn at once, and right.
+TEST(RenderImage, DrawsAbsurdSizesQuicklyAndRight) {
+  const Color kBlue{0, 0, 1};
+  const auto picture = [](const auto& fill) {
+    Drawing drawing;
+    drawing.width = 64;
+    drawing.height = 64;
+    drawing.background = Color{0, 0, 0};
+    fill(drawing);
+    return render_image(drawing);
+  };
+  // A disc of radius 1e300 around the picture covers it.
+  Image image = picture([&](Drawing& d) { d.particles.push_back({{32, 32}, 1e300, kRed}); });
+  EXPECT_EQ(testing::count_color(image, kRed), 64 * 64);
+  // One around a point 1e9 pixels to the left, reaching 20 pixels into the picture, covers the
+  // left 20 columns: its rim there is a straight line at x = 20.
+  image = picture([&](Drawing& d) { d.particles.push_back({{-1e9, 32}, 1e9 + 20, kRed}); });
+  EXPECT_LE(color_distance(image.color_at(18, 10), kRed), kOneLevel);
+  EXPECT_LE(color_distance(image.color_at(21, 50), Color{0, 0, 0}), kOneLevel);
+  // A ring of radius 1e300 whose stroke misses the picture draws nothing; non-finite shapes too.
+  image = picture([&](Drawing& d) {
+    d.marks.push_back({{32, 32}, 1e300, 2.0, kRed});
+    d.particles.push_back({{std::nan(""), 3}, 5, kRed});
+    d.edges.push_back({{0, 0}, {std::numeric_limits<double>::infinity(), 3}, 2, kRed});
+  });
+  EXPECT_EQ(testing::count_color(image, Color{0, 0, 0}), 64 * 64);
+  // An edge from far away (1e12 pixels) crossing the picture, and a huge triangle and path.
+  image = picture([&](Drawing& d) {
+    d.edges.push_back({{-1e12, 32}, {1e12, 32}, 4, kGreen});
+    d.shapes.push_back(
+        Triangle{{Point2{-1e15, -1e15}, Point2{1e15, -1e15}, Point2{0, 20}}, kBlue, 0.0, kBlue});
+    d.paths.push_back({{{32, -1e200}, {32, 1e200}}, 2.0, kRed});
+  });
+  EXPECT_LE(color_distance(image.color_at(5, 10), kBlue), kOneLevel);
+  EXPECT_LE(color_distance(image.color_at(5, 32), kGreen), kOneLevel);
+  EXPECT_LE(color_distance(image.color_at(32, 50), kRed), kOneLevel);
+  EXPECT_LE(color_distance(image.color_at(5, 50), Color{0, 0, 0}), kOneLevel);
 }
 
 TEST(RenderImage, AntiAliasesTheOutlines) {

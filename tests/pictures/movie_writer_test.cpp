@@ -1,6 +1,8 @@
 #include "pictures/movie_writer.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -36,6 +38,37 @@ class ScopedPath {
  private:
   std::string saved_;
 };
+
+/// An MP4 box: 32-bit big-endian size, type, then `body`.
+std::string box(const std::string& type, const std::string& body) {
+  const auto n = static_cast<std::uint32_t>(8 + body.size());
+  const std::string size = {static_cast<char>(n >> 24), static_cast<char>(n >> 16),
+                            static_cast<char>(n >> 8), static_cast<char>(n)};
+  return size + type + body;
+}
+
+/// mp4_damage of a file holding `bytes`.
+std::string damage_of(const std::string& bytes) {
+  const testing::ScratchFolder folder;
+  const std::string path = folder.write("m.mp4", bytes);
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  const std::string out = mp4_damage(fd);
+  ::close(fd);
+  return out;
+}
+
+TEST(Mp4Damage, AWholeFileIsFineAndACutOneIsNot) {
+  const std::string ftyp = box("ftyp", "isom0200");
+  const std::string whole = ftyp + box("moov", std::string(20, 'm')) + box("mdat", "frames");
+  EXPECT_EQ(damage_of(whole), "");
+  EXPECT_EQ(damage_of(whole.substr(0, whole.size() - 2)), "its 'mdat' box at byte 44 is cut short");
+  EXPECT_EQ(damage_of(whole.substr(0, 30)), "its 'moov' box at byte 16 is cut short");
+  EXPECT_EQ(damage_of(whole.substr(0, 19)), "it ends inside a box header at byte 16");
+  EXPECT_EQ(damage_of(ftyp + box("mdat", "frames")),
+            "it has no 'moov' box (the index of its frames)");
+  EXPECT_EQ(damage_of(box("mdat", "frames") + ftyp), "it does not begin with an 'ftyp' box");
+  EXPECT_EQ(damage_of(""), "it is empty");
+}
 
 TEST(MovieWriter, WritesAnMp4WithOneFramePerImage) {
   if (!testing::on_path("ffmpeg") || !testing::on_path("ffprobe")) {
