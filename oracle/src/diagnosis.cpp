@@ -14,8 +14,10 @@ std::string diagnosis_text(const SceneResult& result) {
   std::ostringstream out;
   out << result.name << ": " << verdict_label(result.verdict);
   if (!result.integrator.empty()) {
-    out << " (" << result.integrator << ", " << result.particles << " particles in " << result.dim
-        << "D, " << result.steps << " steps of " << to_text(result.dt) << " s)";
+    out << " (" << result.integrator << ", " << result.particles
+        << (result.particles == 1 ? " particle in " : " particles in ") << result.dim << "D, "
+        << result.steps << (result.steps == 1 ? " step of " : " steps of ") << to_text(result.dt)
+        << " s)";
   }
   out << "\n";
   if (!result.reason.empty()) out << result.reason << "\n";

@@ -7,7 +7,8 @@ Usage: python3 tools/scenes/generate_scenes.py [--check]
   --check  write nothing; exit 1 if any file would change (the committed files are stale).
 
 The scene files are committed; neither the build nor the tests run this script. Edit the scenes
-here, run it, and commit the script and the files together.
+here, run it, and commit the script and the files together. Other suites (assets/t4m1, the
+elastic-body scenes) are written by hand and left alone.
 """
 
 import pathlib
@@ -64,9 +65,10 @@ def main(argv):
             if not check:
                 target.parent.mkdir(parents=True, exist_ok=True)
                 target.write_text(text)
-    # Scene files that no builder produces any more.
-    for folder in ("assets", "extracreditassets"):
-        for old in sorted((ROOT / folder).rglob("*.xml")):
+    # Scene files that no builder produces any more, in the folders this script writes.
+    generated = sorted({pathlib.PurePosixPath(path).parent.as_posix() for path in files})
+    for folder in generated:
+        for old in sorted((ROOT / folder).glob("*.xml")):
             relative = old.relative_to(ROOT).as_posix()
             if relative not in files:
                 stale.append(relative + " (no longer generated)")
