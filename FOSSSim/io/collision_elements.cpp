@@ -19,6 +19,12 @@ namespace {
 
 using tinyxml2::XMLElement;
 
+/// The most impulse passes a step of hybrid handling makes, whatever maxiters asks: each pass
+/// tests (and logs the polynomials of) every pair, so a huge maxiters on a jammed scene would
+/// loop and grow the step's log for hours (docs/limits-and-failures.md). A hundred times the
+/// course's default; the course's own scenes ask for 0, 1 or the default 10.
+constexpr double kMaxHybridPasses = 1000.0;
+
 constexpr std::array<std::string_view, 6> kElements = {
     "halfplane", "halfplanecolor", "sphere", "spherecolor", "collision", "collisiondetection"};
 
@@ -211,8 +217,15 @@ class CollisionReader {
                                       : " impulse passes") +
                     ", as the course reads it");
       }
-      s.max_iterations =
-          static_cast<int>(std::clamp(whole, -1.0, double{std::numeric_limits<int>::max()}));
+      double passes = whole;
+      if (!(whole <= kMaxHybridPasses)) {  // a NaN too
+        warn(r, "maxiters = " + to_text(iterations) + " is more than FOSSSim's limit of " +
+                    to_text(kMaxHybridPasses) + " impulse passes a step; " +
+                    to_text(kMaxHybridPasses) +
+                    " are made (docs/limits-and-failures.md, \"Hybrid passes\")");
+        passes = kMaxHybridPasses;
+      }
+      s.max_iterations = static_cast<int>(std::max(passes, -1.0));
     }
     if (scene_.model.dim == 3 && s.method == CollisionMethod::kHybrid) {
       r.fail("type", "\"hybrid\" is 2D only (its rigid impact zones rotate in the plane)");

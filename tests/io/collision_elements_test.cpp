@@ -65,6 +65,25 @@ TEST(CollisionElements, MaxitersIsTruncatedTowardZeroWithAWarning) {
             "course reads it");
 }
 
+TEST(CollisionElements, MaxitersAboveTheLimitIsCappedWithAWarning) {
+  // A hostile campaign's scene asked for two billion passes a step: each pass logs every pair's
+  // polynomials, so the step grew its log by 40 MB a second for hours.
+  const Scene scene = load("<collision type=\"hybrid\" maxiters=\"2000000000\"/>\n");
+  EXPECT_EQ(scene.model.collisions.max_iterations, 1000);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_EQ(scene.warnings[0],
+            "c.xml:4: warning: <collision>: maxiters = 2e+09 is more than FOSSSim's limit of "
+            "1000 impulse passes a step; 1000 are made (docs/limits-and-failures.md, "
+            "\"Hybrid passes\")");
+  // The limit itself, and the course's values, are taken as they are.
+  for (const int passes : {0, 1, 10, 1000}) {
+    const Scene at = load("<collision type=\"hybrid\" maxiters=\"" + std::to_string(passes) +
+                          "\"/>\n");
+    EXPECT_EQ(at.model.collisions.max_iterations, passes);
+    EXPECT_TRUE(at.warnings.empty()) << passes;
+  }
+}
+
 struct Case {
   const char* name;
   const char* body;  // its first line is line 4

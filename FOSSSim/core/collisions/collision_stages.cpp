@@ -23,16 +23,16 @@ struct PassCollision {
   SweptCollision<2> hit;
 };
 
-/// One detection pass over every pair from xs to x, logging the polynomials.
-std::vector<PassCollision> detect_all(const SceneModel& model, const CandidatePairs& pairs,
-                                      const Vector& xs, const Vector& x, StepRecord& record) {
-  std::vector<PassCollision> found;
+/// One detection pass over every pair from xs to x, logging the polynomials; `found` (cleared
+/// first, its memory reused) gets the collisions.
+void detect_all(const SceneModel& model, const CandidatePairs& pairs, const Vector& xs,
+                const Vector& x, StepRecord& record, std::vector<PassCollision>& found) {
+  found.clear();
   for_each_in_course_order(pairs, PairQuery{xs, x, 0.0}, [&](const CandidatePair& pair) {
     if (auto hit = detect_swept<2>(model, pair, xs, x, &record.polynomials)) {
       found.push_back({pair, *hit});
     }
   });
-  return found;
 }
 
 }  // namespace
@@ -109,15 +109,20 @@ void HybridStage::apply(const StepContext& context, State& state) {
   Vector& q = state.q;
   Vector& v = state.v;
 
-  // Impulse passes (Jacobi): detect everything, then answer from the pass's start.
+  // Impulse passes (Jacobi): detect everything, then answer from the pass's start. The
+  // buffers are reused from pass to pass: only the log grows with the passes, and their number
+  // is capped when the scene is read (io/collision_elements.cpp).
   bool resolved = false;
+  std::vector<PassCollision> found;
+  Vector q_next, v_next;
   for (int pass = 0; pass < model.collisions.max_iterations; ++pass) {
-    const std::vector<PassCollision> found = detect_all(model, *pairs_, xs, q, record);
+    detect_all(model, *pairs_, xs, q, record, found);
     if (found.empty()) {
       resolved = true;
       break;
     }
-    Vector q_next = q, v_next = v;
+    q_next = q;
+    v_next = v;
     const auto displacement_velocity = [&](int p) -> Vec<2> {
       return (q.segment<2>(2 * p) - xs.segment<2>(2 * p)) / h;
     };
@@ -131,22 +136,24 @@ void HybridStage::apply(const StepContext& context, State& state) {
         q_next.segment<2>(2 * p) += h * impulse.dv[k];
       }
     }
-    q = std::move(q_next);
-    v = std::move(v_next);
+    q.swap(q_next);
+    v.swap(v_next);
   }
   record.sync = SyncPoint{q, v, record.polynomials.size()};
   if (resolved) return;
 
   // Geometric stage: rigid impact zones, grown until detection adds none.
-  const auto zones_of = [&model](const std::vector<PassCollision>& found,
-                                 std::vector<ImpactZone> zones) {
+  // Zones only grow (each pass adds a particle, merges two zones or flags one), so this ends
+  // within three passes per particle.
+  const auto zones_of = [&](std::vector<ImpactZone> zones) {
+    detect_all(model, *pairs_, xs, q, record, found);
     for (const PassCollision& c : found) zones.push_back(impact_zone_of(model, c.pair));
     return merge_impact_zones(std::move(zones));
   };
-  std::vector<ImpactZone> zones = zones_of(detect_all(model, *pairs_, xs, q, record), {});
+  std::vector<ImpactZone> zones = zones_of({});
   while (true) {
     for (const ImpactZone& zone : zones) apply_rigid_failsafe(model, zone, xs, h, q, v);
-    std::vector<ImpactZone> grown = zones_of(detect_all(model, *pairs_, xs, q, record), zones);
+    std::vector<ImpactZone> grown = zones_of(zones);
     if (grown == zones) break;
     zones = std::move(grown);
   }

@@ -44,6 +44,8 @@ GridPairs<D>::GridPairs(const SceneModel& model) : model_(&model) {
     std::nth_element(radii.begin(), middle, radii.end());
     if (std::isfinite(*middle) && *middle > 0.0) skin_ = *middle;
   }
+  budget_ = std::max(kMinCandidates,
+                     kCandidatesPerObject * static_cast<std::size_t>(n + model.edges.size()));
   incident_start_.assign(n + 1, 0);
   for (const Edge& edge : model.edges) {
     ++incident_start_[edge.i + 1];
@@ -113,57 +115,158 @@ void GridPairs<D>::build_grids() const {
 }
 
 template <int D>
-void GridPairs<D>::find_obstacles(int p) const {
-  const SceneModel& model = *model_;
-  if (model.half_planes.empty() && model.spheres.empty()) return;
+bool GridPairs<D>::near_half_plane(int p, int h) const {
   const Box<D>& motion = motion_boxes_[p];
   const Vec<D> centre = 0.5 * (motion.lo + motion.hi);
   const Vec<D> half = 0.5 * (motion.hi - motion.lo);
-  // The narrow phase acts when |(x - P)·N| / ‖N‖ < r + margin for a centre x in the box.
-  const double reach = larger(model.particle_radius[p], 0.0) + margin_ + rounding_;
-  for (int h = 0; h < static_cast<int>(model.half_planes.size()); ++h) {
-    const HalfPlane& plane = model.half_planes[h];
-    const Vec<D> N = plane.normal.head<D>();
-    const double f = (centre - plane.point.head<D>()).dot(N);
-    const double spread = N.cwiseAbs().dot(half);
-    const double limit = reach * N.norm();
-    if (f - spread < limit && f + spread > -limit) {
-      found_.push_back({CollisionKind::kParticleHalfPlane, p, h});
-    }
-  }
+  // The narrow phase acts when |(x - P)·N| / ‖N‖ < r + margin for a centre x in the box (2D,
+  // the course's unsigned distance), or when (x - P)·N / ‖N‖ < r + margin (3D, signed: a centre
+  // deep inside the solid is still pushed out, core/collisions/proximity.h).
+  const double reach = larger(model_->particle_radius[p], 0.0) + margin_ + rounding_;
+  const HalfPlane& plane = model_->half_planes[h];
+  const Vec<D> N = plane.normal.head<D>();
+  const double f = (centre - plane.point.head<D>()).dot(N);
+  const double spread = N.cwiseAbs().dot(half);
+  const double limit = reach * N.norm();
+  if constexpr (D == 3) return f - spread < limit;
+  return f - spread < limit && f + spread > -limit;
+}
+
+template <int D>
+bool GridPairs<D>::near_sphere(int p, int s) const {
+  const Box<D>& motion = motion_boxes_[p];
   // A sphere acts when ‖x - C‖ < r + ρ + margin for a centre x in the box.
+  const double reach = larger(model_->particle_radius[p], 0.0) + margin_ + rounding_;
+  const Sphere& sphere = model_->spheres[s];
+  const Vec<D> C = sphere.center.head<D>();
+  const Vec<D> nearest = C.cwiseMax(motion.lo).cwiseMin(motion.hi);
+  return (C - nearest).norm() < reach + sphere.radius;
+}
+
+template <int D>
+void GridPairs<D>::find_obstacles(int p) const {
+  const SceneModel& model = *model_;
+  for (int h = 0; h < static_cast<int>(model.half_planes.size()); ++h) {
+    if (near_half_plane(p, h)) found_.push_back({CollisionKind::kParticleHalfPlane, p, h});
+  }
   for (int s = 0; s < static_cast<int>(model.spheres.size()); ++s) {
-    const Sphere& sphere = model.spheres[s];
-    const Vec<D> C = sphere.center.head<D>();
-    const Vec<D> nearest = C.cwiseMax(motion.lo).cwiseMin(motion.hi);
-    if ((C - nearest).norm() < reach + sphere.radius) {
-      found_.push_back({CollisionKind::kParticleSphere, p, s});
+    if (near_sphere(p, s)) found_.push_back({CollisionKind::kParticleSphere, p, s});
+  }
+}
+
+template <int D>
+bool GridPairs<D>::find_all_pairs() const {
+  found_.clear();
+  // Stops listing once the budget is spent: a crowd is visited directly instead.
+  bool over = false;
+  const auto add = [&](const CandidatePair& pair) {
+    if (found_.size() >= budget_) {
+      over = true;
+      return;
+    }
+    found_.push_back(pair);
+  };
+  // In the grid's order rather than by index: neighbours in space come one after the other.
+  particle_grid_.for_each_filed([&](int a, const Box<D>& box) {
+    if (over) return;
+    const int level = particle_grid_.level_of(a);
+    // Particles at a's level pair with it from the lower index; coarser ones always from a.
+    particle_grid_.query(box, level, [&](int b) {
+      if (b == a || (b < a && particle_grid_.level_of(b) == level)) return;
+      add({CollisionKind::kParticleParticle, std::min(a, b), std::max(a, b)});
+    });
+    edge_grid_.query(box, level, [&](int e) {
+      if (!never_pairs(a, e)) add({CollisionKind::kParticleEdge, a, e});
+    });
+    find_obstacles(a);  // at most the obstacles' number past the budget
+  });
+  // Edges meet the particles of coarser levels (those of their own level and finer asked).
+  edge_grid_.for_each_filed([&](int e, const Box<D>& box) {
+    if (over) return;
+    particle_grid_.query(box, edge_grid_.level_of(e) + 1, [&](int a) {
+      if (!never_pairs(a, e)) add({CollisionKind::kParticleEdge, a, e});
+    });
+  });
+  if (over || found_.size() > budget_) {
+    found_.clear();
+    return false;
+  }
+  return true;
+}
+
+template <int D>
+void GridPairs<D>::visit_directly(const Visitor& visit) const {
+  const SceneModel& model = *model_;
+  const int n = model.num_particles();
+  const int num_edges = static_cast<int>(model.edges.size());
+  const int num_half_planes = static_cast<int>(model.half_planes.size());
+  const int num_spheres = static_cast<int>(model.spheres.size());
+  for (int i = 0; i < n; ++i) {
+    const Box<D>& box = particle_boxes_[i];
+    for (int j = i + 1; j < n; ++j) {
+      if (box.overlaps(particle_boxes_[j])) visit({CollisionKind::kParticleParticle, i, j});
+    }
+    for (int e = 0; e < num_edges; ++e) {
+      if (!never_pairs(i, e) && edge_boxes_[e].overlaps(box)) {
+        visit({CollisionKind::kParticleEdge, i, e});
+      }
+    }
+    for (int h = 0; h < num_half_planes; ++h) {
+      if (near_half_plane(i, h)) visit({CollisionKind::kParticleHalfPlane, i, h});
+    }
+    for (int s = 0; s < num_spheres; ++s) {
+      if (near_sphere(i, s)) visit({CollisionKind::kParticleSphere, i, s});
     }
   }
 }
 
 template <int D>
-void GridPairs<D>::find_all_pairs() const {
-  found_.clear();
-  // In the grid's order rather than by index: neighbours in space come one after the other.
-  particle_grid_.for_each_filed([&](int a, const Box<D>& box) {
-    const int level = particle_grid_.level_of(a);
-    // Particles at a's level pair with it from the lower index; coarser ones always from a.
-    particle_grid_.query(box, level, [&](int b) {
-      if (b == a || (b < a && particle_grid_.level_of(b) == level)) return;
-      found_.push_back({CollisionKind::kParticleParticle, std::min(a, b), std::max(a, b)});
-    });
-    edge_grid_.query(box, level, [&](int e) {
-      if (!never_pairs(a, e)) found_.push_back({CollisionKind::kParticleEdge, a, e});
-    });
-    find_obstacles(a);
-  });
-  // Edges meet the particles of coarser levels (those of their own level and finer asked).
-  edge_grid_.for_each_filed([&](int e, const Box<D>& box) {
-    particle_grid_.query(box, edge_grid_.level_of(e) + 1, [&](int a) {
-      if (!never_pairs(a, e)) found_.push_back({CollisionKind::kParticleEdge, a, e});
-    });
-  });
+void GridPairs<D>::visit_moving_directly(const PairQuery& query,
+                                         const MovingVisitor& visit) const {
+  const SceneModel& model = *model_;
+  const int n = model.num_particles();
+  const int num_edges = static_cast<int>(model.edges.size());
+  const int num_half_planes = static_cast<int>(model.half_planes.size());
+  const int num_spheres = static_cast<int>(model.spheres.size());
+  const auto act = [&](const CandidatePair& pair) {
+    const MovedParticles moved = visit(pair);
+    for (int m = 0; m < moved.count; ++m) grow_after_move(query, moved.particle[m]);
+  };
+  // Boxes only grow, so a pair the list would have planned still overlaps when it comes, and
+  // one a grown box reaches is found as follow_move would find it.
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      if (particle_boxes_[i].overlaps(particle_boxes_[j])) {
+        act({CollisionKind::kParticleParticle, i, j});
+      }
+    }
+    for (int e = 0; e < num_edges; ++e) {
+      if (!never_pairs(i, e) && edge_boxes_[e].overlaps(particle_boxes_[i])) {
+        act({CollisionKind::kParticleEdge, i, e});
+      }
+    }
+    for (int h = 0; h < num_half_planes; ++h) {
+      if (near_half_plane(i, h)) act({CollisionKind::kParticleHalfPlane, i, h});
+    }
+    for (int s = 0; s < num_spheres; ++s) {
+      if (near_sphere(i, s)) act({CollisionKind::kParticleSphere, i, s});
+    }
+  }
+}
+
+template <int D>
+void GridPairs<D>::grow_after_move(const PairQuery& query, int p) const {
+  const Vec<D> s = particle_vec<D>(query.start, p);
+  const Vec<D> e = particle_vec<D>(query.end, p);
+  const Box<D> motion = segment_box<D>(s, e);
+  if (motion_boxes_[p].contains(motion)) return;
+  motion_boxes_[p] = motion_boxes_[p].united(grown(motion, (e - s).norm()));
+  particle_boxes_[p] = grown(motion_boxes_[p], larger(model_->particle_radius[p], 0.0) + pad_);
+  for (int k = incident_start_[p]; k < incident_start_[p + 1]; ++k) {
+    const int edge = incident_edges_[k];
+    const Box<D> edge_now = edge_box(edge);
+    if (!edge_boxes_[edge].contains(edge_now)) edge_boxes_[edge] = edge_now;
+  }
 }
 
 template <int D>
@@ -206,13 +309,17 @@ void GridPairs<D>::for_each(const PairQuery& query, const Visitor& visit) const 
   if (!(fixed_positions && can_reuse(query))) {
     compute_boxes(query, false, fixed_positions ? skin_ : 0.0);
     build_grids();
-    find_all_pairs();
-    sort_found();
+    direct_ = !find_all_pairs();
+    if (!direct_) sort_found();
     reusable_ = fixed_positions;
     if (reusable_) {
       reference_ = query.start;
       reused_margin_ = query.margin;
     }
+  }
+  if (direct_) {
+    visit_directly(visit);
+    return;
   }
   // In the course's order a pair's second particle is anywhere in memory: ask for its position
   // a few pairs ahead, so that large scenes wait less for it.
@@ -234,7 +341,11 @@ void GridPairs<D>::for_each_moving(const PairQuery& query, const MovingVisitor& 
   reusable_ = false;  // found_ and the grids change below
   compute_boxes(query, true);
   build_grids();
-  find_all_pairs();
+  direct_ = !find_all_pairs();
+  if (direct_) {
+    visit_moving_directly(query, visit);
+    return;
+  }
   sort_found();
   planned_.swap(found_);
   const int n = model_->num_particles();

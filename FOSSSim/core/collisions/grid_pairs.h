@@ -2,6 +2,7 @@
 // FOSSSim's broad phase: candidate pairs from hierarchical grids of bounding boxes, in the
 // course's order (docs/collisions.md, "Broad phase").
 
+#include <cstddef>
 #include <vector>
 
 #include "core/collisions/box_grid.h"
@@ -35,6 +36,12 @@ namespace fosssim {
 /// the step, so that a response that reverses or slows a particle keeps it inside its box; a
 /// particle (and its edges) that a response moves out of its box gets a grown box and is
 /// asked for new partners at once, pairs later in the order joining those still to come.
+///
+/// Crowds: when the search finds more candidates than its budget (candidate_budget()), as when
+/// thousands of balls sit in one spot and every box overlaps every other, the list is dropped
+/// and the query visits the pairs directly instead: every pair in the course's order, tested
+/// box against box (boxes grown as above for moving queries). The same pairs, in the same
+/// order, as the list would have held, with the cost of all pairs and no memory per pair.
 template <int D>
 class GridPairs final : public CandidatePairs {
  public:
@@ -48,6 +55,21 @@ class GridPairs final : public CandidatePairs {
   /// pairs do not count).
   int searches() const { return searches_; }
 
+  /// The default candidate budget is kCandidatesPerObject per particle and edge, and at least
+  /// kMinCandidates: the pairs' memory stays within a few kilobytes per object.
+  static constexpr std::size_t kCandidatesPerObject = 256;
+  static constexpr std::size_t kMinCandidates = std::size_t{1} << 16;
+  /// The most candidates a search may list before the query visits pairs directly.
+  std::size_t candidate_budget() const { return budget_; }
+  /// Replaces the default budget (tests force direct visits with a small one).
+  void set_candidate_budget(std::size_t budget) {
+    budget_ = budget;
+    reusable_ = false;
+  }
+  /// True when the last search found more candidates than the budget, so that the last query
+  /// (and the static queries reusing its boxes) visited the pairs directly.
+  bool visits_directly() const { return direct_; }
+
  private:
   /// Boxes of every particle and edge for `query`; with `slack` each particle's segment is
   /// grown by its own length first, and then by `skin` along every axis.
@@ -60,10 +82,19 @@ class GridPairs final : public CandidatePairs {
   void build_grids() const;
   /// Appends to found_ every pair the grids hold: particles against particles and edges at
   /// their level and coarser, edges against coarser particles, particles against half-planes
-  /// and spheres.
-  void find_all_pairs() const;
+  /// and spheres. Returns false, with found_ cleared, as soon as found_ would exceed budget_.
+  bool find_all_pairs() const;
   /// Appends the half-planes and spheres that particle p's motion box may come near.
   void find_obstacles(int p) const;
+  bool near_half_plane(int p, int h) const;
+  bool near_sphere(int p, int s) const;
+  /// The pairs of overlapping boxes, in the course's order, without a list (crowds).
+  void visit_directly(const Visitor& visit) const;
+  /// The same for a moving query: each pair tested with the boxes as they are when it comes,
+  /// grown after each visit by grow_after_move.
+  void visit_moving_directly(const PairQuery& query, const MovingVisitor& visit) const;
+  /// Grows p's box and its edges' boxes as follow_move does, without asking for partners.
+  void grow_after_move(const PairQuery& query, int p) const;
   /// Sorts found_ into the course's order (found_ is reordered in place).
   void sort_found() const;
   /// After a visit of a moving query moved particle p: grows its box and its edges' boxes if
@@ -79,6 +110,8 @@ class GridPairs final : public CandidatePairs {
   const SceneModel* model_;
   std::vector<int> incident_start_, incident_edges_;  // edges of each particle, CSR
   double skin_ = 0.0;  // how far a particle may move before static pairs are found afresh
+  std::size_t budget_ = kMinCandidates;  // set by the constructor
+  mutable bool direct_ = false;           // the last search ran over budget_
 
   // Static queries: found_ holds the pairs for every particle within skin_ (per axis) of
   // reference_, for the margin reused_margin_, while reusable_.

@@ -369,6 +369,111 @@ void expect_same_records(const StepRecord& a, const StepRecord& b, const std::st
   }
 }
 
+// ---- crowds: the direct visits past the candidate budget -----------------------------------
+
+/// The random scenes with a budget too small for their candidates: the grid visits the pairs
+/// directly, and they are exactly those of its list (static and swept queries), and a moving
+/// pass acts exactly as with all pairs.
+template <int D>
+void check_direct_visits(unsigned seed) {
+  TestScene scene = random_scene(D, seed, 300, 200, 3);
+  const SceneModel& model = scene.model;
+  const Vector xs = scene.initial.q;
+  const Vector xe = xs + 0.05 * scene.initial.v;
+  const std::string what = "seed " + std::to_string(seed);
+  for (const bool swept : {false, true}) {
+    const PairQuery query{xs, swept ? xe : xs, swept ? 0.0 : 0.02};
+    GridPairs<D> listed(model), direct(model);
+    direct.set_candidate_budget(10);
+    const std::vector<CandidatePair> from_list = collect(listed, query);
+    EXPECT_FALSE(listed.visits_directly()) << what;
+    ASSERT_GT(from_list.size(), 100u) << what;
+    EXPECT_EQ(collect(direct, query), from_list) << what << (swept ? ", swept" : ", static");
+    EXPECT_TRUE(direct.visits_directly()) << what;
+    if (!swept) {  // a second static query reuses the skin's boxes, still directly
+      EXPECT_EQ(collect(direct, query), from_list) << what;
+      EXPECT_EQ(direct.searches(), 1) << what;
+    }
+  }
+  GridPairs<D> direct(model);
+  direct.set_candidate_budget(10);
+  Vector xe_all = xe, xe_direct = xe;
+  const std::vector<CandidatePair> acted_all = moving_pass<D>(AllPairs(model), model, xs, xe_all);
+  const std::vector<CandidatePair> acted_direct = moving_pass<D>(direct, model, xs, xe_direct);
+  EXPECT_TRUE(direct.visits_directly()) << what;
+  ASSERT_GT(acted_all.size(), 30u);
+  EXPECT_EQ(acted_direct, acted_all) << what;
+  EXPECT_EQ(xe_direct, xe_all) << what;
+}
+
+TEST(GridPairs, DirectVisitsPastTheBudgetGiveTheListsPairsIn2D) {
+  for (unsigned seed = 1; seed <= 3; ++seed) check_direct_visits<2>(seed);
+}
+
+TEST(GridPairs, DirectVisitsPastTheBudgetGiveTheListsPairsIn3D) {
+  for (unsigned seed = 1; seed <= 3; ++seed) check_direct_visits<3>(seed);
+}
+
+/// n balls of radius 0.1 within 0.01 of the origin, so that every box overlaps every other,
+/// and a half-plane (or half-space) per axis that every ball overlaps.
+TestScene clustered_scene(int dim, int n, unsigned seed) {
+  Random random(seed);
+  TestScene scene(dim, "symplectic-euler", 0.01);
+  for (int p = 0; p < n; ++p) {
+    scene.add_particle(1.0, random.uniform_vector(dim, -0.01, 0.01),
+                       random.uniform_vector(dim, -1.0, 1.0), false, 0.1);
+  }
+  for (int a = 0; a < dim; ++a) {
+    Vector point = Vector::Zero(dim), normal = Vector::Zero(dim);
+    point[a] = -0.05;  // every ball overlaps it too
+    normal[a] = 1.0;
+    scene.add_half_plane(point, normal);
+  }
+  return scene;
+}
+
+/// A crowd over the default budget: the grid lists nothing (no memory per pair) and visits the
+/// same pairs as all pairs, in the same order; simulations equal all pairs bit for bit.
+template <int D>
+void check_crowd() {
+  constexpr int kBalls = 1200;  // 719,400 pairs, over the budget of 256 per ball
+  TestScene scene = clustered_scene(D, kBalls, 7);
+  SceneModel& model = scene.model;
+  const Vector& q = scene.initial.q;
+  const PairQuery query{q, q, 0.0};
+  GridPairs<D> grid(model);
+  ASSERT_LT(grid.candidate_budget(), std::size_t{kBalls} * (kBalls - 1) / 2);
+  const std::vector<CandidatePair> all = collect(AllPairs(model), query);
+  std::size_t count = 0;
+  bool same = true;
+  grid.for_each(query, [&](const CandidatePair& pair) {
+    same = same && count < all.size() && pair == all[count];
+    ++count;
+  });
+  EXPECT_TRUE(grid.visits_directly());
+  EXPECT_TRUE(same);
+  EXPECT_EQ(count, all.size());
+  for (const CollisionMethod method : {CollisionMethod::kPenalty, CollisionMethod::kSimple}) {
+    model.collisions.method = method;
+    model.collisions.stiffness = 100;
+    model.collisions.thickness = 0.01;
+    model.collisions.detection = PairDetection::kAllPairs;
+    const auto [states_all, records_all] = simulate(model, scene.initial, 2);
+    model.collisions.detection = PairDetection::kDefault;
+    ASSERT_TRUE(uses_grid_pairs(model));
+    const auto [states_grid, records_grid] = simulate(model, scene.initial, 2);
+    for (std::size_t k = 0; k < states_all.size(); ++k) {
+      ASSERT_EQ(states_grid[k].q, states_all[k].q) << collision_method_name(method) << " " << k;
+      ASSERT_EQ(states_grid[k].v, states_all[k].v) << collision_method_name(method) << " " << k;
+      expect_same_records(records_grid[k], records_all[k], "crowd, step " + std::to_string(k));
+    }
+  }
+}
+
+TEST(GridPairs, CrowdsPastTheBudgetAreVisitedLikeAllPairsIn2D) { check_crowd<2>(); }
+
+TEST(GridPairs, CrowdsPastTheBudgetAreVisitedLikeAllPairsIn3D) { check_crowd<3>(); }
+
 /// A crowded random scene in a box, stepped with the grid and with all pairs: the states are
 /// equal bit for bit, and so are the collisions found.
 void check_same_simulation(int dim, CollisionMethod method, unsigned seed) {

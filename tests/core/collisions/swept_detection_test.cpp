@@ -207,6 +207,31 @@ TEST(Hybrid, CourseWorkedExampleThreeBallsWithOneImpulsePass) {
   EXPECT_NEAR(scene.initial.v[4], 0.5, 1e-15);
 }
 
+TEST(Hybrid, PassesThatChangeNothingStopAtMaxIterationsAndTheZonesEnd) {
+  // COR = -1 cancels every impulse: each pass finds the same collisions and leaves the state as
+  // it was (a hostile scene's endless loop). The passes end at max_iterations, the largest the
+  // loader accepts (io/collision_elements.cpp), with a log of 6 polynomials a pass, and the
+  // geometric stage that follows ends too.
+  TestScene scene(2, "explicit-euler", 0.01);
+  scene.add_particle(1, vec({-0.3, 0}), vec({5, 0}), false, 0.25);
+  scene.add_particle(1, vec({0, 0}), vec({0, 0}), false, 0.25);
+  scene.add_particle(1, vec({0.3, 0}), vec({-5, 0}), false, 0.25);
+  scene.model.collisions.method = CollisionMethod::kHybrid;
+  scene.model.collisions.max_iterations = 1000;
+  scene.model.collisions.cor = -1.0;
+  scene.model.collisions.stiffness = 0.0;
+  scene.model.collisions.thickness = 0.1;
+  StepPipeline pipeline(scene.model);
+  StepRecord record;
+  pipeline.step(scene.initial, &record);
+  ASSERT_TRUE(record.sync);
+  EXPECT_EQ(record.sync->polynomials_logged, 6000u);
+  EXPECT_GT(record.polynomials.size(), 6000u);  // the geometric stage's passes
+  EXPECT_LT(record.polynomials.size(), 6000u + 6u * 10u);
+  // All three in one zone, moved rigidly: momentum (zero) is kept, the balls stop.
+  EXPECT_NEAR(scene.initial.v.norm(), 0.0, 1e-12);
+}
+
 TEST(Hybrid, ZonesTouchingAHalfPlaneOrAFixedParticleStopDead) {
   TestScene scene(2, "explicit-euler", 0.01);
   scene.add_particle(1, vec({0, 0.3}), vec({0, -50}), false, 0.1);
