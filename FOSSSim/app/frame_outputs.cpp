@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "io/output_file.h"
 #include "io/trajectory_file.h"
+#include "io/trajectory_steps.h"
 #include "pictures/cairo_painter.h"
 #include "pictures/energy_plot.h"
 #include "pictures/movie_writer.h"
@@ -40,21 +41,7 @@ class TrajectoryOutput final : public FrameOutput {
   TrajectoryOutput(TrajectoryWriter writer, TrajectoryLayout layout)
       : writer_(std::move(writer)), layout_(layout) {}
   void write(Frame& frame) override {
-    const State& state = frame.state();
-    const StepRecord* record = frame.record();
-    if (record == nullptr) {
-      writer_.write_record(layout_, state.q, state.v, {}, {});
-    } else {
-      if (layout_ == TrajectoryLayout::kCollisionsAndPolynomials) {
-        const SyncPoint sync =
-            record->sync.value_or(SyncPoint{state.q, state.v, record->polynomials.size()});
-        const std::vector<Polynomial> logged(
-            record->polynomials.begin(),
-            record->polynomials.begin() + static_cast<std::ptrdiff_t>(sync.polynomials_logged));
-        writer_.write_record(layout_, sync.q, sync.v, record->collisions, logged);
-      }
-      writer_.write_record(layout_, state.q, state.v, record->collisions, record->polynomials);
-    }
+    write_trajectory_state(writer_, layout_, frame.state(), frame.record());
     ++frames_;
   }
   void commit() override { writer_.commit(); }
