@@ -1,0 +1,33 @@
+# The libraries FOSSSim links that have no CMake package files on Debian, as imported targets:
+# SuiteSparse::CHOLMOD, SuiteSparse::UMFPACK and MUMPS::mumps. Included by the build and by the
+# installed package (FOSSSimConfig.cmake), so that a project linking FOSSSim's static libraries
+# finds them the same way; each target is made only once.
+
+if(NOT TARGET SuiteSparse::CHOLMOD)
+  # SuiteSparse's CHOLMOD (sparse Cholesky) and UMFPACK (sparse LU), which bring the BLAS Debian
+  # selects (OpenBLAS, threaded, from libopenblas-dev). Debian's libsuitesparse-dev has no CMake
+  # package files.
+  find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
+  find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
+  find_library(UMFPACK_LIBRARY umfpack REQUIRED)
+  add_library(SuiteSparse::CHOLMOD UNKNOWN IMPORTED)
+  set_target_properties(SuiteSparse::CHOLMOD PROPERTIES IMPORTED_LOCATION ${CHOLMOD_LIBRARY}
+                        INTERFACE_INCLUDE_DIRECTORIES ${CHOLMOD_INCLUDE_DIR})
+  add_library(SuiteSparse::UMFPACK UNKNOWN IMPORTED)
+  set_target_properties(SuiteSparse::UMFPACK PROPERTIES IMPORTED_LOCATION ${UMFPACK_LIBRARY}
+                        INTERFACE_INCLUDE_DIRECTORIES ${CHOLMOD_INCLUDE_DIR})
+  # MUMPS, sequential (libmumps-seq-dev): the symmetric indefinite factorization of step
+  # matrices, in double and in single precision. Debian installs its headers in the default path, the sequential MPI stubs it
+  # needs in mumps_seq/.
+  find_path(MUMPS_INCLUDE_DIR dmumps_c.h REQUIRED)
+  find_path(MUMPS_SEQ_MPI_INCLUDE_DIR mpi.h PATHS /usr/include/mumps_seq NO_DEFAULT_PATH REQUIRED)
+  find_library(DMUMPS_LIBRARY dmumps_seq REQUIRED)
+  find_library(SMUMPS_LIBRARY smumps_seq REQUIRED)
+  find_library(MUMPS_COMMON_LIBRARY mumps_common_seq REQUIRED)
+  find_library(MUMPS_MPISEQ_LIBRARY mpiseq_seq REQUIRED)
+  add_library(MUMPS::mumps INTERFACE IMPORTED)
+  set_target_properties(MUMPS::mumps PROPERTIES
+                        INTERFACE_INCLUDE_DIRECTORIES "${MUMPS_INCLUDE_DIR};${MUMPS_SEQ_MPI_INCLUDE_DIR}"
+                        INTERFACE_LINK_LIBRARIES
+                        "${DMUMPS_LIBRARY};${SMUMPS_LIBRARY};${MUMPS_COMMON_LIBRARY};${MUMPS_MPISEQ_LIBRARY}")
+endif()
