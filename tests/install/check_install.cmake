@@ -19,7 +19,6 @@ file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 
-include(GNUInstallDirs)
 foreach(file IN ITEMS bin/FOSSSim bin/FOSSSim-generate bin/fosssim-oracle
                       include/fosssim/core/force.h include/fosssim/io/scene_loader.h)
   if(NOT EXISTS ${prefix}/${file})
@@ -34,7 +33,7 @@ endif()
 
 # The installed program runs a scene.
 set(scene ${SOURCE_DIR}/assets/t1m1/springs_spinning_triangle.xml)
-run(${prefix}/bin/FOSSSim -s ${scene} -o ${WORK_DIR}/installed.bin -q)
+run(${prefix}/bin/FOSSSim -s ${scene} -d 0 -o ${WORK_DIR}/installed.bin -q)
 
 # A project of its own, against the installed tree only.
 set(launcher "")
@@ -52,15 +51,20 @@ message(STATUS "consumer: ${run_output}")
 
 # The installed Python module imports and runs the same scene.
 if(PYTHON)
-  file(GLOB_RECURSE module ${prefix}/*/fosssim/__init__.py)
+  file(GLOB_RECURSE module ${prefix}/*.py)
+  list(FILTER module INCLUDE REGEX "/fosssim/__init__\\.py$")
   if(NOT module)
     message(FATAL_ERROR "the install has no Python package fosssim")
   endif()
   list(GET module 0 module)
   cmake_path(GET module PARENT_PATH package)
   cmake_path(GET package PARENT_PATH site)
+  # Statements separated by newlines: a ';' would split the argument into a CMake list.
   run(${CMAKE_COMMAND} -E env PYTHONPATH=${site} ${PYTHON} -c
-      "import fosssim; s = fosssim.Simulation(fosssim.load_scene('${scene}')); s.run(); print(s.step_count)")
+      "import fosssim\ns = fosssim.Simulation(fosssim.load_scene('${scene}'))\ns.run()\nprint(s.step_count, fosssim.__file__)")
+  if(NOT run_output MATCHES "^4000 ${site}/fosssim/__init__.py")
+    message(FATAL_ERROR "the installed module printed: ${run_output}")
+  endif()
   message(STATUS "installed module ran ${run_output}")
 endif()
 file(REMOVE_RECURSE ${WORK_DIR})
