@@ -99,3 +99,16 @@ def test_arrays_of_the_wrong_size_are_refused(scene):
         scene.gradient(np.zeros(5))
     np.testing.assert_array_equal(scene.gradient(np.zeros((3, 2)) + 1.0),
                                   scene.gradient(np.ones(6)))
+
+
+def test_definite_hessian_of_a_compressed_spring(scene, point):
+    # Spring of edge 1 is compressed (length 1.17 < l0 = 1.4): its exact hessX has a negative
+    # eigenvalue (transverse), the definite one has none and keeps the axial stiffness.
+    q, v = point
+    spring = [f for f in scene.forces if f.label.startswith("spring")][1]
+    assert np.linalg.norm(q[4:6] - q[2:4]) < 1.4
+    exact = np.linalg.eigvalsh(spring.hessian_x(q, v).toarray())
+    definite = np.linalg.eigvalsh(spring.hessian_x(q, v, definite=True).toarray())
+    assert exact.min() < -1e-3
+    assert definite.min() > -1e-12
+    assert definite.max() == pytest.approx(exact.max(), rel=1e-12)

@@ -17,6 +17,8 @@ SAME_BYTES_SCENES = [
     "assets/t2m1/explicit_cor_bouncing_ball.xml",
     "assets/t2m1/implicit_penalty_chain_on_edge.xml",
     "assets/t2m2/explicit_continuous_head_on.xml",
+    "assets3d/scenes/chain.xml",  # 3D, a generated mesh, local/global
+    "assets3d/json/cloth_9x9.json",  # the JSON format, an OBJ mesh
 ]
 
 PROJECTILE = """<scene>
@@ -168,6 +170,11 @@ def test_render_draws_the_scene(source_dir, tmp_path):
     assert (tmp_path / "frame.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     with pytest.raises(ValueError, match="between 16 and 8192"):
         simulation.render(0, 10)
+    chain = fosssim.Simulation(fosssim.load_scene(str(source_dir / "assets3d/scenes/chain.xml")))
+    chain.step(10)
+    picture = chain.render(64, 64)
+    assert picture.shape == (64, 64, 3)
+    assert np.any(np.any(picture != picture[0, 0], axis=2))  # something drawn on the background
 
 
 def test_a_long_step_releases_the_gil_and_stops_on_ctrl_c():
