@@ -6,13 +6,14 @@ set -eu
 # libmumps-seq-dev: the symmetric indefinite factorization of step matrices (sequential MUMPS).
 # pybind11-dev and python3-dev build the Python module (python/); NumPy and SciPy are what it
 # returns, pytest runs its tests, matplotlib draws the examples' plots (examples/python/).
+# dpkg-dev: dpkg-shlibdeps finds the .deb's library dependencies (cpack -G DEB, tests/install).
 # clang, libclang-rt-14-dev (libFuzzer and clang's sanitizer runtimes) and llvm (the symbolizer
 # of sanitizer reports) build and run the fuzz targets of fuzz/.
 PACKAGES="cmake ninja-build g++ pkg-config
   libeigen3-dev libtinyxml2-dev libcli11-dev nlohmann-json3-dev libsuitesparse-dev libopenblas-dev
   libmumps-seq-dev
   libgtest-dev libbenchmark-dev python3
-  pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib
+  pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib dpkg-dev
   libcairo2-dev libssl-dev freeglut3-dev ffmpeg xvfb xauth
   clang libclang-rt-14-dev llvm
   bubblewrap"
