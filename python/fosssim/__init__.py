@@ -10,6 +10,8 @@ derivatives, write and grade trajectories, draw pictures. See docs/python.md.
     print(sim.time, sim.positions)
 """
 
+__version__ = "@PROJECT_VERSION@"
+
 from ._core import (
     Collision,
     Error,
@@ -27,6 +29,7 @@ from ._core import (
 )
 
 __all__ = [
+    "__version__",
     "Collision",
     "Error",
     "Force",

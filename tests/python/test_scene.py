@@ -101,3 +101,7 @@ def test_the_integrator_cannot_change_under_a_simulation():
     del simulation
     scene.set_integrator("explicit-euler")
     assert scene.integrator == "explicit-euler"
+
+
+def test_the_package_has_the_projects_version():
+    assert fosssim.__version__ == "0.1.0"

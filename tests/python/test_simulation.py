@@ -187,3 +187,18 @@ def test_a_long_step_releases_the_gil_and_stops_on_ctrl_c():
     timer.join()
     assert 0 < simulation.step_count < 10**12
     assert simulation.time == pytest.approx(simulation.step_count * 0.125)
+
+
+def test_an_interrupted_run_leaves_only_an_incomplete_trajectory(tmp_path):
+    scene = fosssim.load_scene_text(PROJECTILE.replace('time="1"', 'time="1e9"'))
+    simulation = fosssim.Simulation(scene)
+    path = tmp_path / "long.bin"
+    timer = threading.Timer(0.2, _thread.interrupt_main)
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        simulation.run(trajectory=str(path))
+    timer.join()
+    assert not path.exists()
+    kept = (tmp_path / "long.bin.incomplete").stat().st_size
+    frame = 2 * scene.num_dofs * 8
+    assert kept % frame == 0 and kept // frame == simulation.step_count + 1
