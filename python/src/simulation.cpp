@@ -323,7 +323,12 @@ void add_simulation_bindings(py::module_& module) {
       "Runs a scene with its integrator and collision handling, as the FOSSSim program does. "
       "q, v, positions and velocities are read-only views that follow the simulation "
       "(docs/python.md); copy them to keep a state.")
-      .def(py::init<std::shared_ptr<PyScene>>(), py::arg("scene"))
+      .def(py::init([](std::shared_ptr<PyScene> scene) {
+             // Binding the integrator may factorize large matrices: other threads run meanwhile.
+             py::gil_scoped_release release;
+             return std::make_unique<PySimulation>(std::move(scene));
+           }),
+           py::arg("scene"))
       .def_property_readonly("scene", &PySimulation::scene_object)
       .def("step", [](PySimulation& s, std::int64_t n) { s.step(n); }, py::arg("n") = 1,
            "Takes n steps (the GIL is released; Ctrl-C stops between steps). Raises "
