@@ -43,9 +43,12 @@ endif()
 run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/install/consumer -B ${WORK_DIR}/consumer -G ${GENERATOR}
     -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix} ${launcher})
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/consumer)
-run(${WORK_DIR}/consumer/consumer ${scene})
+run(${WORK_DIR}/consumer/consumer ${scene} ${WORK_DIR}/last.png)
 if(NOT run_output MATCHES "^steps [0-9]+ time [0-9.e+-]+ energy ")
   message(FATAL_ERROR "the consumer printed: ${run_output}")
+endif()
+if(NOT EXISTS ${WORK_DIR}/last.png)
+  message(FATAL_ERROR "the consumer wrote no picture")
 endif()
 message(STATUS "consumer: ${run_output}")
 

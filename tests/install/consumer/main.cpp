@@ -1,5 +1,6 @@
 // Loads a scene with an installed FOSSSim, runs it to its end and prints where it ended and its
-// energy; a located error for a bad scene.
+// energy, and draws the last state into a PNG file (Cairo, through FOSSSim::pictures); a
+// located error for a bad scene.
 #include <iostream>
 
 #include "core/error.h"
@@ -7,10 +8,12 @@
 #include "core/force_set.h"
 #include "core/step/simulation.h"
 #include "io/scene_loader.h"
+#include "pictures/cairo_painter.h"
+#include "render/scene_view.h"
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::cerr << "usage: consumer SCENE\n";
+  if (argc != 3) {
+    std::cerr << "usage: consumer SCENE PICTURE.png\n";
     return 2;
   }
   try {
@@ -23,6 +26,8 @@ int main(int argc, char** argv) {
               << fosssim::compute_kinetic_energy(scene.model, state.v) +
                      fosssim::compute_potential_energy(forces, state.q, state.v)
               << "\n";
+    const fosssim::SceneView view(scene, state, 64, 64);
+    fosssim::write_png(view.compose(state), argv[2]);
     return 0;
   } catch (const fosssim::Error& error) {
     std::cerr << error.what() << "\n";
