@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <variant>
 
 #include "atomic_file.h"
@@ -48,6 +49,7 @@ struct GradeCommand {
   int jobs = 1;
   std::string shard = "1/1";
   double timeout = 600.0;
+  std::string timeouts;  ///< --timeouts FILE: per-scene wall-time limits
   std::string shard_result, diagnose_dir, work_dir;
   bool keep_work = false;
   bool no_sandbox = false;
@@ -60,6 +62,53 @@ struct GradeCommand {
 
 /// Longest --timeout: a week. Larger values (and inf, nan) are refused, not taken as "none".
 constexpr double kMaxTimeoutSeconds = 7 * 24 * 3600.0;
+
+/// Sets each scene's own time-out from a --timeouts file: one line per scene, its name (as in
+/// the reports) and seconds, separated by white space; '#' starts a comment. A line for a scene
+/// that is not in the run, a repeated scene, or seconds outside (0, a week] is an error naming
+/// the file and line. Scenes without a line keep --timeout. The file holds at most one line per
+/// scene of the run plus comments: it is read under the text-file size limit of io/.
+void apply_timeouts_file(const std::string& path, std::vector<SceneEntry>& scenes) {
+  std::string text;
+  try {
+    text = read_text_file(path);
+  } catch (const Error& error) {
+    throw Error(ErrorKind::kBadInput, "--timeouts " + path + ": " + error.what());
+  }
+  std::map<std::string, SceneEntry*> by_name;
+  for (SceneEntry& entry : scenes) by_name[entry.name] = &entry;
+  std::map<std::string, int> seen;
+  const std::vector<Word> words = split_words(text);
+  for (std::size_t i = 0; i < words.size(); i += 2) {
+    const Word& name = words[i];
+    const auto where = [&](int line) { return path + ":" + std::to_string(line) + ": "; };
+    if (i + 1 >= words.size() || words[i + 1].line != name.line) {
+      throw Error(ErrorKind::kBadInput, where(name.line) + "expected a scene name and seconds");
+    }
+    if (i + 2 < words.size() && words[i + 2].line == name.line) {
+      throw Error(ErrorKind::kBadInput,
+                  where(name.line) + "more than a scene name and seconds on one line");
+    }
+    double seconds = 0.0;
+    if (!parse_finite(words[i + 1].text, seconds) || !(seconds > 0.0) ||
+        seconds > kMaxTimeoutSeconds) {
+      throw Error(ErrorKind::kBadInput, where(name.line) + "seconds " + quote(words[i + 1].text) +
+                                            " are not a number above 0 and at most a week");
+    }
+    const std::string scene(name.text);
+    const auto found = by_name.find(scene);
+    if (found == by_name.end()) {
+      throw Error(ErrorKind::kBadInput,
+                  where(name.line) + "no scene " + quote(scene) + " in this run");
+    }
+    if (const auto [previous, fresh] = seen.emplace(scene, name.line); !fresh) {
+      throw Error(ErrorKind::kBadInput, where(name.line) + "scene " + quote(scene) +
+                                            " already given on line " +
+                                            std::to_string(previous->second));
+    }
+    found->second->timeout_seconds = seconds;
+  }
+}
 /// Largest --points-per-scene.
 constexpr double kMaxPointsPerScene = 1e6;
 /// Most -j workers, and most --max-processes.
@@ -186,11 +235,12 @@ int report(const GradingRun& run, const ReportOptions& options) {
 int run_grade(const GradeCommand& command) {
   const auto start = std::chrono::steady_clock::now();
   const Shard shard = parse_shard(command.shard);
-  const std::vector<SceneEntry> scenes = discover_scenes(command.folders, command.extra_credit);
+  std::vector<SceneEntry> scenes = discover_scenes(command.folders, command.extra_credit);
   if (scenes.empty()) {
     std::cerr << "fosssim-oracle: error: no scene files (*.xml) in the given folders\n";
     return kExitBadInput;
   }
+  if (!command.timeouts.empty()) apply_timeouts_file(command.timeouts, scenes);
   check_work_dir(command.work_dir);
   GradingOptions options;
   options.run.candidate = resolve_executable(command.candidate);
@@ -225,6 +275,7 @@ int run_grade(const GradeCommand& command) {
   read_scene_files(selected);
   std::vector<std::string> inputs = {options.run.candidate};
   for (const SceneEntry& entry : scenes) inputs.push_back(entry.path);
+  if (!command.timeouts.empty()) inputs.push_back(command.timeouts);
   for (const SceneEntry& entry : selected) {
     for (const auto& file : entry.files) inputs.push_back(file.first);
   }
@@ -375,6 +426,9 @@ void add_grade_command(CLI::App& app, GradeCommand& c) {
                    "to the same, rounded up)")
       ->check(finite_number(0.0, kMaxTimeoutSeconds))
       ->capture_default_str();
+  grade->add_option("--timeouts", c.timeouts,
+                    "A file of per-scene time-outs: lines '<scene name> <seconds>' (names as in "
+                    "the\nreports); scenes it does not list keep --timeout");
   grade->add_flag("--no-sandbox", c.no_sandbox,
                   "Run the candidate without the bubblewrap sandbox (where it cannot be built):\n"
                   "it then sees and can write whatever this user can; the limits still apply");

@@ -211,7 +211,9 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
   try {
     WorkFolder work(options.work_dir);
     if (options.keep_work) work.keep();
-    const CandidateRun run = run_candidate(entry.path, expected_bytes, options.run, work,
+    CandidateRunOptions run_options = options.run;
+    if (entry.timeout_seconds) run_options.timeout_seconds = *entry.timeout_seconds;
+    const CandidateRun run = run_candidate(entry.path, expected_bytes, run_options, work,
                                            trajectory_size_is_exact(model), scene_files);
     result.run_seconds = run.seconds;
     result.stderr_tail = run.stderr_tail;

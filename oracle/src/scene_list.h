@@ -29,6 +29,9 @@ struct SceneEntry {
   std::map<std::string, std::string> files;
   /// Set when read_scene_files() could not load the scene: the loader's message.
   std::optional<std::string> load_error;
+  /// This scene's wall-time limit in seconds, when `grade --timeouts` names it; otherwise the
+  /// run's --timeout applies.
+  std::optional<double> timeout_seconds;
   /// The report group: the name of the folder that holds the file ("assets/t1m1").
   std::string suite() const;
 };
