@@ -6,6 +6,8 @@ set -eu
 # libmumps-seq-dev: the symmetric indefinite factorization of step matrices (sequential MUMPS).
 # pybind11-dev and python3-dev build the Python module (python/); NumPy and SciPy are what it
 # returns, pytest runs its tests, matplotlib draws the examples' plots (examples/python/).
+# bubblewrap confines the candidates fosssim-oracle grades; parallel (GNU parallel) runs the
+# autograder kit's recipe for many submissions (autograder/grade-many.sh).
 # dpkg-dev: dpkg-shlibdeps finds the .deb's library dependencies (cpack -G DEB, tests/install).
 # clang, libclang-rt-14-dev (libFuzzer and clang's sanitizer runtimes) and llvm (the symbolizer
 # of sanitizer reports) build and run the fuzz targets of fuzz/.
@@ -16,7 +18,7 @@ PACKAGES="cmake ninja-build g++ pkg-config
   pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib dpkg-dev
   libcairo2-dev libssl-dev freeglut3-dev ffmpeg xvfb xauth
   clang libclang-rt-14-dev llvm
-  bubblewrap"
+  bubblewrap parallel"
 
 missing=""
 for package in $PACKAGES; do

@@ -232,6 +232,26 @@ if merge.returncode == 0:
           "the merged Slurm shards: score %s over %d tests, expected 2 over 2"
           % (report["score"], len(report["tests"])))
 
+# The zip for Gradescope: setup.sh and run_autograder at its top, executable, and the
+# repository's copy that setup.sh builds.
+if shutil.which("git") and os.path.exists(os.path.join(SOURCE, ".git")):
+    import zipfile
+    archive = os.path.join(WORK, "autograder.zip")
+    made = subprocess.run([os.path.join(KIT, "make-zip.sh"), archive], capture_output=True,
+                          text=True, timeout=120)
+    check(made.returncode == 0, "make-zip.sh exited %d: %s" % (made.returncode, made.stderr))
+    if made.returncode == 0:
+        with zipfile.ZipFile(archive) as z:
+            names = set(z.namelist())
+            for name in ("setup.sh", "run_autograder"):
+                check(name in names and (z.getinfo(name).external_attr >> 16) & 0o111,
+                      "the zip has no executable " + name)
+            for name in ("fosssim/CMakeLists.txt", "fosssim/tools/install-deps.sh",
+                         "fosssim/autograder/run_autograder", "fosssim/assets/t1m1/springs_single.xml"):
+                check(name in names, "the zip has no " + name)
+else:
+    print("SKIP: make-zip.sh needs a git checkout")
+
 if failures:
     print("%d check(s) failed" % len(failures))
     sys.exit(1)
