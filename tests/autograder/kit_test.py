@@ -169,7 +169,7 @@ for sample, (score, verdict) in expected.items():
     if sample == "hostile":
         text = json.dumps(report)
         for attempt in ("write outside", "write beside", "write own folder",
-                        "read other submission", "open socket"):
+                        "read other submission", "open socket", "read other submission while built"):
             check("BLOCKED: " + attempt in text, "hostile: no 'BLOCKED: %s' in the report" % attempt)
         check("ESCAPED" not in text, "hostile: the report says it escaped: " + text[:3000])
         check("LEFT: sleep " + TOKEN in text, "hostile: it did not get to leave a process")
