@@ -164,6 +164,35 @@ TEST(OracleCommand, OptionValuesAreCheckedBeforeAnyCandidateRuns) {
   refused({"--allow-read", out / "no-such-file"}, "--allow-read");
 }
 
+TEST(OracleCommand, PerSceneTimeoutsComeFromTheTimeoutsFile) {
+  TemporaryFolder out;
+  const std::string basics = std::string(testing::kAssets) + "/basics";
+  // One scene gets 0.5 s from the file; the other keeps --timeout (1 s).
+  testing::write_bytes(out / "timeouts.tsv",
+                      "# per-scene time-outs\nbasics/spring_chain_explicit.xml 0.5\n");
+  const ChildOutcome run =
+      oracle({"grade", "-q", "--candidate", testing::candidate("hanging_candidate.sh"), "-j", "2",
+              "--timeout", "1", "--timeouts", out / "timeouts.tsv", basics});
+  EXPECT_EQ(run.exit_status, 1) << run.stdout_tail << run.stderr_tail;
+  EXPECT_NE(run.stdout_tail.find("spring_chain_explicit.xml: TIMEOUT: the candidate did not "
+                                 "finish within the timeout of 0.5 s"),
+            std::string::npos)
+      << run.stdout_tail;
+  EXPECT_NE(run.stdout_tail.find("spring_chain_symplectic.xml: TIMEOUT: the candidate did not "
+                                 "finish within the timeout of 1 s"),
+            std::string::npos)
+      << run.stdout_tail;
+  // A scene that is not in the run is refused before any candidate runs, naming file and line.
+  testing::write_bytes(out / "bad.tsv", "basics/spring_chain_explicit.xml 0.5\nbasics/none.xml 1\n");
+  const ChildOutcome bad =
+      oracle({"grade", "-q", "--candidate", testing::candidate("hanging_candidate.sh"),
+              "--timeouts", out / "bad.tsv", basics});
+  EXPECT_EQ(bad.exit_status, 2);
+  EXPECT_NE(bad.stderr_tail.find(out / "bad.tsv" + ":2: no scene \"basics/none.xml\""),
+            std::string::npos)
+      << bad.stderr_tail;
+}
+
 TEST(OracleCommand, ReportsNeverReplaceAnInput) {
   TemporaryFolder out;
   std::filesystem::copy(testing::kAssets, out / "suite", std::filesystem::copy_options::recursive);
