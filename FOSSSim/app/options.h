@@ -26,6 +26,7 @@ struct Options {
   std::vector<std::string> integrator_options;
   std::string residual_file = "residual.txt";
   bool check_derivatives = false;
+  int threads = 1;  ///< --threads: of the BLAS behind the sparse solvers
   bool quiet = false;
   std::string progress = "auto";  ///< --progress auto|bar|lines|off
   double progress_every = 10.0;    ///< --progress-every SECONDS between progress lines
