@@ -104,6 +104,12 @@ void add_limit_options(CLI::App& app, Options& options) {
       ->check(CLI::Range(std::int64_t{3}, std::int64_t{1} << 16))
       ->capture_default_str()
       ->group(group);
+  app.add_option("--max-hybrid-passes", options.max_hybrid_passes,
+                 "Make at most this many impulse passes a step of hybrid collision handling;\n"
+                 "a larger maxiters is read as this many, with a warning")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{2147483647}))
+      ->capture_default_str()
+      ->group(group);
 }
 
 /// Throws Error (kBadInput) with a message.
@@ -269,6 +275,7 @@ Limits limits_of(const Options& options) {
   limits.max_file_bytes = options.max_file_mib << 20;
   limits.max_face_corners = options.max_face_corners;
   limits.max_attributes = options.max_attributes;
+  limits.max_hybrid_passes = options.max_hybrid_passes;
   return limits;
 }
 
@@ -367,7 +374,7 @@ void add_options(CLI::App& app, Options& options) {
   for (const char* name : {"-d", "-p", "--threads", "--duration", "--dt", "--newton-max-iterations",
                            "--newton-tolerance", "-g", "--movie-stride", "--fps",
                            "--window-screenshot-step", "--max-steps", "--max-particles",
-                           "--max-file-size", "--max-face-corners", "--max-attributes"}) {
+                           "--max-file-size", "--max-face-corners", "--max-attributes", "--max-hybrid-passes"}) {
     app.get_option(name)->check(decimal_number());
   }
   for (const char* name : {"-s", "-o", "-i", "--residual-file", "--png-dir", "-m", "--movie",

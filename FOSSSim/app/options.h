@@ -55,6 +55,7 @@ struct Options {
   std::int64_t max_file_mib = Limits{}.max_file_bytes >> 20;  ///< --max-file-size, MiB
   std::int64_t max_face_corners = Limits{}.max_face_corners;  ///< --max-face-corners
   std::int64_t max_attributes = Limits{}.max_attributes;      ///< --max-attributes
+  std::int64_t max_hybrid_passes = Limits{}.max_hybrid_passes;  ///< --max-hybrid-passes
 };
 
 /// The limits the options set.

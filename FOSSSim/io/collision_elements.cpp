@@ -19,12 +19,6 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-/// The most impulse passes a step of hybrid handling makes, whatever maxiters asks: each pass
-/// tests (and logs the polynomials of) every pair, so a huge maxiters on a jammed scene would
-/// loop and grow the step's log for hours (docs/limits-and-failures.md). A hundred times the
-/// course's default; the course's own scenes ask for 0, 1 or the default 10.
-constexpr double kMaxHybridPasses = 1000.0;
-
 constexpr std::array<std::string_view, 6> kElements = {
     "halfplane", "halfplanecolor", "sphere", "spherecolor", "collision", "collisiondetection"};
 
@@ -49,8 +43,9 @@ std::vector<const XMLElement*> children(const XMLElement& root, const char* name
 
 class CollisionReader {
  public:
-  CollisionReader(Scene& scene, const std::string& file, SceneErrorList& errors)
-      : scene_(scene), file_(file), errors_(errors) {}
+  CollisionReader(Scene& scene, const std::string& file, const Limits& limits,
+                  SceneErrorList& errors)
+      : scene_(scene), file_(file), limits_(limits), errors_(errors) {}
 
   /// Reads every element, each in errors_.attempt(). The colours of half-planes (spheres) are
   /// read only when every half-plane (sphere) could be: the numbering of the others depends on
@@ -228,12 +223,16 @@ class CollisionReader {
                     ", as the course reads it");
       }
       double passes = whole;
-      if (!(whole <= kMaxHybridPasses)) {  // a NaN too
-        warn(r, "maxiters = " + to_text(iterations) + " is more than FOSSSim's limit of " +
-                    to_text(kMaxHybridPasses) + " impulse passes a step; " +
-                    to_text(kMaxHybridPasses) +
-                    " are made (docs/limits-and-failures.md, \"Hybrid passes\")");
-        passes = kMaxHybridPasses;
+      // Each pass tests (and logs the polynomials of) every pair, so a huge maxiters on a
+      // jammed scene would loop and grow the step's log for hours (docs/limits-and-failures.md).
+      const double most = static_cast<double>(limits_.max_hybrid_passes);
+      if (!(whole <= most)) {  // a NaN too
+        const std::string limit = std::to_string(limits_.max_hybrid_passes);
+        warn(r, "maxiters = " + to_text(iterations) + " is more than the limit of " + limit +
+                    " impulse passes a step; " + limit +
+                    " are made (raise it with --max-hybrid-passes N; "
+                    "docs/limits-and-failures.md, \"Hybrid passes\")");
+        passes = most;
       }
       s.max_iterations = static_cast<int>(std::max(passes, -1.0));
     }
@@ -264,6 +263,7 @@ class CollisionReader {
 
   Scene& scene_;
   const std::string& file_;
+  const Limits& limits_;
   SceneErrorList& errors_;
 };
 
@@ -283,8 +283,8 @@ bool is_collision_element(std::string_view name) {
 std::span<const std::string_view> collision_element_names() { return kElements; }
 
 void read_collision_elements(const XMLElement& root, Scene& scene, const std::string& file,
-                             SceneErrorList& errors) {
-  CollisionReader(scene, file, errors).read(root);
+                             const Limits& limits, SceneErrorList& errors) {
+  CollisionReader(scene, file, limits, errors).read(root);
 }
 
 std::string separate_run_together_attributes(std::string_view text, const std::string& file,

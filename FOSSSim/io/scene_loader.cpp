@@ -130,7 +130,7 @@ class SceneParser {
     read_particles();
     read_edges();
     mesh_forces_ = read_mesh_elements(root, scene_, file_, files_, errors_);
-    read_collision_elements(root, scene_, file_, errors_);
+    read_collision_elements(root, scene_, file_, files_.limits(), errors_);
     read_forces();
     read_appearance();
     errors_.throw_if_any();

@@ -229,4 +229,31 @@ TEST_F(CommandLine3D, ThreadsMustBeAPositiveCount) {
   }
 }
 
+// Issue 24: a signal used to be looked at between steps only, so a step that never ends could
+// not be interrupted. Here one step is a million local/global iterations of a 40x40 cloth
+// (minutes); SIGTERM must end the run within 2 s, in the middle of that step, keeping its
+// frames as out.bin.incomplete and leaving nothing under the final name.
+TEST_F(CommandLine3D, SigtermEndsARunInsideAStepThatWouldTakeMinutes) {
+  write("long.xml", R"(<scene dim="3">
+  <duration time="1"/>
+  <integrator type="local-global" dt="0.01" iterations="1000000" tolerance="0"/>
+  <generate type="cloth" nx="40" ny="40" plane="xz" pin="corners" k="1000" m="0.001"/>
+  <simplegravity fx="0" fy="-9.8" fz="0"/>
+</scene>)");
+  const ProgramResult result =
+      run(kFosssim + " -s " + path("long.xml") + " -d 0 -q -o " + path("out.bin") +
+          " & pid=$!; i=0; while [ $i -lt 600 ] && ! ls | grep -q 'partial$'; do sleep 0.05; "
+          "i=$((i+1)); done; sleep 0.5; start=$(date +%s%N); kill -s TERM $pid; wait $pid; "
+          "status=$?; echo \"ms $(( ($(date +%s%N) - start) / 1000000 ))\"; exit $status");
+  EXPECT_EQ(result.status, 130) << result.output();
+  EXPECT_NE(result.err.find("FOSSSim: interrupted by signal 15 (Terminated) at step 0"),
+            std::string::npos)
+      << result.err;
+  const std::size_t at = result.out.find("ms ");
+  ASSERT_NE(at, std::string::npos) << result.output();
+  EXPECT_LT(std::stol(result.out.substr(at + 3)), 2000) << result.output();
+  EXPECT_FALSE(std::filesystem::exists(path("out.bin")));
+  EXPECT_TRUE(std::filesystem::exists(path("out.bin.incomplete")));
+}
+
 }  // namespace
