@@ -371,10 +371,11 @@ void add_options(CLI::App& app, Options& options) {
   add_picture_options(app, options);
   add_limit_options(app, options);
   // Numbers read as the scene readers read them (no "0x10"), and no empty file names.
-  for (const char* name : {"-d", "-p", "--threads", "--duration", "--dt", "--newton-max-iterations",
-                           "--newton-tolerance", "-g", "--movie-stride", "--fps",
-                           "--window-screenshot-step", "--max-steps", "--max-particles",
-                           "--max-file-size", "--max-face-corners", "--max-attributes", "--max-hybrid-passes"}) {
+  for (const char* name :
+       {"-d", "-p", "--threads", "--duration", "--dt", "--newton-max-iterations",
+        "--newton-tolerance", "-g", "--movie-stride", "--fps", "--window-screenshot-step",
+        "--max-steps", "--max-particles", "--max-file-size", "--max-face-corners",
+        "--max-attributes", "--max-hybrid-passes"}) {
     app.get_option(name)->check(decimal_number());
   }
   for (const char* name : {"-s", "-o", "-i", "--residual-file", "--png-dir", "-m", "--movie",

@@ -32,8 +32,7 @@ std::span<const std::string_view> collision_element_names();
 /// naming file, line and element) goes into `errors`, and reading goes on with the next one.
 /// A `maxiters` above limits.max_hybrid_passes is read as that many, with a warning.
 void read_collision_elements(const tinyxml2::XMLElement& root, Scene& scene,
-                             const std::string& file, const Limits& limits,
-                             SceneErrorList& errors);
+                             const std::string& file, const Limits& limits, SceneErrorList& errors);
 
 /// Inserts the blank that is missing between two attributes written one after the other,
 /// `vx="0"vy="0"`, which XML forbids and the course's parser reads as two attributes (an

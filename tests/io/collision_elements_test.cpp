@@ -77,8 +77,8 @@ TEST(CollisionElements, MaxitersAboveTheLimitIsCappedWithAWarning) {
             "docs/limits-and-failures.md, \"Hybrid passes\")");
   // The limit itself, and the course's values, are taken as they are.
   for (const int passes : {0, 1, 10, 1000}) {
-    const Scene at = load("<collision type=\"hybrid\" maxiters=\"" + std::to_string(passes) +
-                          "\"/>\n");
+    const Scene at =
+        load("<collision type=\"hybrid\" maxiters=\"" + std::to_string(passes) + "\"/>\n");
     EXPECT_EQ(at.model.collisions.max_iterations, passes);
     EXPECT_TRUE(at.warnings.empty()) << passes;
   }
@@ -86,8 +86,8 @@ TEST(CollisionElements, MaxitersAboveTheLimitIsCappedWithAWarning) {
 
 // Issue 24: the cap is a limit like the others, which the command line raises or lowers.
 TEST(CollisionElements, TheLimitOfHybridPassesCanBeRaisedAndLowered) {
-  const std::string text = std::string(kHeader) +
-                           "<collision type=\"hybrid\" maxiters=\"5000\"/>\n</scene>\n";
+  const std::string text =
+      std::string(kHeader) + "<collision type=\"hybrid\" maxiters=\"5000\"/>\n</scene>\n";
   Limits raised;
   raised.max_hybrid_passes = 10000;
   InputFiles more(raised);
