@@ -34,7 +34,7 @@ TEST(HangingStretch, FlagsTheIssuesClothAndNotTheDocumentedOnes) {
   EXPECT_TRUE(issue.overloaded());
   EXPECT_GT(issue.stretch, 50.0 * issue.size);
   const Mesh small = generate_cloth(9, 9, 1.0, 1.0, false, true, 1'000'000).mesh;
-  EXPECT_FALSE(hanging_stretch(small, 5000.0, 9.8).overloaded());  // docs/scenes-3d.md's example
+  EXPECT_FALSE(hanging_stretch(small, 5000.0, 9.8).overloaded());   // docs/scenes-3d.md's example
   EXPECT_FALSE(hanging_stretch(small, 20000.0, 9.8).overloaded());  // assets3d/json/cloth_9x9
 }
 
