@@ -23,23 +23,30 @@ StepGrader::StepGrader(const Scene& scene, TrajectoryReader& file, const Grading
 
 namespace {
 
-/// The time step the file's first step shows, when it shows one: its integrators move positions
-/// by h times a velocity (q¹ = q⁰ + h v¹, or h v⁰ for explicit Euler), so h is the least-squares
-/// fit of q¹ − q⁰ to either velocity, accepted only when it fits to round-off (1e-9 relative)
-/// and something moved. Nothing for a file of one frame, a scene at rest or other motion.
+/// The time step the file's first steps show, when they show one: its integrators move
+/// positions by h times a velocity (qᵏ⁺¹ = qᵏ + h vᵏ⁺¹, or h vᵏ for explicit Euler), so h is the
+/// least-squares fit of qᵏ⁺¹ − qᵏ to either velocity, accepted only when it fits to round-off
+/// (1e-9 relative). The first of the file's first 8 steps that moves something decides (a scene
+/// that starts at rest moves nothing in explicit Euler's first step). Nothing for a file of one
+/// frame, a scene at rest or other motion.
 std::optional<double> step_size_of(TrajectoryReader& file) {
-  if (file.num_frames() < 2) return std::nullopt;
   Vector q0, v0, q1, v1;
-  file.read_frame(0, q0, v0);
-  file.read_frame(1, q1, v1);
-  const Vector dq = q1 - q0;
-  const double moved = dq.norm();
-  if (!(moved > 0.0) || !std::isfinite(moved)) return std::nullopt;
-  for (const Vector* v : {&v1, &v0}) {
-    const double speed2 = v->squaredNorm();
-    if (!(speed2 > 0.0) || !std::isfinite(speed2)) continue;
-    const double h = dq.dot(*v) / speed2;
-    if (h > 0.0 && (dq - h * *v).norm() <= 1e-9 * moved) return h;
+  file.read_frame(0, q1, v1);
+  for (std::int64_t k = 0; k + 1 < file.num_frames() && k < 8; ++k) {
+    q0.swap(q1);
+    v0.swap(v1);
+    file.read_frame(k + 1, q1, v1);
+    const Vector dq = q1 - q0;
+    const double moved = dq.norm();
+    if (!std::isfinite(moved)) return std::nullopt;
+    if (moved == 0.0) continue;
+    for (const Vector* v : {&v1, &v0}) {
+      const double speed2 = v->squaredNorm();
+      if (!(speed2 > 0.0) || !std::isfinite(speed2)) continue;
+      const double h = dq.dot(*v) / speed2;
+      if (h > 0.0 && (dq - h * *v).norm() <= 1e-9 * moved) return h;
+    }
+    return std::nullopt;
   }
   return std::nullopt;
 }
@@ -51,7 +58,7 @@ std::string why_frames_differ(const Scene& scene, TrajectoryReader& file) {
     char text[32];  // six digits: h is measured to round-off, not exactly
     std::snprintf(text, sizeof(text), "%.6g", *h);
     const std::string file_dt = text;
-    return "; its frames are " + file_dt + " s apart (its first step moves the particles by " +
+    return "; its frames are " + file_dt + " s apart (its steps move the particles by " +
            "their velocities times " + file_dt + " s), not the scene's " + to_text(dt) +
            " s: it was made with another time step (grade with --dt " + file_dt +
            ", as it was run)";
