@@ -210,7 +210,7 @@ class EnergyPlotOutput final : public FrameOutput {
     style.title = std::filesystem::path(scene_.source).filename().string() + "  -  " +
                   std::string(scene_.model.integrator.method->name) +
                   ", dt = " + format_dt(scene_.model.integrator.dt);
-    write_energy_plot(history_, path, style);
+    write_energy_history_plot(history_, path, style);
   }
   static std::string format_dt(double dt) {
     char buffer[32];

@@ -122,11 +122,11 @@ void write_energy_plot(const std::vector<EnergySample>& samples, const std::stri
                        const EnergyPlotStyle& style) {
   EnergyHistory history;
   for (const EnergySample& s : samples) history.add(s);
-  write_energy_plot(history, path, style);
+  write_energy_history_plot(history, path, style);
 }
 
-void write_energy_plot(const EnergyHistory& history, const std::string& path,
-                       const EnergyPlotStyle& style) {
+void write_energy_history_plot(const EnergyHistory& history, const std::string& path,
+                               const EnergyPlotStyle& style) {
   LinePlot plot;
   plot.width = style.width;
   plot.height = style.height;

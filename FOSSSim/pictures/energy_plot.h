@@ -65,7 +65,7 @@ struct EnergyPlotStyle {
 void write_energy_plot(const std::vector<EnergySample>& samples, const std::string& path,
                        const EnergyPlotStyle& style = {});
 /// The same from a bounded history (what --energy-plot keeps of a run).
-void write_energy_plot(const EnergyHistory& history, const std::string& path,
-                       const EnergyPlotStyle& style = {});
+void write_energy_history_plot(const EnergyHistory& history, const std::string& path,
+                               const EnergyPlotStyle& style = {});
 
 }  // namespace fosssim
