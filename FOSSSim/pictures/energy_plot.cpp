@@ -62,7 +62,9 @@ void EnergyHistory::merge(Bucket& into, const Bucket& from) {
     const Extremes& b = from.curves[c];
     if (!b.any) continue;
     if (!a.any || b.low < a.low) a.low = b.low, a.low_time = b.low_time;
-    if (!a.any || b.high > a.high) a.high = b.high, a.high_time = b.high_time;
+    // Ties: the earliest lowest and the latest highest, so that a bucket of two equal samples
+    // keeps both and a flat stretch keeps its ends (`from` follows `into` in time).
+    if (!a.any || b.high >= a.high) a.high = b.high, a.high_time = b.high_time;
     a.any = true;
   }
   into.samples += from.samples;

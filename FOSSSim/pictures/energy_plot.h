@@ -18,7 +18,7 @@ struct EnergySample {
 
 /// The energies of a run of any length in bounded memory, for the plot: at most kBuckets
 /// buckets of consecutive samples, each keeping, per curve (kinetic, potential, total), its
-/// lowest and highest value with their times, so that a spike of one step stays visible however
+/// lowest value (the earliest of equals) and highest value (the latest) with their times, so that a spike of one step stays visible however
 /// long the run. A bucket holds one sample at first; when kBuckets are full, neighbours merge
 /// and buckets hold twice as many. A run of up to 2 kBuckets states is therefore kept exactly
 /// (a bucket of two samples keeps both as its extremes).
