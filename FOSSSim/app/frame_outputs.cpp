@@ -166,13 +166,14 @@ class EnergyCsvOutput final : public FrameOutput {
   std::FILE* file_;
 };
 
-/// --energy-plot: the energies of every state, drawn when the run ends.
+/// --energy-plot: the energies of every state, kept in bounded memory (EnergyHistory: each
+/// bucket's extremes once a run is long), drawn when the run ends.
 class EnergyPlotOutput final : public FrameOutput {
  public:
   EnergyPlotOutput(const Scene& scene, std::string plot) : scene_(scene), plot_(std::move(plot)) {}
   void write(Frame& frame) override {
     const EnergyReport e = compute_energies(scene_.model, frame.state());
-    samples_.push_back({frame.state().time, e.kinetic, e.potential});
+    history_.add({frame.state().time, e.kinetic, e.potential});
   }
   void commit() override {
     committing_ = true;
@@ -196,7 +197,7 @@ class EnergyPlotOutput final : public FrameOutput {
     style.title = std::filesystem::path(scene_.source).filename().string() + "  -  " +
                   std::string(scene_.model.integrator.method->name) +
                   ", dt = " + format_dt(scene_.model.integrator.dt);
-    write_energy_plot(samples_, path, style);
+    write_energy_history_plot(history_, path, style);
   }
   static std::string format_dt(double dt) {
     char buffer[32];
@@ -206,7 +207,7 @@ class EnergyPlotOutput final : public FrameOutput {
 
   const Scene& scene_;
   std::string plot_;
-  std::vector<EnergySample> samples_;
+  EnergyHistory history_;
   bool committing_ = false;
 };
 

@@ -3,6 +3,7 @@
 // benchmarks need no outside data. Exit status: 0 written, 2 bad command line, 4 I/O error.
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -13,9 +14,11 @@
 #include "core/limits.h"
 #include "core/text.h"
 #include "io/file_identity.h"
+#include "io/json_scene_reader.h"
 #include "io/mesh_writer.h"
 #include "io/output_file.h"
 #include "mesh/generators.h"
+#include "mesh/load_check.h"
 
 namespace {
 
@@ -70,6 +73,23 @@ void write_json_scene(const std::string& path, const std::string& mesh_path, dou
   });
 }
 
+/// Warns when the JSON scene's load, a force of |g| = 9.8 N on every vertex (not m·g), is far
+/// beyond what springs of stiffness k hold: a column of the mesh's springs hanging from a pin
+/// would stretch by more than the mesh's size (mesh/load_check.h, docs/scenes-3d.md).
+void warn_if_overloaded(const Mesh& mesh, double k) {
+  const HangingStretch column = hanging_stretch(mesh, k, -JsonSceneDefaults::kGravity);
+  if (!column.overloaded()) return;
+  std::cerr << "FOSSSim-generate: warning: the JSON scene puts "
+            << to_text(-JsonSceneDefaults::kGravity)
+            << " N on every vertex, and springs of k = " << to_text(k)
+            << " N/m do not hold it: a column of " << column.springs
+            << " springs across this mesh, hanging from a pin, would stretch by about "
+            << to_text(std::round(column.stretch * 100.0) / 100.0) << " m, against a mesh of "
+            << to_text(std::round(column.size * 100.0) / 100.0) << " m (give --k "
+            << to_text(std::ceil(column.stiffness_needed))
+            << " or more, or fewer vertices; docs/scenes-3d.md)\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -89,37 +109,45 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(std::int64_t{1}, kMaxParticlesLimit))
       ->capture_default_str();
   auto* cloth = app.add_subcommand("cloth", "nx × ny cloth, hanging (plane xy) or flat (xz)");
-  cloth->add_option("--nx", o.nx)->capture_default_str();
-  cloth->add_option("--ny", o.ny)->capture_default_str();
-  cloth->add_option("--width", o.width)->capture_default_str();
-  cloth->add_option("--height", o.height)->capture_default_str();
-  cloth->add_option("--plane", o.plane)->check(CLI::IsMember({"xy", "xz"}))->capture_default_str();
+  cloth->add_option("--nx", o.nx, "Vertices along the width (at least 2)")->capture_default_str();
+  cloth->add_option("--ny", o.ny, "Vertices along the height (at least 2)")->capture_default_str();
+  cloth->add_option("--width", o.width, "Size along x (m)")->capture_default_str();
+  cloth->add_option("--height", o.height, "Size along y (plane xy) or z (plane xz) (m)")
+      ->capture_default_str();
+  cloth->add_option("--plane", o.plane, "xy: hanging, facing +z; xz: lying flat, facing +y")
+      ->check(CLI::IsMember({"xy", "xz"}))
+      ->capture_default_str();
   cloth->add_flag("--no-bend", o.no_bend, "No bending springs");
   auto* chain = app.add_subcommand("chain", "a chain of springs along +x");
-  chain->add_option("--links", o.links)->capture_default_str();
-  chain->add_option("--length", o.length)->capture_default_str();
+  chain->add_option("--links", o.links, "Springs in the chain (at least 1)")->capture_default_str();
+  chain->add_option("--length", o.length, "Length of the whole chain (m)")->capture_default_str();
   auto* net = app.add_subcommand("net", "a flat net of springs along grid lines");
-  net->add_option("--nx", o.nx)->capture_default_str();
-  net->add_option("--ny", o.ny)->capture_default_str();
-  net->add_option("--width", o.width)->capture_default_str();
-  net->add_option("--depth", o.depth)->capture_default_str();
+  net->add_option("--nx", o.nx, "Vertices along x (at least 2)")->capture_default_str();
+  net->add_option("--ny", o.ny, "Vertices along z (at least 2)")->capture_default_str();
+  net->add_option("--width", o.width, "Size along x (m)")->capture_default_str();
+  net->add_option("--depth", o.depth, "Size along z (m)")->capture_default_str();
   auto* skirt = app.add_subcommand("skirt", "rings of cloth around the y axis");
-  skirt->add_option("--segments", o.segments)->capture_default_str();
-  skirt->add_option("--rings", o.rings)->capture_default_str();
-  skirt->add_option("--top-radius", o.top_radius)->capture_default_str();
-  skirt->add_option("--bottom-radius", o.bottom_radius)->capture_default_str();
-  skirt->add_option("--height", o.height)->capture_default_str();
+  skirt->add_option("--segments", o.segments, "Vertices around each ring (at least 3)")
+      ->capture_default_str();
+  skirt->add_option("--rings", o.rings, "Rings from top to bottom (at least 2)")
+      ->capture_default_str();
+  skirt->add_option("--top-radius", o.top_radius, "Radius of the top ring (m)")
+      ->capture_default_str();
+  skirt->add_option("--bottom-radius", o.bottom_radius, "Radius of the bottom ring (m)")
+      ->capture_default_str();
+  skirt->add_option("--height", o.height, "Height from the bottom ring to the top one (m)")
+      ->capture_default_str();
   skirt->add_flag("--no-bend", o.no_bend, "No bending springs");
   auto* box = app.add_subcommand("tetbox", "a box of nx × ny × nz cubes, six tets each");
-  box->add_option("--nx", o.nx)->capture_default_str();
-  box->add_option("--ny", o.ny)->capture_default_str();
-  box->add_option("--nz", o.nz)->capture_default_str();
-  box->add_option("--sx", o.sx)->capture_default_str();
-  box->add_option("--sy", o.sy)->capture_default_str();
-  box->add_option("--sz", o.sz)->capture_default_str();
+  box->add_option("--nx", o.nx, "Cubes along x (at least 1)")->capture_default_str();
+  box->add_option("--ny", o.ny, "Cubes along y (at least 1)")->capture_default_str();
+  box->add_option("--nz", o.nz, "Cubes along z (at least 1)")->capture_default_str();
+  box->add_option("--sx", o.sx, "Size along x (m)")->capture_default_str();
+  box->add_option("--sy", o.sy, "Size along y (m)")->capture_default_str();
+  box->add_option("--sz", o.sz, "Size along z (m)")->capture_default_str();
   auto* ball = app.add_subcommand("tetball", "a ball of tetrahedralized cubes");
   ball->add_option("--cells", o.cells, "Cubes along the diameter")->capture_default_str();
-  ball->add_option("--radius", o.radius)->capture_default_str();
+  ball->add_option("--radius", o.radius, "Radius of the ball (m)")->capture_default_str();
   // Every number decimal and finite, as FOSSSim reads them; no empty file names.
   for (CLI::App* command : std::vector<CLI::App*>{&app, cloth, chain, net, skirt, box, ball}) {
     for (CLI::Option* option : command->get_options()) {
@@ -239,6 +267,7 @@ int main(int argc, char** argv) {
     std::cerr << "FOSSSim-generate: error: " << error.what() << "\n";
     return exit_status(error.kind());
   }
+  if (!o.json.empty()) warn_if_overloaded(generated.mesh, o.k);
   std::cout << "wrote " << o.output << ": " << generated.mesh.num_vertices() << " vertices, "
             << compute_spring_pairs(generated.mesh).size() << " springs";
   if (tets) std::cout << ", " << generated.mesh.tets.size() << " tets";

@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "app/interrupt.h"
 #include "app/options.h"
+#include "app/solver_threads.h"
 #include "cli/exit_codes.h"
 #include "cli/parse_command_line.h"
 #include "core/error.h"
@@ -41,6 +42,17 @@ int run(Options& options) {
     throw;
   }
   for (const std::string& warning : scene.warnings) std::cerr << warning << "\n";
+  if (!set_solver_threads(options.threads)) {
+    if (options.threads > 1) {
+      std::cerr << "FOSSSim: note: --threads " << options.threads
+                << " has no effect: this program's BLAS is not OpenBLAS\n";
+    }
+  } else if (options.threads > 1) {
+    // Bits may depend on the count (docs/solvers.md): the run's output says which it used.
+    std::cerr << "FOSSSim: note: the sparse solvers use " << options.threads
+              << " BLAS threads (--threads); large implicit steps may differ in their last bits "
+                 "from a run with another count\n";
+  }
   if (!scene.description.empty() && !options.quiet) std::cout << scene.description << std::endl;
 
   if (options.check_derivatives) return run_derivative_check(scene, options);

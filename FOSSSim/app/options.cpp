@@ -104,6 +104,12 @@ void add_limit_options(CLI::App& app, Options& options) {
       ->check(CLI::Range(std::int64_t{3}, std::int64_t{1} << 16))
       ->capture_default_str()
       ->group(group);
+  app.add_option("--max-hybrid-passes", options.max_hybrid_passes,
+                 "Make at most this many impulse passes a step of hybrid collision handling;\n"
+                 "a larger maxiters is read as this many, with a warning")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{2147483647}))
+      ->capture_default_str()
+      ->group(group);
 }
 
 /// Throws Error (kBadInput) with a message.
@@ -269,6 +275,7 @@ Limits limits_of(const Options& options) {
   limits.max_file_bytes = options.max_file_mib << 20;
   limits.max_face_corners = options.max_face_corners;
   limits.max_attributes = options.max_attributes;
+  limits.max_hybrid_passes = options.max_hybrid_passes;
   return limits;
 }
 
@@ -332,6 +339,14 @@ void add_options(CLI::App& app, Options& options) {
   app.add_flag("--check-derivatives", options.check_derivatives,
                "Check every force's gradient and Hessians against finite differences at the\n"
                "scene's initial state, print a table and exit (1 if any check fails)");
+  app.add_option("--threads", options.threads,
+                 "Threads of the BLAS behind the sparse solvers (MUMPS, CHOLMOD, UMFPACK) of\n"
+                 "large implicit steps; everything else runs on one thread. 1 gives the same\n"
+                 "bytes on every machine and is fastest on a shared one; N > 1 may change the\n"
+                 "last bits of such runs and says so (docs/solvers.md). Overrides\n"
+                 "OPENBLAS_NUM_THREADS and OMP_NUM_THREADS")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
   app.add_flag("-q,--quiet", options.quiet, "No progress bar and no description");
   app.add_option("--progress", options.progress,
                  "How a run reports progress on standard error: a bar redrawn in place, a line\n"
@@ -357,9 +372,10 @@ void add_options(CLI::App& app, Options& options) {
   add_limit_options(app, options);
   // Numbers read as the scene readers read them (no "0x10"), and no empty file names.
   for (const char* name :
-       {"-d", "-p", "--duration", "--dt", "--newton-max-iterations", "--newton-tolerance", "-g",
-        "--movie-stride", "--fps", "--window-screenshot-step", "--max-steps", "--max-particles",
-        "--max-file-size", "--max-face-corners", "--max-attributes"}) {
+       {"-d", "-p", "--threads", "--duration", "--dt", "--newton-max-iterations",
+        "--newton-tolerance", "-g", "--movie-stride", "--fps", "--window-screenshot-step",
+        "--max-steps", "--max-particles", "--max-file-size", "--max-face-corners",
+        "--max-attributes", "--max-hybrid-passes"}) {
     app.get_option(name)->check(decimal_number());
   }
   for (const char* name : {"-s", "-o", "-i", "--residual-file", "--png-dir", "-m", "--movie",

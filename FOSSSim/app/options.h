@@ -26,9 +26,10 @@ struct Options {
   std::vector<std::string> integrator_options;
   std::string residual_file = "residual.txt";
   bool check_derivatives = false;
+  int threads = 1;  ///< --threads: of the BLAS behind the sparse solvers
   bool quiet = false;
   std::string progress = "auto";  ///< --progress auto|bar|lines|off
-  double progress_every = 10.0;    ///< --progress-every SECONDS between progress lines
+  double progress_every = 10.0;   ///< --progress-every SECONDS between progress lines
 
   // Pictures (docs/viewing.md).
   int png = 0;  ///< -g 0|1: one PNG per state into png_directory
@@ -49,11 +50,12 @@ struct Options {
   bool display_given = false;  ///< -d appeared on the command line
 
   // Limits (docs/limits-and-failures.md).
-  std::int64_t max_steps = Limits{}.max_steps;                ///< --max-steps
-  std::int64_t max_particles = Limits{}.max_particles;        ///< --max-particles
-  std::int64_t max_file_mib = Limits{}.max_file_bytes >> 20;  ///< --max-file-size, MiB
-  std::int64_t max_face_corners = Limits{}.max_face_corners;  ///< --max-face-corners
-  std::int64_t max_attributes = Limits{}.max_attributes;      ///< --max-attributes
+  std::int64_t max_steps = Limits{}.max_steps;                  ///< --max-steps
+  std::int64_t max_particles = Limits{}.max_particles;          ///< --max-particles
+  std::int64_t max_file_mib = Limits{}.max_file_bytes >> 20;    ///< --max-file-size, MiB
+  std::int64_t max_face_corners = Limits{}.max_face_corners;    ///< --max-face-corners
+  std::int64_t max_attributes = Limits{}.max_attributes;        ///< --max-attributes
+  std::int64_t max_hybrid_passes = Limits{}.max_hybrid_passes;  ///< --max-hybrid-passes
 };
 
 /// The limits the options set.

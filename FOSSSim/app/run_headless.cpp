@@ -7,6 +7,7 @@
 #include "app/interrupt.h"
 #include "app/progress_bar.h"
 #include "cli/exit_codes.h"
+#include "core/step/cancellation.h"
 #include "core/step/simulation.h"
 #include "core/step_error.h"
 #include "render/camera.h"
@@ -16,6 +17,14 @@
 namespace fosssim {
 
 namespace {
+/// The scene's additions, with steps that end early once a signal arrives (app/interrupt.h):
+/// long iterations inside a step ask it, so a step that would take minutes stops at once.
+StepAdditions interruptible_additions(const Scene& scene) {
+  StepAdditions additions = scripted_additions(scene);
+  additions.cancellation = Cancellation(&interrupt_requested);
+  return additions;
+}
+
 /// "; <what the outputs kept>", or nothing.
 std::string kept_note(FrameOutputs& outputs) {
   const std::string notes = outputs.abandon();
@@ -25,7 +34,8 @@ std::string kept_note(FrameOutputs& outputs) {
 /// True when the run writes pictures or a movie and the scene leaves their camera to the
 /// particles' positions (no 2D <viewport>; no <camera3d> or --view fixing target and distance).
 bool pictures_frame_positions(const Scene& scene, const Options& options) {
-  const bool pictures = options.png == 1 || !options.svg_directory.empty() || !options.movie.empty();
+  const bool pictures =
+      options.png == 1 || !options.svg_directory.empty() || !options.movie.empty();
   if (!pictures || options.frame != "run") return false;
   const Appearance& look = scene.appearance;
   if (scene.model.dim == 3 && look.camera3d) {
@@ -45,7 +55,7 @@ Vector whole_run_corners(const Scene& scene, const Options& options) {
                        choose_progress_style(options.progress, options.quiet),
                        options.progress_every);
   try {
-    Simulation simulation(scene.model, scene.initial, scripted_additions(scene));
+    Simulation simulation(scene.model, scene.initial, interruptible_additions(scene));
     while (!simulation.finished() && !interrupt_requested()) {
       simulation.step();
       const auto [step_low, step_high] = compute_bounding_box(simulation.state().q, dim);
@@ -54,6 +64,7 @@ Vector whole_run_corners(const Scene& scene, const Options& options) {
       progress.update(simulation.state().step);
     }
   } catch (const StepError&) {
+  } catch (const StepCancelled&) {
   }
   progress.finish();
   Vector corners(2 * dim);
@@ -67,7 +78,7 @@ int run_headless(const Scene& scene, const Options& options) {
   try {
     std::optional<Vector> frame;
     if (pictures_frame_positions(scene, options)) frame = whole_run_corners(scene, options);
-    Simulation simulation(scene.model, scene.initial, scripted_additions(scene));
+    Simulation simulation(scene.model, scene.initial, interruptible_additions(scene));
     SceneView view(scene, simulation.state(), options.width, options.height,
                    frame ? &*frame : nullptr);
     ProgressBar progress("simulating", scene.model.num_steps(),
@@ -75,15 +86,20 @@ int run_headless(const Scene& scene, const Options& options) {
                          options.progress_every);
     try {
       outputs.write(simulation.state(), view);
+      const auto interrupted = [&] {
+        progress.finish();
+        std::cerr << "FOSSSim: interrupted by signal " << interrupt_signal() << " ("
+                  << strsignal(interrupt_signal()) << ") at step " << simulation.state().step
+                  << kept_note(outputs) << "\n";
+        return kExitInterrupted;
+      };
       while (!simulation.finished()) {
-        if (interrupt_requested()) {
-          progress.finish();
-          std::cerr << "FOSSSim: interrupted by signal " << interrupt_signal() << " ("
-                    << strsignal(interrupt_signal()) << ") at step " << simulation.state().step
-                    << kept_note(outputs) << "\n";
-          return kExitInterrupted;
+        if (interrupt_requested()) return interrupted();
+        try {
+          simulation.step();
+        } catch (const StepCancelled&) {
+          return interrupted();  // within the step: the frames so far are kept
         }
-        simulation.step();
         view.record(simulation.state());
         outputs.write(simulation.state(), view, &simulation.last_record());
         progress.update(simulation.state().step);

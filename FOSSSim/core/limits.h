@@ -30,6 +30,10 @@ struct Limits {
   /// Attributes of one XML element: tinyxml2 checks each new attribute against the earlier
   /// ones, so an element of n attributes costs n² (--max-attributes).
   std::int64_t max_attributes = 100;
+  /// Impulse passes of one step of hybrid collision handling: a larger `maxiters` is read as
+  /// this many, with a warning. Each pass tests and logs every pair, so the default is a
+  /// hundred times the course's default of 10 (--max-hybrid-passes).
+  std::int64_t max_hybrid_passes = 1000;
 };
 
 /// The step count ceil(duration / dt) as a double, without converting it to an integer (it may

@@ -1,6 +1,9 @@
 #include "grading/step_grader.h"
 
+#include <cmath>
+#include <cstdio>
 #include <limits>
+#include <optional>
 
 #include "core/step_error.h"
 #include "core/text.h"
@@ -18,16 +21,64 @@ StepGrader::StepGrader(const Scene& scene, TrajectoryReader& file, const Grading
   file.read_frame(0, file_state_.q, file_state_.v);
 }
 
+namespace {
+
+/// The time step the file's first steps show, when they show one: its integrators move
+/// positions by h times a velocity (qᵏ⁺¹ = qᵏ + h vᵏ⁺¹, or h vᵏ for explicit Euler), so h is the
+/// least-squares fit of qᵏ⁺¹ − qᵏ to either velocity, accepted only when it fits to round-off
+/// (1e-9 relative). The first of the file's first 8 steps that moves something decides (a scene
+/// that starts at rest moves nothing in explicit Euler's first step). Nothing for a file of one
+/// frame, a scene at rest or other motion.
+std::optional<double> step_size_of(TrajectoryReader& file) {
+  Vector q0, v0, q1, v1;
+  file.read_frame(0, q1, v1);
+  for (std::int64_t k = 0; k + 1 < file.num_frames() && k < 8; ++k) {
+    q0.swap(q1);
+    v0.swap(v1);
+    file.read_frame(k + 1, q1, v1);
+    const Vector dq = q1 - q0;
+    const double moved = dq.norm();
+    if (!std::isfinite(moved)) return std::nullopt;
+    if (moved == 0.0) continue;
+    for (const Vector* v : {&v1, &v0}) {
+      const double speed2 = v->squaredNorm();
+      if (!(speed2 > 0.0) || !std::isfinite(speed2)) continue;
+      const double h = dq.dot(*v) / speed2;
+      if (h > 0.0 && (dq - h * *v).norm() <= 1e-9 * moved) return h;
+    }
+    return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+/// "; ..." saying why the file's frame count is not the scene's, as far as the file tells.
+std::string why_frames_differ(const Scene& scene, TrajectoryReader& file) {
+  const double dt = scene.model.integrator.dt;
+  if (const std::optional<double> h = step_size_of(file); h && std::abs(*h - dt) > 1e-6 * dt) {
+    char text[32];  // six digits: h is measured to round-off, not exactly
+    std::snprintf(text, sizeof(text), "%.6g", *h);
+    const std::string file_dt = text;
+    return "; its frames are " + file_dt + " s apart (its steps move the particles by " +
+           "their velocities times " + file_dt + " s), not the scene's " + to_text(dt) +
+           " s: it was made with another time step (grade with --dt " + file_dt +
+           ", as it was run)";
+  }
+  return file.num_frames() < scene.model.num_steps() + 1
+             ? "; the file was cut short, or made with another duration"
+             : "; the file was made with another duration";
+}
+
+}  // namespace
+
 StepGrader StepGrader::open(const Scene& scene, TrajectoryReader& file,
                             const std::optional<GradingCriteria>& criteria) {
   const std::int64_t steps = scene.model.num_steps();
   if (file.num_frames() != steps + 1) {
-    throw Error(ErrorKind::kBadInput,
-                "the trajectory has " + std::to_string(file.num_frames()) +
-                    " frames, but the scene takes " + std::to_string(steps) +
-                    " steps and so needs " + std::to_string(steps + 1) +
-                    " (the initial state and one frame per step)" +
-                    (file.num_frames() < steps + 1 ? "; the file was cut short" : ""));
+    throw Error(ErrorKind::kBadInput, "the trajectory has " + std::to_string(file.num_frames()) +
+                                          " frames, but the scene takes " + std::to_string(steps) +
+                                          " steps and so needs " + std::to_string(steps + 1) +
+                                          " (the initial state and one frame per step)" +
+                                          why_frames_differ(scene, file));
   }
   return StepGrader(scene, file, criteria ? *criteria : criteria_for(scene));
 }
@@ -140,9 +191,8 @@ void StepGrader::compare(const State& reference, const Vector& previous_q,
       residual.max_velocity = rv;
       residual.max_velocity_particle = p;
     }
-    if (!report_.first_divergence &&
-        !(below_limit(rx, criteria.maximum_limit) &&
-          below_limit(rv, criteria.maximum_velocity_limit))) {
+    if (!report_.first_divergence && !(below_limit(rx, criteria.maximum_limit) &&
+                                       below_limit(rv, criteria.maximum_velocity_limit))) {
       FirstDivergence d;
       d.step = residual.step;
       d.particle = p;

@@ -19,12 +19,6 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-/// The most impulse passes a step of hybrid handling makes, whatever maxiters asks: each pass
-/// tests (and logs the polynomials of) every pair, so a huge maxiters on a jammed scene would
-/// loop and grow the step's log for hours (docs/limits-and-failures.md). A hundred times the
-/// course's default; the course's own scenes ask for 0, 1 or the default 10.
-constexpr double kMaxHybridPasses = 1000.0;
-
 constexpr std::array<std::string_view, 6> kElements = {
     "halfplane", "halfplanecolor", "sphere", "spherecolor", "collision", "collisiondetection"};
 
@@ -49,27 +43,38 @@ std::vector<const XMLElement*> children(const XMLElement& root, const char* name
 
 class CollisionReader {
  public:
-  CollisionReader(Scene& scene, const std::string& file) : scene_(scene), file_(file) {}
+  CollisionReader(Scene& scene, const std::string& file, const Limits& limits,
+                  SceneErrorList& errors)
+      : scene_(scene), file_(file), limits_(limits), errors_(errors) {}
 
+  /// Reads every element, each in errors_.attempt(). The colours of half-planes (spheres) are
+  /// read only when every half-plane (sphere) could be: the numbering of the others depends on
+  /// it.
   void read(const XMLElement& root) {
     const auto half_planes = children(root, "halfplane");
+    bool planes_read = true;
     for (int k = 0; k < static_cast<int>(half_planes.size()); ++k) {
-      read_half_plane(*half_planes[k], k);
+      planes_read &= errors_.attempt([&] { read_half_plane(*half_planes[k], k); });
     }
     scene_.appearance.half_plane_color.assign(scene_.model.half_planes.size(),
                                               Appearance::kDefaultHalfPlaneColor);
     const auto colors = children(root, "halfplanecolor");
-    for (int k = 0; k < static_cast<int>(colors.size()); ++k) read_color(*colors[k], k);
+    for (int k = 0; planes_read && k < static_cast<int>(colors.size()); ++k) {
+      errors_.attempt([&] { read_color(*colors[k], k); });
+    }
     const auto spheres = children(root, "sphere");
-    for (int k = 0; k < static_cast<int>(spheres.size()); ++k) read_sphere(*spheres[k], k);
+    bool spheres_read = true;
+    for (int k = 0; k < static_cast<int>(spheres.size()); ++k) {
+      spheres_read &= errors_.attempt([&] { read_sphere(*spheres[k], k); });
+    }
     scene_.appearance.sphere_color.assign(scene_.model.spheres.size(),
                                           Appearance::kDefaultSphereColor);
     const auto sphere_colors = children(root, "spherecolor");
-    for (int k = 0; k < static_cast<int>(sphere_colors.size()); ++k) {
-      read_sphere_color(*sphere_colors[k], k);
+    for (int k = 0; spheres_read && k < static_cast<int>(sphere_colors.size()); ++k) {
+      errors_.attempt([&] { read_sphere_color(*sphere_colors[k], k); });
     }
     const auto collisions = children(root, "collision");
-    if (!collisions.empty()) read_collision(*collisions[0]);
+    if (!collisions.empty()) errors_.attempt([&] { read_collision(*collisions[0]); });
     for (std::size_t k = 1; k < collisions.size(); ++k) {
       ElementReader r = reader(*collisions[k], static_cast<int>(k));
       warn(r,
@@ -83,11 +88,11 @@ class CollisionReader {
     }
     const auto detections = children(root, "collisiondetection");
     if (detections.size() > 1) {
-      throw SceneError(file_, detections[1]->GetLineNum(), "<collisiondetection>",
-                       "may appear only once (first at line " +
-                           std::to_string(detections[0]->GetLineNum()) + ")");
+      errors_.add(SceneError(file_, detections[1]->GetLineNum(), "<collisiondetection>",
+                             "may appear only once (first at line " +
+                                 std::to_string(detections[0]->GetLineNum()) + ")"));
     }
-    if (!detections.empty()) read_detection(*detections[0]);
+    if (!detections.empty()) errors_.attempt([&] { read_detection(*detections[0]); });
   }
 
  private:
@@ -99,7 +104,7 @@ class CollisionReader {
     scene_.warnings.push_back(r.warning(text));
   }
   void keep_warnings(const ElementReader& r) {
-    for (auto& warning : r.unknown_attribute_warnings()) scene_.warnings.push_back(warning);
+    for (auto& warning : r.finish()) scene_.warnings.push_back(warning);
   }
 
   void read_half_plane(const XMLElement& e, int index) {
@@ -218,12 +223,16 @@ class CollisionReader {
                     ", as the course reads it");
       }
       double passes = whole;
-      if (!(whole <= kMaxHybridPasses)) {  // a NaN too
-        warn(r, "maxiters = " + to_text(iterations) + " is more than FOSSSim's limit of " +
-                    to_text(kMaxHybridPasses) + " impulse passes a step; " +
-                    to_text(kMaxHybridPasses) +
-                    " are made (docs/limits-and-failures.md, \"Hybrid passes\")");
-        passes = kMaxHybridPasses;
+      // Each pass tests (and logs the polynomials of) every pair, so a huge maxiters on a
+      // jammed scene would loop and grow the step's log for hours (docs/limits-and-failures.md).
+      const double most = static_cast<double>(limits_.max_hybrid_passes);
+      if (!(whole <= most)) {  // a NaN too
+        const std::string limit = std::to_string(limits_.max_hybrid_passes);
+        warn(r, "maxiters = " + to_text(iterations) + " is more than the limit of " + limit +
+                    " impulse passes a step; " + limit +
+                    " are made (raise it with --max-hybrid-passes N; "
+                    "docs/limits-and-failures.md, \"Hybrid passes\")");
+        passes = most;
       }
       s.max_iterations = static_cast<int>(std::max(passes, -1.0));
     }
@@ -254,6 +263,8 @@ class CollisionReader {
 
   Scene& scene_;
   const std::string& file_;
+  const Limits& limits_;
+  SceneErrorList& errors_;
 };
 
 bool is_name_start(char c) {
@@ -269,8 +280,11 @@ bool is_collision_element(std::string_view name) {
   return false;
 }
 
-void read_collision_elements(const XMLElement& root, Scene& scene, const std::string& file) {
-  CollisionReader(scene, file).read(root);
+std::span<const std::string_view> collision_element_names() { return kElements; }
+
+void read_collision_elements(const XMLElement& root, Scene& scene, const std::string& file,
+                             const Limits& limits, SceneErrorList& errors) {
+  CollisionReader(scene, file, limits, errors).read(root);
 }
 
 std::string separate_run_together_attributes(std::string_view text, const std::string& file,

@@ -46,16 +46,16 @@ int edit_distance(std::string_view a, std::string_view b, int cap) {
   return std::min(d[n][m], cap + 1);
 }
 
-/// Two edits catch the usual slips ("alhpa", "poisonratio") without pairing unrelated
-/// short names; names of two letters or fewer are never suggested ("px" is not "vx").
-constexpr int kMisspellingEdits = 2;
+}  // namespace
+
+/// Two edits catch the usual slips ("alhpa", "poisonratio", "raduis") without pairing
+/// unrelated short names.
 bool looks_like_misspelling(std::string_view unknown, std::string_view known) {
+  constexpr int kMisspellingEdits = 2;
   if (known.size() <= 2 || unknown == known) return false;
   const int cap = known.size() <= 4 ? 1 : kMisspellingEdits;
   return edit_distance(unknown, known, cap) <= cap;
 }
-
-}  // namespace
 
 ElementReader::ElementReader(const tinyxml2::XMLElement& element, const std::string& file,
                              int index, int num_particles, int num_edges)
@@ -153,6 +153,10 @@ int ElementReader::particle_index(const char* name) {
                    std::to_string(num_particles_) + " particle" + (num_particles_ == 1 ? "" : "s") +
                    " (valid indices are 0 to " + std::to_string(num_particles_ - 1) + ")");
   }
+  if (broken_ != nullptr && static_cast<std::size_t>(value) < broken_->particles.size() &&
+      broken_->particles[value] != 0) {
+    throw DependsOnBrokenElement{};
+  }
   return value;
 }
 
@@ -164,6 +168,10 @@ int ElementReader::edge_index(const char* name) {
              std::to_string(num_edges_) + " edge" + (num_edges_ == 1 ? "" : "s") +
              (num_edges_ > 0 ? " (valid indices are 0 to " + std::to_string(num_edges_ - 1) + ")"
                              : ""));
+  }
+  if (broken_ != nullptr && static_cast<std::size_t>(value) < broken_->edges.size() &&
+      broken_->edges[value] != 0) {
+    throw DependsOnBrokenElement{};
   }
   return value;
 }
@@ -216,16 +224,23 @@ const char* ElementReader::likely_misspelling_of(std::string_view name) const {
   return nullptr;
 }
 
-std::vector<std::string> ElementReader::unknown_attribute_warnings() const {
+std::vector<std::string> ElementReader::finish() const {
   std::vector<std::string> warnings = notes_;
+  std::string misspelt;  // "attribute "raduis" (did you mean "radius"?)", one per misspelling
+  int count = 0;
   for (const auto* a = element_.FirstAttribute(); a != nullptr; a = a->Next()) {
-    if (!was_asked(a->Name())) {
-      std::string text = std::string("unknown attribute \"") + a->Name() + "\" ignored";
-      if (const std::string* meant = likely_meant(a->Name())) {
-        text += " (did you mean \"" + *meant + "\"?)";
-      }
-      warnings.push_back(warning(text));
+    if (was_asked(a->Name())) continue;
+    if (const std::string* meant = likely_meant(a->Name())) {
+      if (count++ > 0) misspelt += ", ";
+      misspelt += std::string("\"") + a->Name() + "\" (did you mean \"" + *meant + "\"?)";
+    } else {
+      warnings.push_back(warning(std::string("unknown attribute \"") + a->Name() + "\" ignored"));
     }
+  }
+  if (count > 0) {
+    throw SceneError(
+        file_, line(), location(),
+        std::string(count == 1 ? "unknown attribute " : "unknown attributes ") + misspelt);
   }
   return warnings;
 }

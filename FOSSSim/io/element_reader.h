@@ -2,6 +2,7 @@
 // Typed, validated access to the attributes of one XML element.
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/force_parameters.h"
@@ -12,6 +13,18 @@ class XMLElement;
 }
 
 namespace fosssim {
+
+/// True when `unknown` is probably a misspelling of `known`: within two edits (insertions,
+/// deletions, substitutions, swaps of neighbours) of it, one for names of three or four letters;
+/// names of two letters or fewer are never matched ("px" is not "vx").
+bool looks_like_misspelling(std::string_view unknown, std::string_view known);
+
+/// The particles and edges whose elements had an error: an element that refers to one of them
+/// is skipped (DependsOnBrokenElement) rather than reported, since its problem is the other's.
+struct BrokenElements {
+  std::vector<char> particles;  ///< 1 for a particle whose element had an error
+  std::vector<char> edges;      ///< 1 for an edge whose element had an error
+};
 
 /// Reads attributes of one element and throws SceneError naming the file, line, element and
 /// attribute on any problem. It remembers which attributes were asked for, so that the rest can
@@ -48,10 +61,14 @@ class ElementReader final : public ForceParameters {
 
   /// A warning about this element, located like errors: "file:line: warning: <element> k: text".
   std::string warning(const std::string& text) const;
-  /// The warnings recorded by warn() and unsupported(), then one for each attribute that no
-  /// accessor asked for; an unknown attribute within two edits of an asked one is named as its
-  /// likely misspelling ("alhpa": did you mean "alpha"?).
-  std::vector<std::string> unknown_attribute_warnings() const;
+  /// Ends reading the element: throws SceneError when attributes that no accessor asked for are
+  /// within two edits of an asked one (likely misspellings, named with the attribute they
+  /// probably mean: "raduis": did you mean "radius"?); otherwise returns the warnings recorded
+  /// by warn() and unsupported(), then one for each other attribute that no accessor asked for.
+  std::vector<std::string> finish() const;
+  /// From now on, particle_index() and edge_index() throw DependsOnBrokenElement for an index
+  /// marked in `broken` (which must outlive the reader).
+  void skip_broken(const BrokenElements* broken) { broken_ = broken; }
   int line() const;
 
  private:
@@ -73,6 +90,7 @@ class ElementReader final : public ForceParameters {
 
   std::vector<std::string> asked_;  // a handful: a list is faster than a set
   std::vector<std::string> notes_;  // warnings recorded by warn() and unsupported()
+  const BrokenElements* broken_ = nullptr;
 };
 
 }  // namespace fosssim

@@ -1,6 +1,7 @@
 #include "io/json_scene_reader.h"
 
 #include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "core/forces/constant_force.h"
@@ -9,6 +10,7 @@
 #include "io/mesh_reference.h"
 #include "io/obj_reader.h"
 #include "io/text_lines.h"
+#include "mesh/load_check.h"
 #include "mesh/mesh_scene.h"
 
 namespace fosssim {
@@ -90,11 +92,26 @@ class JsonSceneParser {
     model.forces.push_back(std::move(springs));
     model.forces.push_back(
         std::make_unique<ConstantForce<3>>(Vec<3>(0.0, JsonSceneDefaults::kGravity, 0.0)));
+    warn_if_overloaded(mesh, material.k);
     return std::move(scene_);
   }
 
  private:
   friend class KeyOptions;
+
+  /// A warning when the load on every vertex is far beyond what the springs hold: a column of
+  /// them hanging from a pin would stretch by more than the mesh's size (mesh/load_check.h).
+  void warn_if_overloaded(const Mesh& mesh, double k) {
+    const HangingStretch column = hanging_stretch(mesh, k, -JsonSceneDefaults::kGravity);
+    if (!column.overloaded()) return;
+    scene_.warnings.push_back(
+        name_ + ": warning: \"k\": springs of " + to_text(k) + " N/m do not hold the load of " +
+        to_text(-JsonSceneDefaults::kGravity) + " N on every vertex: a column of " +
+        std::to_string(column.springs) + " springs across the mesh, hanging from a pin, would " +
+        "stretch by about " + to_text(std::round(column.stretch * 100.0) / 100.0) +
+        " m, against a mesh of " + to_text(std::round(column.size * 100.0) / 100.0) + " m (k of " +
+        to_text(std::ceil(column.stiffness_needed)) + " N/m or more holds it; docs/scenes-3d.md)");
+  }
 
   [[noreturn]] void fail(const std::string& problem) const {
     throw SceneError(name_, 0, "", problem);

@@ -10,6 +10,7 @@
 #include "io/medit_reader.h"
 #include "io/mesh_reference.h"
 #include "io/obj_reader.h"
+#include "io/scene_error.h"
 #include "io/text_lines.h"
 #include "mesh/generators.h"
 #include "mesh/mesh_scene.h"
@@ -160,8 +161,11 @@ bool is_mesh_element(std::string_view name) {
   return std::find(kMeshElements.begin(), kMeshElements.end(), name) != kMeshElements.end();
 }
 
+std::span<const std::string_view> mesh_element_names() { return kMeshElements; }
+
 std::vector<std::unique_ptr<Force>> read_mesh_elements(const XMLElement& root, Scene& scene,
-                                                       const std::string& file, InputFiles& files) {
+                                                       const std::string& file, InputFiles& files,
+                                                       SceneErrorList& errors) {
   const std::int64_t max_particles = files.limits().max_particles;
   std::vector<std::unique_ptr<Force>> forces;
   std::map<std::string, int> count;
@@ -169,63 +173,66 @@ std::vector<std::unique_ptr<Force>> read_mesh_elements(const XMLElement& root, S
     const std::string kind = e->Name();
     if (!is_mesh_element(kind)) continue;
     const int index = count[kind]++;
-    ElementReader r(*e, file, index, scene.model.num_particles(),
-                    static_cast<int>(scene.model.edges.size()));
-    MeshDeclaration mesh;
-    mesh.label = kind + " " + std::to_string(index);
-    if (kind == "clothmesh") {
-      const std::int64_t corners = files.limits().max_face_corners;
-      mesh.mesh =
-          read_mesh_file(r, file, files, [corners](std::string_view text, const std::string& name) {
-            return read_obj_text(text, name, corners);
-          });
-    } else if (kind == "tetmesh") {
-      mesh.mesh = read_mesh_file(r, file, files, read_medit_text);
-    } else {
-      GeneratedMesh generated = generate(r, max_particles);
-      const std::string pins = r.has("pin") ? r.text("pin") : generated.default_pins;
-      const std::vector<int>* set = generated.find_pins(pins);
-      if (!set)
-        r.fail("pin", "names no pin set of this generator: \"" + pins + "\" (expected " +
-                          generated.pin_set_names() + ")");
-      mesh.pinned = *set;
-      mesh.mesh = std::move(generated.mesh);
-      mesh.label += " (" + r.text("type") + ")";
-    }
-    read_transform(r, mesh.mesh);
-    MeshMaterial material;
-    material.k = r.non_negative("k");
-    material.b = r.non_negative_or("b", 0.0);
-    material.mass = read_mass_rule(r);
-    material.velocity =
-        Eigen::Vector3d(r.number_or("vx", 0.0), r.number_or("vy", 0.0), r.number_or("vz", 0.0));
-    for (const XMLElement* child = e->FirstChildElement(); child;
-         child = child->NextSiblingElement()) {
-      if (std::string_view(child->Name()) != "pin") {
-        throw SceneError(file, child->GetLineNum(), std::string("<") + child->Name() + ">",
-                         "unknown element inside <" + kind + "> (only <pin> may appear there)");
+    errors.attempt([&] {
+      ElementReader r(*e, file, index, scene.model.num_particles(),
+                      static_cast<int>(scene.model.edges.size()));
+      MeshDeclaration mesh;
+      mesh.label = kind + " " + std::to_string(index);
+      if (kind == "clothmesh") {
+        const std::int64_t corners = files.limits().max_face_corners;
+        mesh.mesh = read_mesh_file(r, file, files,
+                                   [corners](std::string_view text, const std::string& name) {
+                                     return read_obj_text(text, name, corners);
+                                   });
+      } else if (kind == "tetmesh") {
+        mesh.mesh = read_mesh_file(r, file, files, read_medit_text);
+      } else {
+        GeneratedMesh generated = generate(r, max_particles);
+        const std::string pins = r.has("pin") ? r.text("pin") : generated.default_pins;
+        const std::vector<int>* set = generated.find_pins(pins);
+        if (!set)
+          r.fail("pin", "names no pin set of this generator: \"" + pins + "\" (expected " +
+                            generated.pin_set_names() + ")");
+        mesh.pinned = *set;
+        mesh.mesh = std::move(generated.mesh);
+        mesh.label += " (" + r.text("type") + ")";
       }
-      ElementReader pin(*child, file, -1, 0, 0);
-      read_pin(pin, mesh.mesh, mesh.pinned);
-      for (auto& warning : pin.unknown_attribute_warnings()) scene.warnings.push_back(warning);
-    }
-    std::sort(mesh.pinned.begin(), mesh.pinned.end());
-    mesh.pinned.erase(std::unique(mesh.pinned.begin(), mesh.pinned.end()), mesh.pinned.end());
-    const std::int64_t particles =
-        std::int64_t{scene.model.num_particles()} + mesh.mesh.num_vertices();
-    if (particles > max_particles) {
-      r.fail("its " + std::to_string(mesh.mesh.num_vertices()) + " vertices bring the scene to " +
-             std::to_string(particles) + " particles, " +
-             over_limit(max_particles, "particles", "--max-particles"));
-    }
-    std::unique_ptr<Force> force;
-    try {
-      force = append_mesh(scene, mesh.mesh, material, mesh.pinned, mesh.label);
-    } catch (const Error& error) {
-      r.fail(error.what());
-    }
-    forces.push_back(std::move(force));
-    for (auto& warning : r.unknown_attribute_warnings()) scene.warnings.push_back(warning);
+      read_transform(r, mesh.mesh);
+      MeshMaterial material;
+      material.k = r.non_negative("k");
+      material.b = r.non_negative_or("b", 0.0);
+      material.mass = read_mass_rule(r);
+      material.velocity =
+          Eigen::Vector3d(r.number_or("vx", 0.0), r.number_or("vy", 0.0), r.number_or("vz", 0.0));
+      for (const XMLElement* child = e->FirstChildElement(); child;
+           child = child->NextSiblingElement()) {
+        if (std::string_view(child->Name()) != "pin") {
+          throw SceneError(file, child->GetLineNum(), std::string("<") + child->Name() + ">",
+                           "unknown element inside <" + kind + "> (only <pin> may appear there)");
+        }
+        ElementReader pin(*child, file, -1, 0, 0);
+        read_pin(pin, mesh.mesh, mesh.pinned);
+        for (auto& warning : pin.finish()) scene.warnings.push_back(warning);
+      }
+      std::sort(mesh.pinned.begin(), mesh.pinned.end());
+      mesh.pinned.erase(std::unique(mesh.pinned.begin(), mesh.pinned.end()), mesh.pinned.end());
+      const std::int64_t particles =
+          std::int64_t{scene.model.num_particles()} + mesh.mesh.num_vertices();
+      if (particles > max_particles) {
+        r.fail("its " + std::to_string(mesh.mesh.num_vertices()) + " vertices bring the scene to " +
+               std::to_string(particles) + " particles, " +
+               over_limit(max_particles, "particles", "--max-particles"));
+      }
+      std::vector<std::string> warnings = r.finish();  // before the scene changes
+      std::unique_ptr<Force> force;
+      try {
+        force = append_mesh(scene, mesh.mesh, material, mesh.pinned, mesh.label);
+      } catch (const Error& error) {
+        r.fail(error.what());
+      }
+      forces.push_back(std::move(force));
+      for (auto& warning : warnings) scene.warnings.push_back(warning);
+    });
   }
   return forces;
 }

@@ -15,6 +15,7 @@
 #include "io/element_reader.h"
 #include "io/json_scene_reader.h"
 #include "io/mesh_elements.h"
+#include "io/scene_error.h"
 #include "io/text_lines.h"
 
 namespace fosssim {
@@ -37,6 +38,21 @@ bool is_known_element(std::string_view name) {
     if (name == known) return true;
   }
   return find_force_kind(name) != nullptr || is_mesh_element(name) || is_collision_element(name);
+}
+
+/// " (did you mean <springforce>?)" for an unknown element name within two edits of a known
+/// one (the first in reading order), or nothing.
+std::string element_suggestion(std::string_view unknown) {
+  std::vector<std::string_view> names(kOtherElements.begin(), kOtherElements.end());
+  for (const ForceKind& kind : force_kinds()) names.push_back(kind.tag);
+  for (std::string_view name : mesh_element_names()) names.push_back(name);
+  for (std::string_view name : collision_element_names()) names.push_back(name);
+  for (std::string_view name : names) {
+    if (looks_like_misspelling(unknown, name)) {
+      return " (did you mean <" + std::string(name) + ">?)";
+    }
+  }
+  return "";
 }
 
 /// The element tinyxml2 names in its error text ("... XMLElement name=particle"), as "<particle>".
@@ -94,7 +110,11 @@ class AttributeOptions final : public OptionSource {
   ElementReader& reader_;
 };
 
-/// Turns a parsed document into a Scene, throwing SceneError on the first problem.
+/// Turns a parsed document into a Scene. Every element is read in errors_.attempt(), so that
+/// one run reports the problems of every element (at most SceneErrorList::kMaxReported of
+/// them); the problems that leave nothing sensible to go on with (the root, the dimension, a
+/// count over a limit) end reading at once. An element that refers to a particle or edge whose
+/// own element failed is skipped without a report (BrokenElements).
 class SceneParser {
  public:
   SceneParser(const std::string& file, InputFiles& files, std::vector<std::string> warnings)
@@ -109,21 +129,31 @@ class SceneParser {
     read_settings(root);
     read_particles();
     read_edges();
-    mesh_forces_ = read_mesh_elements(root, scene_, file_, files_);
-    read_collision_elements(root, scene_, file_);
+    mesh_forces_ = read_mesh_elements(root, scene_, file_, files_, errors_);
+    read_collision_elements(root, scene_, file_, files_.limits(), errors_);
     read_forces();
     read_appearance();
+    errors_.throw_if_any();
     return std::move(scene_);
   }
 
  private:
   ElementReader reader(const XMLElement& element, int index) {
-    return ElementReader(element, file_, index, scene_.model.num_particles(),
-                         static_cast<int>(scene_.model.edges.size()));
+    ElementReader r(element, file_, index, scene_.model.num_particles(),
+                    static_cast<int>(scene_.model.edges.size()));
+    r.skip_broken(&broken_);
+    return r;
+  }
+
+  /// Ends reading now: the problems found so far with `fatal` last.
+  [[noreturn]] void stop(const SceneError& fatal) {
+    errors_.add(fatal);
+    errors_.throw_if_any();
+    throw fatal;  // not reached: throw_if_any() throws
   }
 
   void keep_warnings(const ElementReader& r) {
-    for (auto& warning : r.unknown_attribute_warnings()) scene_.warnings.push_back(warning);
+    for (auto& warning : r.finish()) scene_.warnings.push_back(warning);
   }
 
   void read_root(const XMLElement& root) {
@@ -132,28 +162,33 @@ class SceneParser {
                        "the root element must be <scene>");
     }
     ElementReader r = reader(root, -1);
-    if (r.has("dim")) {
-      const int dim = r.integer("dim");
-      if (dim != 2 && dim != 3) r.fail("dim", "must be 2 or 3, found " + std::to_string(dim));
-      scene_.model.dim = dim;
+    try {  // every other element depends on the dimension
+      if (r.has("dim")) {
+        const int dim = r.integer("dim");
+        if (dim != 2 && dim != 3) r.fail("dim", "must be 2 or 3, found " + std::to_string(dim));
+        scene_.model.dim = dim;
+      }
+      keep_warnings(r);
+    } catch (const SceneError& error) {
+      stop(error);
     }
-    keep_warnings(r);
   }
 
   void group_children(const XMLElement& root) {
     for (const XMLElement* e = root.FirstChildElement(); e; e = e->NextSiblingElement()) {
       if (!is_known_element(e->Name())) {
-        throw SceneError(file_, e->GetLineNum(), std::string("<") + e->Name() + ">",
-                         "unknown element");
+        errors_.add(SceneError(file_, e->GetLineNum(), std::string("<") + e->Name() + ">",
+                               "unknown element" + element_suggestion(e->Name())));
+        continue;
       }
       // Only the mesh elements hold elements (<pin>, read with them); anything inside another
       // element would otherwise be dropped without a word.
       const XMLElement* child = e->FirstChildElement();
       if (child != nullptr && !is_mesh_element(e->Name())) {
-        throw SceneError(file_, child->GetLineNum(), std::string("<") + child->Name() + ">",
-                         std::string("inside <") + e->Name() +
-                             ">, which holds no elements: close <" + e->Name() +
-                             " .../> before it");
+        errors_.add(SceneError(file_, child->GetLineNum(), std::string("<") + child->Name() + ">",
+                               std::string("inside <") + e->Name() +
+                                   ">, which holds no elements: close <" + e->Name() +
+                                   " .../> before it"));
       }
       elements_[e->Name()].push_back(e);
     }
@@ -165,22 +200,35 @@ class SceneParser {
   const XMLElement* single(const XMLElement& root, const char* name, bool required) {
     const auto& found = all(name);
     if (found.empty()) {
-      if (!required) return nullptr;
-      throw SceneError(file_, root.GetLineNum(), "<scene>",
-                       std::string("the required element <") + name + "> is missing");
+      if (required) {
+        errors_.add(SceneError(file_, root.GetLineNum(), "<scene>",
+                               std::string("the required element <") + name + "> is missing"));
+      }
+      return nullptr;
     }
     if (found.size() > 1) {
-      throw SceneError(
+      errors_.add(SceneError(
           file_, found[1]->GetLineNum(), std::string("<") + name + ">",
-          "may appear only once (first at line " + std::to_string(found[0]->GetLineNum()) + ")");
+          "may appear only once (first at line " + std::to_string(found[0]->GetLineNum()) + ")"));
     }
     return found[0];
   }
 
+  /// Reads the element `name` (at most one; `required` ones must appear) with `read`.
+  template <class Read>
+  void read_single(const XMLElement& root, const char* name, bool required, Read&& read) {
+    if (const XMLElement* e = single(root, name, required)) {
+      errors_.attempt([&] {
+        ElementReader r = reader(*e, -1);
+        read(r);
+        keep_warnings(r);
+      });
+    }
+  }
+
   void read_settings(const XMLElement& root) {
     SceneModel& model = scene_.model;
-    {
-      ElementReader r = reader(*single(root, "integrator", true), -1);
+    read_single(root, "integrator", true, [&](ElementReader& r) {
       const std::string type = r.text("type");
       const IntegratorMethod* method = find_integrator_method(type);
       if (method == nullptr) {
@@ -195,39 +243,22 @@ class SceneParser {
       model.integrator.dt = r.positive("dt");
       AttributeOptions options(r);
       model.integrator.options.read(options);
-      keep_warnings(r);
-    }
-    {
-      ElementReader r = reader(*single(root, "duration", true), -1);
-      model.duration = r.non_negative("time");
-      keep_warnings(r);
-    }
-    if (const XMLElement* e = single(root, "maxsimfreq", false)) {
-      ElementReader r = reader(*e, -1);
-      scene_.max_sim_frequency = r.positive("max");
-      keep_warnings(r);
-    }
-    if (const XMLElement* e = single(root, "description", false)) {
-      ElementReader r = reader(*e, -1);
-      scene_.description = r.text("text");
-      keep_warnings(r);
-    }
-    if (const XMLElement* e = single(root, "scenetag", false)) {
-      ElementReader r = reader(*e, -1);
-      scene_.tag = r.text("tag");
-      keep_warnings(r);
-    }
-    if (const XMLElement* e = single(root, "backgroundcolor", false)) {
-      ElementReader r = reader(*e, -1);
-      scene_.appearance.background = r.color();
-      keep_warnings(r);
-    }
-    if (const XMLElement* e = single(root, "viewport", false)) {
-      ElementReader r = reader(*e, -1);
+    });
+    read_single(root, "duration", true,
+                [&](ElementReader& r) { model.duration = r.non_negative("time"); });
+    read_single(root, "maxsimfreq", false,
+                [&](ElementReader& r) { scene_.max_sim_frequency = r.positive("max"); });
+    read_single(root, "description", false,
+                [&](ElementReader& r) { scene_.description = r.text("text"); });
+    read_single(root, "scenetag", false, [&](ElementReader& r) { scene_.tag = r.text("tag"); });
+    read_single(root, "backgroundcolor", false,
+                [&](ElementReader& r) { scene_.appearance.background = r.color(); });
+    read_single(root, "viewport", false, [&](ElementReader& r) {
       scene_.appearance.viewport = Viewport{r.number("cx"), r.number("cy"), r.positive("size")};
-      keep_warnings(r);
+    });
+    if (const XMLElement* e = single(root, "camera3d", false)) {
+      errors_.attempt([&] { read_camera3d(*e); });
     }
-    if (const XMLElement* e = single(root, "camera3d", false)) read_camera3d(*e);
   }
 
   /// <camera3d yaw pitch distance tx ty tz fov projection>, every attribute optional.
@@ -262,46 +293,57 @@ class SceneParser {
     SceneModel& model = scene_.model;
     const auto& particles = all("particle");
     if (static_cast<std::int64_t>(particles.size()) > files_.limits().max_particles) {
-      throw SceneError(
+      stop(SceneError(
           file_, particles.front()->GetLineNum(), "<particle>",
           "the scene declares " + std::to_string(particles.size()) + " particles, " +
-              over_limit(files_.limits().max_particles, "particles", "--max-particles"));
+              over_limit(files_.limits().max_particles, "particles", "--max-particles")));
     }
     const int n = static_cast<int>(particles.size());
     const int dim = model.dim;
-    model.mass.resize(dim * n);
+    model.mass.setOnes(dim * n);  // a particle whose element fails keeps these values
     model.fixed.assign(n, false);
-    scene_.initial.q.resize(dim * n);
-    scene_.initial.v.resize(dim * n);
+    scene_.initial.q.setZero(dim * n);
+    scene_.initial.v.setZero(dim * n);
+    broken_.particles.assign(n, 0);
     model.particle_radius.assign(n, SceneModel::kDefaultParticleRadius);
     scene_.appearance.particle_color.assign(n, Appearance::kDefaultParticleColor);
     scene_.particle_tags.assign(n, "");
     for (int p = 0; p < n; ++p) {
-      ElementReader r = reader(*particles[p], p);
-      model.mass.segment(dim * p, dim).setConstant(r.positive("m"));
-      for (int c = 0; c < dim; ++c) {
-        scene_.initial.q[dim * p + c] = r.number(kPositionNames[c]);
-        scene_.initial.v[dim * p + c] = r.number(kVelocityNames[c]);
-      }
-      model.fixed[p] = r.flag("fixed");
-      model.particle_radius[p] = r.non_negative_or("radius", SceneModel::kDefaultParticleRadius);
-      scene_.particle_tags[p] = r.text_or_empty("tag");
-      keep_warnings(r);
+      broken_.particles[p] = !errors_.attempt([&] {
+        ElementReader r = reader(*particles[p], p);
+        model.mass.segment(dim * p, dim).setConstant(r.positive("m"));
+        for (int c = 0; c < dim; ++c) {
+          scene_.initial.q[dim * p + c] = r.number(kPositionNames[c]);
+          scene_.initial.v[dim * p + c] = r.number(kVelocityNames[c]);
+        }
+        model.fixed[p] = r.flag("fixed");
+        model.particle_radius[p] = r.non_negative_or("radius", SceneModel::kDefaultParticleRadius);
+        scene_.particle_tags[p] = r.text_or_empty("tag");
+        keep_warnings(r);
+      });
     }
   }
 
   void read_edges() {
     const auto& edges = all("edge");
+    // An edge whose element fails keeps its place (so that later edges keep their indices) as
+    // the edge 0-0, marked broken: no element that refers to it is read.
     for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
-      ElementReader r = reader(*edges[e], e);
-      const int i = r.particle_index("i");
-      const int j = r.particle_index("j");
-      if (i == j) r.fail("j", "must differ from i (both are " + std::to_string(i) + ")");
+      int i = 0, j = 0;
+      double radius = SceneModel::kDefaultEdgeRadius;
+      const bool read = errors_.attempt([&] {
+        ElementReader r = reader(*edges[e], e);
+        i = r.particle_index("i");
+        j = r.particle_index("j");
+        if (i == j) r.fail("j", "must differ from i (both are " + std::to_string(i) + ")");
+        radius = r.non_negative_or("radius", SceneModel::kDefaultEdgeRadius);
+        keep_warnings(r);
+      });
+      if (!read) i = j = 0;
       scene_.model.edges.push_back({i, j});
-      scene_.model.edge_radius.push_back(
-          r.non_negative_or("radius", SceneModel::kDefaultEdgeRadius));
+      scene_.model.edge_radius.push_back(radius);
       scene_.appearance.edge_color.push_back(Appearance::kDefaultEdgeColor);
-      keep_warnings(r);
+      broken_.edges.push_back(read ? 0 : 1);
     }
   }
 
@@ -310,9 +352,12 @@ class SceneParser {
     for (const ForceKind& kind : force_kinds()) {
       const auto& declarations = all(std::string(kind.tag));
       for (int k = 0; k < static_cast<int>(declarations.size()); ++k) {
-        ElementReader r = reader(*declarations[k], k);
-        scene_.model.forces.push_back(kind.create(r, context));
-        keep_warnings(r);
+        errors_.attempt([&] {
+          ElementReader r = reader(*declarations[k], k);
+          std::unique_ptr<Force> force = kind.create(r, context);
+          keep_warnings(r);
+          scene_.model.forces.push_back(std::move(force));
+        });
       }
       if (!declarations.empty()) {
         scene_.grading_theme = std::max(scene_.grading_theme, kind.course_theme);
@@ -327,27 +372,33 @@ class SceneParser {
     Appearance& look = scene_.appearance;
     const auto& particle_colors = all("particlecolor");
     for (int k = 0; k < static_cast<int>(particle_colors.size()); ++k) {
-      ElementReader r = reader(*particle_colors[k], k);
-      const int i = r.particle_index("i");
-      look.particle_color[i] = r.color();
-      keep_warnings(r);
+      errors_.attempt([&] {
+        ElementReader r = reader(*particle_colors[k], k);
+        const int i = r.particle_index("i");
+        look.particle_color[i] = r.color();
+        keep_warnings(r);
+      });
     }
     const auto& edge_colors = all("edgecolor");
     for (int k = 0; k < static_cast<int>(edge_colors.size()); ++k) {
-      ElementReader r = reader(*edge_colors[k], k);
-      const int i = r.edge_index("i");
-      look.edge_color[i] = r.color();
-      keep_warnings(r);
+      errors_.attempt([&] {
+        ElementReader r = reader(*edge_colors[k], k);
+        const int i = r.edge_index("i");
+        look.edge_color[i] = r.color();
+        keep_warnings(r);
+      });
     }
     const auto& paths = all("particlepath");
     for (int k = 0; k < static_cast<int>(paths.size()); ++k) {
-      ElementReader r = reader(*paths[k], k);
-      ParticlePath path;
-      path.particle = r.particle_index("i");
-      path.duration = r.non_negative("duration");
-      path.color = r.color();
-      look.paths.push_back(path);
-      keep_warnings(r);
+      errors_.attempt([&] {
+        ElementReader r = reader(*paths[k], k);
+        ParticlePath path;
+        path.particle = r.particle_index("i");
+        path.duration = r.non_negative("duration");
+        path.color = r.color();
+        keep_warnings(r);
+        look.paths.push_back(path);
+      });
     }
   }
 
@@ -356,6 +407,8 @@ class SceneParser {
   Scene scene_;
   std::map<std::string, std::vector<const XMLElement*>> elements_;
   std::vector<std::unique_ptr<Force>> mesh_forces_;
+  SceneErrorList errors_;
+  BrokenElements broken_;
 };
 
 /// Refuses, before tinyxml2 reads it, an element of more than `limit` attributes (counted as the

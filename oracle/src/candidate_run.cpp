@@ -53,7 +53,7 @@ std::string cannot_start_reason(const ChildOutcome& outcome, const std::string& 
   if (outcome.start_step == "exec") {
     switch (outcome.start_error) {
       case ENOENT:
-        return "the candidate " + candidate + " does not exist";
+        return "the candidate " + candidate + " " + why_not_found(candidate);
       case EACCES:
         return "the candidate " + candidate + " is not executable (permission denied)";
       case ENOEXEC:
@@ -149,7 +149,7 @@ std::optional<std::string> candidate_problem(const std::string& candidate) {
   struct stat info;
   if (::stat(candidate.c_str(), &info) != 0) {
     return errno == ENOENT
-               ? "the candidate " + candidate + " does not exist"
+               ? "the candidate " + candidate + " " + why_not_found(candidate)
                : "cannot start the candidate " + candidate + " (" + std::strerror(errno) + ")";
   }
   if (!S_ISREG(info.st_mode)) return "the candidate " + candidate + " is not a file";

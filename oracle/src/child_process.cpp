@@ -342,6 +342,17 @@ std::string resolve_executable(const std::string& name) {
   return "";
 }
 
+std::string why_not_found(const std::string& name) {
+  struct stat info;
+  const bool here = ::stat(name.c_str(), &info) == 0;
+  if (name.find('/') != std::string::npos) return here ? "cannot be run" : "does not exist";
+  if (here && S_ISREG(info.st_mode) && ::access(name.c_str(), X_OK) == 0) {
+    return "is not on PATH; the current folder has one, so give ./" + name +
+           " (a name without a '/' is looked for in the PATH, never in the current folder)";
+  }
+  return "is not on PATH (give its path, such as ./" + name + ", if it is not installed)";
+}
+
 int count_descendants(int pid) {
   namespace fs = std::filesystem;
   // Parent links of every process; /proc/N/stat is "N (command) state ppid ...", and the

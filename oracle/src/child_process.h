@@ -75,6 +75,12 @@ bool children_stopped();
 /// otherwise the first executable file called `name` in $PATH; empty when none is found.
 std::string resolve_executable(const std::string& name);
 
+/// Why resolve_executable(name) found nothing, as the end of "the candidate NAME ...": "is not
+/// on PATH; the current folder has one, so give ./NAME (the PATH is searched for a name without
+/// a '/', never the current folder)" when `name` has no '/' and the current folder holds an
+/// executable of that name; otherwise "does not exist" or "is not on PATH".
+std::string why_not_found(const std::string& name);
+
 /// How many processes descend from `pid` (children, their children, ...), not counting `pid`
 /// itself, from the parent links in /proc; 0 when /proc cannot be read.
 int count_descendants(int pid);

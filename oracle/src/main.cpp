@@ -246,8 +246,8 @@ int run_grade(const GradeCommand& command) {
   options.run.candidate = resolve_executable(command.candidate);
   if (options.run.candidate.empty()) {
     options.run.candidate = command.candidate;
-    std::cerr << "fosssim-oracle: warning: the candidate " << command.candidate
-              << " is not found; every scene will fail\n";
+    std::cerr << "fosssim-oracle: warning: the candidate " << command.candidate << " "
+              << why_not_found(command.candidate) << "; every scene will fail\n";
   }
   options.run.timeout_seconds = command.timeout;
   options.run.sandbox = !command.no_sandbox;
@@ -354,7 +354,8 @@ std::variant<std::vector<ManifestEntry>, int> compute_for(const ManifestCommand&
   options.sandbox = false;
   options.candidate = resolve_executable(command.candidate);
   if (options.candidate.empty()) {
-    std::cerr << "fosssim-oracle: error: the candidate " << command.candidate << " is not found\n";
+    std::cerr << "fosssim-oracle: error: the candidate " << command.candidate << " "
+              << why_not_found(command.candidate) << "\n";
     return kExitBadInput;
   }
   options.timeout_seconds = command.timeout;

@@ -171,8 +171,9 @@ TEST_F(CommandLine3D, GenerateRefusesNumbersAndNamesThatWouldMakeBadFiles) {
 
 TEST_F(CommandLine3D, SparseSolversGiveTheSameBitsFromRunToRunOnTwoThreads) {
   // A 50x50 cloth: 7500 unknowns, past the size where the step solver takes CHOLMOD's factors
-  // (supernodal, with OpenBLAS behind it) and GMRES. With two BLAS and OpenMP threads the
-  // trajectories of two runs must be identical, byte for byte, for every sparse method.
+  // (supernodal, with OpenBLAS behind it) and GMRES. With two BLAS and OpenMP threads
+  // (--threads 2) the trajectories of two runs must be identical, byte for byte, for every
+  // sparse method, and the run says how many threads it used.
   for (const std::string method :
        {"linearly-implicit-euler", "newton", "quasi-newton", "accelerated-local-global"}) {
     write(method + ".xml", R"(<scene dim="3">
@@ -185,14 +186,74 @@ TEST_F(CommandLine3D, SparseSolversGiveTheSameBitsFromRunToRunOnTwoThreads) {
     std::string runs[2];
     for (int r = 0; r < 2; ++r) {
       const std::string out = method + std::to_string(r) + ".bin";
-      const ProgramResult result = run("OPENBLAS_NUM_THREADS=2 OMP_NUM_THREADS=2 " + kFosssim +
-                                       " -s " + path(method + ".xml") + " -d 0 -q -o " + path(out));
+      const ProgramResult result =
+          run(kFosssim + " --threads 2 -s " + path(method + ".xml") + " -d 0 -q -o " + path(out));
       ASSERT_EQ(result.status, 0) << method << "\n" << result.output();
+      EXPECT_NE(result.output().find("FOSSSim: note: the sparse solvers use 2 BLAS threads"),
+                std::string::npos)
+          << result.output();
       runs[r] = folder_.read(out);
     }
     EXPECT_GT(runs[0].size(), 6u * 2500u * 3u * 8u) << method;
     EXPECT_TRUE(runs[0] == runs[1]) << method << ": two runs differ";
   }
+}
+
+// The thread count is --threads alone (default 1): the environment's OPENBLAS_NUM_THREADS and
+// OMP_NUM_THREADS do not change a run's bytes, and a default run says nothing about threads.
+TEST_F(CommandLine3D, TheDefaultOfOneSolverThreadOverridesTheEnvironment) {
+  write("cloth.xml", R"(<scene dim="3">
+  <duration time="0.06"/>
+  <integrator type="linearly-implicit-euler" dt="0.02"/>
+  <generate type="cloth" nx="50" ny="50" plane="xz" pin="corners" k="200" m="0.001"/>
+  <simplegravity fx="0" fy="-9.8" fz="0"/>
+</scene>)");
+  const ProgramResult by_environment =
+      run("OPENBLAS_NUM_THREADS=2 OMP_NUM_THREADS=2 " + kFosssim + " -s " + path("cloth.xml") +
+          " -d 0 -q -o " + path("environment.bin"));
+  ASSERT_EQ(by_environment.status, 0) << by_environment.output();
+  EXPECT_EQ(by_environment.output().find("threads"), std::string::npos) << by_environment.output();
+  const ProgramResult one =
+      run("OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 " + kFosssim + " --threads 1 -s " +
+          path("cloth.xml") + " -d 0 -q -o " + path("one.bin"));
+  ASSERT_EQ(one.status, 0) << one.output();
+  EXPECT_TRUE(folder_.read("environment.bin") == folder_.read("one.bin"));
+}
+
+TEST_F(CommandLine3D, ThreadsMustBeAPositiveCount) {
+  for (const char* bad : {"0", "-1", "x", "1.5"}) {
+    const ProgramResult result =
+        run(kFosssim + " --threads " + bad + " -s " + path("none.xml") + " -d 0");
+    EXPECT_EQ(result.status, 2) << bad << "\n" << result.output();
+    EXPECT_NE(result.output().find("--threads"), std::string::npos) << result.output();
+  }
+}
+
+// Issue 24: a signal used to be looked at between steps only, so a step that never ends could
+// not be interrupted. Here one step is a million local/global iterations of a 40x40 cloth
+// (minutes); SIGTERM must end the run within 2 s, in the middle of that step, keeping its
+// frames as out.bin.incomplete and leaving nothing under the final name.
+TEST_F(CommandLine3D, SigtermEndsARunInsideAStepThatWouldTakeMinutes) {
+  write("long.xml", R"(<scene dim="3">
+  <duration time="1"/>
+  <integrator type="local-global" dt="0.01" iterations="1000000" tolerance="0"/>
+  <generate type="cloth" nx="40" ny="40" plane="xz" pin="corners" k="1000" m="0.001"/>
+  <simplegravity fx="0" fy="-9.8" fz="0"/>
+</scene>)");
+  const ProgramResult result =
+      run(kFosssim + " -s " + path("long.xml") + " -d 0 -q -o " + path("out.bin") +
+          " & pid=$!; i=0; while [ $i -lt 600 ] && ! ls | grep -q 'partial$'; do sleep 0.05; "
+          "i=$((i+1)); done; sleep 0.5; start=$(date +%s%N); kill -s TERM $pid; wait $pid; "
+          "status=$?; echo \"ms $(( ($(date +%s%N) - start) / 1000000 ))\"; exit $status");
+  EXPECT_EQ(result.status, 130) << result.output();
+  EXPECT_NE(result.err.find("FOSSSim: interrupted by signal 15 (Terminated) at step 0"),
+            std::string::npos)
+      << result.err;
+  const std::size_t at = result.out.find("ms ");
+  ASSERT_NE(at, std::string::npos) << result.output();
+  EXPECT_LT(std::stol(result.out.substr(at + 3)), 2000) << result.output();
+  EXPECT_FALSE(std::filesystem::exists(path("out.bin")));
+  EXPECT_TRUE(std::filesystem::exists(path("out.bin.incomplete")));
 }
 
 }  // namespace

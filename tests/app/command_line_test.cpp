@@ -163,11 +163,28 @@ TEST_F(CommandLine, GradingACutShortFileIsAnError) {
   fs::resize_file(path("out.bin"), 60 * kSpringFrameBytes);
   const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "-i", "out.bin"});
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(
-      r.err,
-      "FOSSSim: error: out.bin: the trajectory has 60 frames, but the scene takes 100 steps "
-      "and so needs 101 (the initial state and one frame per step); the file was cut short\n");
+  EXPECT_EQ(r.err,
+            "FOSSSim: error: out.bin: the trajectory has 60 frames, but the scene takes 100 steps "
+            "and so needs 101 (the initial state and one frame per step); the file was cut short, "
+            "or made with another duration\n");
   EXPECT_EQ(r.out.find("Overall success"), std::string::npos);
+}
+
+// Issue 23: a trajectory made with another --dt was called "cut short"; its first step tells
+// its time step, and the message says so.
+TEST_F(CommandLine, GradingAFileOfAnotherTimeStepSaysSo) {
+  ASSERT_EQ(fosssim({"-s", "spring.xml", "-d", "0", "--dt", "0.005", "-o", "half.bin"}).status, 0);
+  const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "-i", "half.bin"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("the trajectory has 201 frames, but the scene takes 100 steps and so "
+                       "needs 101 (the initial state and one frame per step); its frames are "
+                       "0.005 s apart"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("not the scene's 0.01 s: it was made with another time step (grade with "
+                       "--dt 0.005, as it was run)"),
+            std::string::npos)
+      << r.err;
 }
 
 TEST_F(CommandLine, GradingAFileOfTheWrongSizeIsAnError) {
@@ -309,8 +326,8 @@ TEST_F(CommandLine, ProgressLinesWhenStandardErrorIsNotATerminal) {
   EXPECT_EQ(lines.status, 0) << lines.err;
   EXPECT_NE(lines.err.find("FOSSSim: simulating: step "), std::string::npos) << lines.err;
   EXPECT_NE(lines.err.find("step 200000 of 200000 (100%)"), std::string::npos) << lines.err;
-  const ProgramResult off = fosssim({"-s", "spring.xml", "-d", "0", "-i", "a.bin", "--progress",
-                                     "off"});
+  const ProgramResult off =
+      fosssim({"-s", "spring.xml", "-d", "0", "-i", "a.bin", "--progress", "off"});
   EXPECT_EQ(off.err.find("FOSSSim: grading"), std::string::npos) << off.err;
   for (const char* bad : {"nan", "0", "-1", "1e9", "10s"}) {
     const ProgramResult r = fosssim({"-s", "spring.xml", "-d", "0", "--progress-every", bad});

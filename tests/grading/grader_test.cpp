@@ -151,7 +151,8 @@ TEST_F(Grader, RejectsAFileWithTooFewFrames) {
   EXPECT_EQ(report_error.kind(), ErrorKind::kBadInput);
   EXPECT_STREQ(report_error.what(),
                "the trajectory has 50 frames, but the scene takes 50 steps and so needs 51 (the "
-               "initial state and one frame per step); the file was cut short");
+               "initial state and one frame per step); the file was cut short, or made with "
+               "another duration");
 }
 
 TEST_F(Grader, RejectsAFileWithTooManyFrames) {
@@ -160,7 +161,7 @@ TEST_F(Grader, RejectsAFileWithTooManyFrames) {
   EXPECT_EQ(report_error.kind(), ErrorKind::kBadInput);
   EXPECT_STREQ(report_error.what(),
                "the trajectory has 52 frames, but the scene takes 50 steps and so needs 51 (the "
-               "initial state and one frame per step)");
+               "initial state and one frame per step); the file was made with another duration");
 }
 
 TEST_F(Grader, ReportsAReferenceStepThatCannotBeTaken) {

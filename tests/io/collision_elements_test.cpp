@@ -72,16 +72,37 @@ TEST(CollisionElements, MaxitersAboveTheLimitIsCappedWithAWarning) {
   EXPECT_EQ(scene.model.collisions.max_iterations, 1000);
   ASSERT_EQ(scene.warnings.size(), 1u);
   EXPECT_EQ(scene.warnings[0],
-            "c.xml:4: warning: <collision>: maxiters = 2e+09 is more than FOSSSim's limit of "
-            "1000 impulse passes a step; 1000 are made (docs/limits-and-failures.md, "
-            "\"Hybrid passes\")");
+            "c.xml:4: warning: <collision>: maxiters = 2e+09 is more than the limit of 1000 "
+            "impulse passes a step; 1000 are made (raise it with --max-hybrid-passes N; "
+            "docs/limits-and-failures.md, \"Hybrid passes\")");
   // The limit itself, and the course's values, are taken as they are.
   for (const int passes : {0, 1, 10, 1000}) {
-    const Scene at = load("<collision type=\"hybrid\" maxiters=\"" + std::to_string(passes) +
-                          "\"/>\n");
+    const Scene at =
+        load("<collision type=\"hybrid\" maxiters=\"" + std::to_string(passes) + "\"/>\n");
     EXPECT_EQ(at.model.collisions.max_iterations, passes);
     EXPECT_TRUE(at.warnings.empty()) << passes;
   }
+}
+
+// Issue 24: the cap is a limit like the others, which the command line raises or lowers.
+TEST(CollisionElements, TheLimitOfHybridPassesCanBeRaisedAndLowered) {
+  const std::string text =
+      std::string(kHeader) + "<collision type=\"hybrid\" maxiters=\"5000\"/>\n</scene>\n";
+  Limits raised;
+  raised.max_hybrid_passes = 10000;
+  InputFiles more(raised);
+  const Scene scene = load_scene_text(text, "c.xml", more);
+  EXPECT_EQ(scene.model.collisions.max_iterations, 5000);
+  EXPECT_TRUE(scene.warnings.empty());
+  Limits lowered;
+  lowered.max_hybrid_passes = 20;
+  InputFiles fewer(lowered);
+  const Scene capped = load_scene_text(text, "c.xml", fewer);
+  EXPECT_EQ(capped.model.collisions.max_iterations, 20);
+  ASSERT_EQ(capped.warnings.size(), 1u);
+  EXPECT_NE(capped.warnings[0].find("more than the limit of 20 impulse passes a step; 20 are made"),
+            std::string::npos)
+      << capped.warnings[0];
 }
 
 struct Case {

@@ -3,10 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 
 #include "core/integrators/integrator_registry.h"
+#include "io/scene_error.h"
 #include "io/scene_loader.h"
 #include "support/scratch_folder.h"
 #include "support/thrown.h"
@@ -108,7 +110,13 @@ const Case kCases[] = {
      "bad.xml:6: error: <vortexforce> 0: attribute \"kvc\" is missing"},
     {"GravityMissingComponent", "<simplegravity fx=\"0\"/>\n",
      "bad.xml:3: error: <simplegravity> 0: attribute \"fy\" is missing"},
-    {"UnknownElement", "<particles m=\"1\"/>\n", "bad.xml:3: error: <particles>: unknown element"},
+    {"UnknownElement", "<particles m=\"1\"/>\n",
+     "bad.xml:3: error: <particles>: unknown element (did you mean <particle>?)"},
+    {"UnknownElementFarFromAny", "<wind speed=\"1\"/>\n",
+     "bad.xml:3: error: <wind>: unknown element"},
+    {"MisspeltAttribute",
+     "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\" raduis=\"0.5\"/>\n",
+     "bad.xml:3: error: <particle> 0: unknown attribute \"raduis\" (did you mean \"radius\"?)"},
     {"ColorOutOfRange",
      std::string(kTwoParticles) + "<particlecolor i=\"0\" r=\"1.5\" g=\"0\" b=\"0\"/>\n",
      "bad.xml:6: error: <particlecolor> 0: attribute \"r\" must be between 0 and 1, found 1.5"},
@@ -272,6 +280,79 @@ TEST(SceneLoaderErrors, ErrorCarriesItsParts) {
   EXPECT_EQ(error.line(), 3);
   EXPECT_EQ(error.element(), "<particle> 0");
   EXPECT_EQ(error.problem(), "attribute \"m\" must be a finite number, found \"x\"");
+}
+
+}  // namespace
+}  // namespace fosssim
+
+namespace fosssim {
+namespace {
+
+// Issue 23: one run reports the problems of every element, in the order of their lines.
+TEST(SceneLoaderErrors, EveryElementsProblemIsReportedInOneRunInLineOrder) {
+  const std::string text = std::string(kHeader) +
+                           "<particle m=\"-1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
+                           "<particle m=\"1\" px=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"2\"/>\n"
+                           "<simplegravity fx=\"0\"/>\n"
+                           "<sprnigforce edge=\"0\" k=\"1\" l0=\"1\"/>\n"
+                           "<duration time=\"2\"/>\n"
+                           "</scene>\n";
+  const SceneErrors error = thrown_by<SceneErrors>([&] { load_scene_text(text, "bad.xml"); });
+  EXPECT_EQ(std::string(error.what()),
+            "bad.xml:3: error: <particle> 0: attribute \"m\" must be positive, found -1\n"
+            "bad.xml:4: error: <particle> 1: attribute \"fixed\" must be 0 or 1, found \"2\"\n"
+            "bad.xml:5: error: <simplegravity> 0: attribute \"fy\" is missing\n"
+            "bad.xml:6: error: <sprnigforce>: unknown element (did you mean <springforce>?)\n"
+            "bad.xml:7: error: <duration>: may appear only once (first at line 2)");
+  // The structured parts are those of the first line.
+  EXPECT_EQ(error.line(), 3);
+  EXPECT_EQ(error.element(), "<particle> 0");
+  EXPECT_EQ(error.kind(), ErrorKind::kBadInput);
+  EXPECT_EQ(error.total(), 5u);
+  EXPECT_EQ(error.errors().size(), 5u);
+}
+
+// An element that refers to one whose own element failed is skipped, not reported: its problem
+// is the other's. Elements after it keep their indices.
+TEST(SceneLoaderErrors, ElementsReferringToBrokenOnesAreSkippedWithoutAReport) {
+  const std::string text = std::string(kHeader) +
+                           "<particle m=\"0\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
+                           "<particle m=\"1\" px=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
+                           "<particle m=\"1\" px=\"2\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
+                           "<edge i=\"0\" j=\"1\"/>\n"                      // broken: particle 0
+                           "<edge i=\"1\" j=\"2\" radius=\"-1\"/>\n"        // broken itself
+                           "<edge i=\"1\" j=\"2\"/>\n"                      // edge 2, fine
+                           "<springforce edge=\"0\" k=\"1\" l0=\"1\"/>\n"   // skipped
+                           "<springforce edge=\"1\" k=\"1\" l0=\"1\"/>\n"   // skipped
+                           "<springforce edge=\"2\" k=\"-1\" l0=\"1\"/>\n"  // its own problem
+                           "<particlecolor i=\"0\" r=\"1\" g=\"0\" b=\"0\"/>\n"  // skipped
+                           "</scene>\n";
+  const SceneError error = thrown_by<SceneError>([&] { load_scene_text(text, "bad.xml"); });
+  EXPECT_EQ(std::string(error.what()),
+            "bad.xml:3: error: <particle> 0: attribute \"m\" must be positive, found 0\n"
+            "bad.xml:7: error: <edge> 1: attribute \"radius\" must be non-negative, found -1\n"
+            "bad.xml:11: error: <springforce> 2: attribute \"k\" must be non-negative, found -1");
+}
+
+// Bounded: a generated file with a problem on every line prints the first 20 and a count.
+TEST(SceneLoaderErrors, ReportsAtMostTwentyProblemsAndCountsTheRest) {
+  std::string text = kHeader;
+  for (int k = 0; k < 1000; ++k) {
+    text += "<particle m=\"-1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n";
+  }
+  text += "</scene>\n";
+  const std::string message = error_of(text);
+  EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 20);
+  EXPECT_EQ(message.substr(0, message.find('\n')),
+            "bad.xml:3: error: <particle> 0: attribute \"m\" must be positive, found -1");
+  EXPECT_EQ(message.substr(message.rfind('\n') + 1),
+            "... and 980 more errors (only the first 20 are shown)");
+}
+
+// A problem that leaves nothing to go on with ends reading at once, after those found before.
+TEST(SceneLoaderErrors, ABadDimensionEndsReading) {
+  EXPECT_EQ(error_of("<scene dim=\"4\">\n<particle m=\"-1\"/>\n</scene>\n"),
+            "bad.xml:1: error: <scene>: attribute \"dim\" must be 2 or 3, found 4");
 }
 
 }  // namespace

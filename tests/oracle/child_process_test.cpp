@@ -177,5 +177,26 @@ TEST(ResolveExecutable, SearchesThePathForABareName) {
   EXPECT_EQ(resolve_executable("/bin/../bin/sh"), "/bin/sh");
 }
 
+// Issue 23: a candidate in the current folder but not on PATH was reported as "does not exist".
+TEST(ResolveExecutable, ANameFoundOnlyInTheCurrentFolderIsExplained) {
+  TemporaryFolder folder;
+  write_bytes(folder / "mysim-fosssim", "#!/bin/sh\nexit 0\n");
+  ::chmod((folder / "mysim-fosssim").c_str(), 0755);
+  const std::filesystem::path previous = std::filesystem::current_path();
+  std::filesystem::current_path(folder.path());
+  EXPECT_EQ(resolve_executable("mysim-fosssim"), "");  // exec would not find it either
+  const std::string here = why_not_found("mysim-fosssim");
+  const std::string elsewhere = why_not_found("no-such-program-fosssim");
+  const std::string missing = why_not_found("./no-such-program-fosssim");
+  std::filesystem::current_path(previous);
+  EXPECT_EQ(here,
+            "is not on PATH; the current folder has one, so give ./mysim-fosssim (a name "
+            "without a '/' is looked for in the PATH, never in the current folder)");
+  EXPECT_EQ(elsewhere,
+            "is not on PATH (give its path, such as ./no-such-program-fosssim, if it is not "
+            "installed)");
+  EXPECT_EQ(missing, "does not exist");
+}
+
 }  // namespace
 }  // namespace fosssim

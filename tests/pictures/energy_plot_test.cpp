@@ -102,5 +102,62 @@ TEST(WriteEnergyPlot, HandlesNoSamplesAndConstantEnergy) {
   EXPECT_GT(potential_top, total_bottom);
 }
 
+// Issue 24: --energy-plot kept every step's energies. The history keeps at most kBuckets
+// buckets: a run of up to 2 kBuckets states exactly, a longer one as each bucket's extremes.
+TEST(EnergyHistory, KeepsRunsOfUpToTwiceItsBucketsExactly) {
+  const int n = 2 * EnergyHistory::kBuckets;
+  const std::vector<EnergySample> samples = oscillator(n);
+  EnergyHistory history;
+  for (const EnergySample& s : samples) history.add(s);
+  EXPECT_EQ(history.count(), n);
+  EXPECT_EQ(history.bucket_size(), 2);
+  const auto total = history.points(2);
+  ASSERT_EQ(total.size(), static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    EXPECT_EQ(total[k][0], samples[k].time) << k;
+    EXPECT_EQ(total[k][1], samples[k].total()) << k;
+  }
+}
+
+TEST(EnergyHistory, AMillionStatesTakeBoundedPointsAndKeepAOneStepSpike) {
+  EnergyHistory history;
+  constexpr int kStates = 1'000'000, kSpike = 777'777;
+  for (int k = 0; k < kStates; ++k) {
+    const double t = 1e-3 * k;
+    history.add({t, k == kSpike ? 50.0 : 1.0 + 0.5 * std::sin(t), k == kSpike + 1 ? -7.0 : 0.0});
+  }
+  EXPECT_EQ(history.count(), kStates);
+  EXPECT_EQ(history.bucket_size(), 256);  // 1e6 / 256 < 4096 <= 1e6 / 128
+  double highest = 0.0, highest_time = 0.0, lowest = 0.0;
+  for (int c = 0; c < EnergyHistory::kCurves; ++c) {
+    const auto points = history.points(c);
+    EXPECT_LE(points.size(), 2u * EnergyHistory::kBuckets);
+    for (std::size_t k = 1; k < points.size(); ++k) EXPECT_LE(points[k - 1][0], points[k][0]);
+    if (c == 0) {
+      for (const auto& p : points) {
+        if (p[1] > highest) highest = p[1], highest_time = p[0];
+      }
+    }
+    if (c == 1) {
+      for (const auto& p : points) lowest = std::min(lowest, p[1]);
+    }
+  }
+  EXPECT_EQ(highest, 50.0);
+  EXPECT_EQ(highest_time, 1e-3 * kSpike);
+  EXPECT_EQ(lowest, -7.0);
+}
+
+TEST(EnergyHistory, ANonFiniteSampleBreaksTheCurveAfterItsBucket) {
+  EnergyHistory history;
+  history.add({0.0, 1.0, 1.0});
+  history.add({0.1, std::numeric_limits<double>::quiet_NaN(), 1.0});
+  history.add({0.2, 2.0, 1.0});
+  const auto kinetic = history.points(0);
+  ASSERT_EQ(kinetic.size(), 3u);
+  EXPECT_EQ(kinetic[0][1], 1.0);
+  EXPECT_TRUE(std::isnan(kinetic[1][1]));
+  EXPECT_EQ(kinetic[2][1], 2.0);
+}
+
 }  // namespace
 }  // namespace fosssim

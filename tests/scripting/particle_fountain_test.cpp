@@ -50,7 +50,7 @@ TEST(HashedUniform, LooksUniform) {
 void apply(ParticleFountain& fountain, const SceneModel& model, State& state) {
   const State start = state;
   StepRecord record;
-  fountain.apply(StepContext{model, start, model.integrator.dt, record}, state);
+  fountain.apply(StepContext{model, start, model.integrator.dt, record, {}}, state);
 }
 
 TEST(ParticleFountain, TeleportsTaggedParticlesBelowTheFloorToTheOriginGoingUp) {

@@ -2,6 +2,13 @@
 
 namespace fosssim::testing {
 
+Vector Random::unit_vector(int n) {
+  std::normal_distribution<double> normal(0.0, 1.0);
+  Vector out(n);
+  for (int k = 0; k < n; ++k) out[k] = normal(rng_);
+  return out.normalized();
+}
+
 PairCase random_pair_case(int dim, Random& random) {
   PairCase out;
   out.q = random.uniform_vector(3 * dim, -1.0, 1.0);

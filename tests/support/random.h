@@ -21,13 +21,11 @@ class Random {
     for (int k = 0; k < n; ++k) out[k] = uniform(lo, hi);
     return out;
   }
-  /// A uniformly distributed unit vector of size n.
-  Vector unit_vector(int n) {
-    std::normal_distribution<double> normal(0.0, 1.0);
-    Vector out(n);
-    for (int k = 0; k < n; ++k) out[k] = normal(rng_);
-    return out.normalized();
-  }
+  /// A uniformly distributed unit vector of size n. Defined in random.cpp, not here: inlined
+  /// into a caller with a constant n (2 or 3), GCC 12 followed Eigen's two-double loads of the
+  /// norm past the end of the n-double allocation it could then see (a -Warray-bounds false
+  /// positive: Eigen never reads there at run time).
+  Vector unit_vector(int n);
   int index(int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng_); }
 
  private:

@@ -116,6 +116,7 @@ void HybridStage::apply(const StepContext& context, State& state) {
   std::vector<PassCollision> found;
   Vector q_next, v_next;
   for (int pass = 0; pass < model.collisions.max_iterations; ++pass) {
+    context.cancellation.check();
     detect_all(model, *pairs_, xs, q, record, found);
     if (found.empty()) {
       resolved = true;
@@ -152,6 +153,7 @@ void HybridStage::apply(const StepContext& context, State& state) {
   };
   std::vector<ImpactZone> zones = zones_of({});
   while (true) {
+    context.cancellation.check();
     for (const ImpactZone& zone : zones) apply_rigid_failsafe(model, zone, xs, h, q, v);
     std::vector<ImpactZone> grown = zones_of(zones);
     if (grown == zones) break;

@@ -31,6 +31,7 @@ ImplicitEuler::NewtonResult ImplicitEuler::solve(const BackwardEulerStep& proble
   dv = Vector::Zero(state.v.size());
   Vector rhs = problem.residual(dv);
   for (int iteration = 1; iteration <= settings_.max_iterations; ++iteration) {
+    cancellation().check();
     const Vector v = state.v + dv;
     const auto delta = correction(state.q + h * v, v, h, rhs);
     if (!delta) {

@@ -10,6 +10,7 @@
 #include "core/integrators/integrator_method.h"
 #include "core/scene_model.h"
 #include "core/state.h"
+#include "core/step/cancellation.h"
 
 namespace fosssim {
 
@@ -45,7 +46,12 @@ class Integrator {
   /// sentence each; empty when there is nothing to say.
   virtual std::vector<std::string> notes() const { return {}; }
 
+  /// What the iterations of step() ask once per iteration (core/step/cancellation.h); by
+  /// default nothing cancels.
+  void set_cancellation(Cancellation cancellation) { cancellation_ = cancellation; }
+
  protected:
+  const Cancellation& cancellation() const { return cancellation_; }
   /// The method's precomputation; model() and forces() are set.
   virtual void prepare() {}
   /// Updates state.q and state.v from step state.step to state.step + 1.
@@ -54,6 +60,7 @@ class Integrator {
  private:
   std::optional<ForceSet> forces_;
   double dt_ = 0.0;  // the model's time step at precompute
+  Cancellation cancellation_;
 };
 
 /// The model's integrator (model.integrator: method and options), bound to the model and

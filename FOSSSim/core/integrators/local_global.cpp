@@ -99,6 +99,7 @@ void LocalGlobal<D>::iterate() {
   if (settings_.acceleration == Acceleration::kAnderson) return iterate_anderson();
   if (settings_.acceleration == Acceleration::kChebyshev) return iterate_chebyshev();
   for (int iteration = 1; iteration <= settings_.iterations; ++iteration) {
+    cancellation().check();
     local_step(rhs_);
     last_change_ = global_solve(rhs_);
     last_iterations_ = iteration;

@@ -78,6 +78,7 @@ void LocalGlobal<D>::iterate_anderson() {
   Vector fallback;
   double accepted = std::numeric_limits<double>::infinity();
   for (int iteration = 1; iteration <= settings_.iterations; ++iteration) {
+    cancellation().check();
     local_step(rhs_);
     double round_off = 0.0;
     double value = energy(&round_off);
@@ -111,6 +112,7 @@ void LocalGlobal<D>::iterate_chebyshev() {
   Vector previous = free_positions();
   double omega = 1.0;
   for (int iteration = 1; iteration <= settings_.iterations; ++iteration) {
+    cancellation().check();
     const Vector current = free_positions();
     local_step(rhs_);
     last_change_ = global_solve(rhs_);

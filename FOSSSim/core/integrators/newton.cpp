@@ -96,6 +96,7 @@ Vector Newton::minimize(const BackwardEulerStep& problem) {
   Vector rhs = problem.residual(dv);
   double potential = std::numeric_limits<double>::quiet_NaN();  // Φ(dv), once known
   for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
+    cancellation().check();
     const Vector v = state.v + dv;
     const Vector q = state.q + h * v;
     const SparseMatrix* exact = nullptr;  // A and Ā at dv, assembled when first needed
@@ -130,6 +131,7 @@ Vector Newton::find_root(const BackwardEulerStep& problem) {
   Vector dv = Vector::Zero(state.v.size());
   Vector rhs = problem.residual(dv);
   for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
+    cancellation().check();
     const Vector v = state.v + dv;
     const Vector delta = solve(matrix_->assemble(state.q + h * v, v, h), rhs, state.step + 1);
     const Vector step = residual_line_search(problem, dv, rhs, delta);  // updates rhs

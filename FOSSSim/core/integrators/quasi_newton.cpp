@@ -99,6 +99,7 @@ void QuasiNewton::advance(State& state) {
   last_iterations_ = 0;
   if (free_.num_particles() > 0) {
     for (int iteration = 1; iteration <= options_.iterations; ++iteration) {
+      cancellation().check();
       const Vector r = free_.restrict(rhs);
       Vector direction = Vector::Zero(dv.size());
       free_.add_expanded(lbfgs_direction(r), direction);

@@ -9,21 +9,27 @@
 
 namespace fosssim {
 
-inline constexpr std::array<std::string_view, 3> kSolverChoices = {"auto", "eigen", "cholmod"};
+/// The choices, named after what they do; "cholmod" is the old name of "sparse-direct"
+/// (which uses MUMPS, CHOLMOD or UMFPACK, docs/solvers.md), still accepted so that older scenes
+/// and command lines keep working.
+inline constexpr std::array<std::string_view, 4> kSolverChoices = {"auto", "eigen", "sparse-direct",
+                                                                   "cholmod"};
 
 /// The declaration of the option, shared by every integrator that has it.
 inline constexpr OptionSpec kSolverOption = OptionSpec::choice(
     "solver", kSolverChoices,
     "linear solves: the course's dense LU for 2D systems of at most 64 unknowns (bit for bit the "
-    "course's steps), Eigen's LDLT/LU below 1000 unknowns, CHOLMOD with reused factors from "
-    "there on (auto), or always one of the sparse ones (eigen, cholmod)");
+    "course's steps), Eigen's LDLT/LU below 1000 unknowns, the sparse direct libraries (MUMPS, "
+    "CHOLMOD, UMFPACK) with reused factors from there on (auto); or always Eigen's sparse "
+    "factorizations (eigen) or the sparse direct libraries (sparse-direct; cholmod is its old "
+    "name)");
 
 /// The SolverChoice an integrator's options hold.
 inline SolverChoice solver_choice(const OptionValues& options) {
   const std::string_view choice = options.choice("solver");
-  return choice == "eigen"     ? SolverChoice::kEigen
-         : choice == "cholmod" ? SolverChoice::kCholmod
-                               : SolverChoice::kAuto;
+  if (choice == "eigen") return SolverChoice::kEigen;
+  if (choice == "sparse-direct" || choice == "cholmod") return SolverChoice::kSparseDirect;
+  return SolverChoice::kAuto;
 }
 
 }  // namespace fosssim

@@ -69,7 +69,7 @@ void StepSolver::take_pattern(const SparseMatrix& A) {
   refactor_due_ = true;
   suitesparse_ = false;
   if (choice_ != SolverChoice::kEigen && A.rows() > 0 &&
-      (choice_ == SolverChoice::kCholmod || A.rows() >= kCholmodFromSize)) {
+      (choice_ == SolverChoice::kSparseDirect || A.rows() >= kSparseDirectFromSize)) {
     // A pattern that is not structurally symmetric has no symmetric part of its own pattern;
     // step matrices always are (pair blocks come in pairs).
     suitesparse_ = symmetric_ ? UpperSymmetricPart::is_structurally_symmetric(A)

@@ -19,11 +19,11 @@ namespace fosssim {
 
 /// Which library solves the step systems (the option "solver" of the implicit integrators).
 enum class SolverChoice {
-  kAuto,     ///< the course's dense LU for 2D systems of at most kCourseLuMaxUnknowns unknowns
-             ///< (integrators ask uses_course_lu), Eigen below StepSolver::kCholmodFromSize
-             ///< unknowns, SuiteSparse from there on
-  kEigen,    ///< Eigen's sparse LDLᵀ and LU, factored at every solve
-  kCholmod,  ///< sparse direct libraries (MUMPS, CHOLMOD, UMFPACK), reused through GMRES
+  kAuto,   ///< the course's dense LU for 2D systems of at most kCourseLuMaxUnknowns unknowns
+           ///< (integrators ask uses_course_lu), Eigen below StepSolver::kSparseDirectFromSize
+           ///< unknowns, the sparse direct libraries from there on
+  kEigen,  ///< Eigen's sparse LDLᵀ and LU, factored at every solve
+  kSparseDirect,  ///< sparse direct libraries (MUMPS, CHOLMOD, UMFPACK), reused through GMRES
 };
 
 /// Whether an implicit integrator solves its step systems the course's way, with a dense
@@ -87,7 +87,7 @@ class StepSolver {
   /// Systems of at least this many unknowns go to SuiteSparse under SolverChoice::kAuto
   /// (measured with bench_implicit: below it Eigen's simplicial factorizations are as fast,
   /// and the course's scenes keep their exact trajectories).
-  static constexpr int kCholmodFromSize = 1000;
+  static constexpr int kSparseDirectFromSize = 1000;
 
   /// symmetric: whether A is known to be symmetric (SceneModel::has_symmetric_jacobians).
   explicit StepSolver(bool symmetric, SolverChoice choice = SolverChoice::kAuto)

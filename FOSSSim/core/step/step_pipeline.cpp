@@ -10,7 +10,10 @@
 namespace fosssim {
 
 StepPipeline::StepPipeline(const SceneModel& model, StepAdditions additions)
-    : model_(&model), integrator_(make_integrator(model, std::move(additions.interaction_forces))) {
+    : model_(&model),
+      integrator_(make_integrator(model, std::move(additions.interaction_forces))),
+      cancellation_(additions.cancellation) {
+  integrator_->set_cancellation(cancellation_);
   if (auto collisions = make_collision_stage(model)) {
     add_stage(StagePhase::kResponse, std::move(collisions));
   }
@@ -34,7 +37,8 @@ void StepPipeline::step(State& state, StepRecord* record) {
     } else {
       const State start = state;
       integrator_->step(state);
-      const StepContext context{*model_, start, model_->integrator.dt, out};
+      cancellation_.check();
+      const StepContext context{*model_, start, model_->integrator.dt, out, cancellation_};
       for (auto& [phase, stage] : stages_) stage->apply(context, state);
     }
   } catch (const SolverFailure& failure) {

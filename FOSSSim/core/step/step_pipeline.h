@@ -21,6 +21,9 @@ struct StepAdditions {
   /// Stages the caller adds, with their phase (the scene tag's scripted behaviour,
   /// scripting/step_hooks.h, is a kScript stage).
   std::vector<std::pair<StagePhase, std::unique_ptr<StepStage>>> stages;
+  /// Lets the caller end a step in progress (core/step/cancellation.h): the integrator's
+  /// iterations and the stages' passes ask it, and step() then throws StepCancelled.
+  Cancellation cancellation;
 };
 
 /// Everything one step of a scene does, in order:
@@ -58,6 +61,7 @@ class StepPipeline {
   std::unique_ptr<Integrator> integrator_;
   std::vector<std::pair<StagePhase, std::unique_ptr<StepStage>>> stages_;  // sorted by phase
   bool check_health_ = true;
+  Cancellation cancellation_;
   StepRecord own_record_;
 };
 

@@ -3,6 +3,7 @@
 
 #include "core/scene_model.h"
 #include "core/state.h"
+#include "core/step/cancellation.h"
 #include "core/step/step_record.h"
 
 namespace fosssim {
@@ -24,6 +25,8 @@ struct StepContext {
   /// What the step reports besides its end state (collisions, polynomials, sync point);
   /// cleared before the integrator runs, appended to by the stages.
   StepRecord& record;
+  /// Asked once per iteration by stages that iterate (hybrid passes, impact zones).
+  Cancellation cancellation;
 };
 
 /// One stage of a step (core/step/step_pipeline.h). A stage must be a function of what it is

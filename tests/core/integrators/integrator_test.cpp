@@ -25,6 +25,7 @@
 #include "core/integrators/linearized_implicit_euler.h"
 #include "core/integrators/linearly_implicit_euler.h"
 #include "core/integrators/local_global.h"
+#include "core/integrators/solver_option.h"
 #include "core/integrators/symplectic_euler.h"
 #include "support/closed_forms.h"
 #include "support/random.h"
@@ -141,4 +142,19 @@ TYPED_TEST(IntegratorTest, FixedParticlesGetNoForceAndMoveInAStraightLine) {
 }
 
 }  // namespace
+// Issue 23: "cholmod" meant MUMPS, CHOLMOD or UMFPACK; the option is named after what it does,
+// and the old name stays an alias so that old scenes keep working.
+TEST(SolverOption, SparseDirectAndItsOldNameCholmodChooseTheSparseDirectLibraries) {
+  OptionValues values(std::span<const OptionSpec>(&kSolverOption, 1));
+  EXPECT_EQ(solver_choice(values), SolverChoice::kAuto);
+  values.set("solver", "sparse-direct");
+  EXPECT_EQ(solver_choice(values), SolverChoice::kSparseDirect);
+  values.set("solver", "cholmod");
+  EXPECT_EQ(solver_choice(values), SolverChoice::kSparseDirect);
+  values.set("solver", "eigen");
+  EXPECT_EQ(solver_choice(values), SolverChoice::kEigen);
+  EXPECT_EQ(kSolverOption.describe_values(),
+            "\"auto\", \"eigen\", \"sparse-direct\" or \"cholmod\"");
+}
+
 }  // namespace fosssim::testing

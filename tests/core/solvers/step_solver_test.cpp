@@ -13,7 +13,7 @@
 // - singular matrices give nullopt;
 // - the symbolic analysis is reused for a second matrix of the same pattern, and a new pattern
 //   (same size and number of nonzeros, other positions; or another size) is analysed afresh;
-// - the sparse direct path (SolverChoice::kCholmod, taken from 1000 unknowns under kAuto):
+// - the sparse direct path (SolverChoice::kSparseDirect, taken from 1000 unknowns under kAuto):
 //   symmetric matrices, definite or indefinite, are factored L D Lᵀ by MUMPS and non-symmetric
 //   ones through CHOLMOD or UMFPACK, every answer to round-off; along a sequence of nearby
 //   matrices a factor is kept (fewer factorizations than solves, GMRES making up the
@@ -203,7 +203,7 @@ TEST(StepSolver, SparseDirectPathFactorsSymmetricMatricesByLdltDefiniteOrNot) {
       ASSERT_LT(eigenvalues.minCoeff(), 0.0) << "precondition: indefinite";
     }
     const Vector b = Random(162).uniform_vector(120, -1.0, 1.0);
-    StepSolver solver(true, SolverChoice::kCholmod);
+    StepSolver solver(true, SolverChoice::kSparseDirect);
     expect_solves(A, solver.solve(A, b), b);
     EXPECT_EQ(solver.last_factorization(), Factorization::kMumps);
     EXPECT_EQ(solver.statistics().ldlt_factorizations, 1);
@@ -213,7 +213,7 @@ TEST(StepSolver, SparseDirectPathFactorsSymmetricMatricesByLdltDefiniteOrNot) {
 TEST(StepSolver, SparseDirectPathFactorsInSinglePrecisionAndRefinesToRoundOff) {
   const SparseMatrix A = chain_step_matrix<3>(40, 0.5, 0.0, 0.1, 171);
   const Vector b = Random(172).uniform_vector(120, -1.0, 1.0);
-  StepSolver solver(true, SolverChoice::kCholmod);
+  StepSolver solver(true, SolverChoice::kSparseDirect);
   expect_solves(A, solver.solve(A, b), b);
   EXPECT_EQ(solver.statistics().ldlt_factorizations, 1);
   EXPECT_EQ(solver.statistics().single_precision_factorizations, 1);
@@ -224,7 +224,7 @@ TEST(StepSolver, SparseDirectPathFactorsInSinglePrecisionAndRefinesToRoundOff) {
 TEST(StepSolver, SparseDirectPathTurnsToDoubleWhenFloatCannotReachRoundOff) {
   const SparseMatrix A = chain_step_matrix<3>(40, 1.0, 0.0, 1e4, 173);
   const Vector b = Random(174).uniform_vector(120, -1.0, 1.0);
-  StepSolver solver(true, SolverChoice::kCholmod);
+  StepSolver solver(true, SolverChoice::kSparseDirect);
   for (int k = 0; k < 2; ++k) {
     const SparseMatrix Ak = A * (1.0 + 1e-3 * k);
     const std::optional<Vector> x = solver.solve(Ak, b);
@@ -240,7 +240,7 @@ TEST(StepSolver, SparseDirectPathSolvesNonSymmetricMatrices) {
   const SparseMatrix A = chain_step_matrix<2>(40, 0.5, 3.0, 0.1, 163);
   ASSERT_GT(asymmetry(Eigen::MatrixXd(A)), 1e-3) << "precondition: A is not symmetric";
   const Vector b = Random(164).uniform_vector(80, -1.0, 1.0);
-  StepSolver solver(false, SolverChoice::kCholmod);
+  StepSolver solver(false, SolverChoice::kSparseDirect);
   expect_solves(A, solver.solve(A, b), b);
   EXPECT_TRUE(solver.last_factorization() == Factorization::kCholesky ||
               solver.last_factorization() == Factorization::kUmfpack);
@@ -252,7 +252,7 @@ TEST(StepSolver, SparseDirectPathKeepsAFactorForNearbyMatrices) {
     SCOPED_TRACE(symmetric);
     const SparseMatrix base =
         chain_step_matrix<3>(60, 3.0, symmetric ? 0.0 : 3.0, 0.5, 165, /*gravity=*/true);
-    StepSolver solver(symmetric, SolverChoice::kCholmod);
+    StepSolver solver(symmetric, SolverChoice::kSparseDirect);
     Random random(166);
     for (int k = 0; k < 12; ++k) {
       SparseMatrix A = base;
@@ -274,7 +274,7 @@ TEST(StepSolver, SparseDirectPathReportsSingularMatrices) {
   Eigen::MatrixXd zero_row = Eigen::MatrixXd::Identity(4, 4) * 2.0;
   zero_row(0, 1) = zero_row(1, 0) = 1.0;
   for (bool symmetric : {true, false}) {
-    StepSolver solver(symmetric, SolverChoice::kCholmod);
+    StepSolver solver(symmetric, SolverChoice::kSparseDirect);
     SparseMatrix with_zero = sparse(zero_row);
     with_zero.coeffRef(3, 3) = 0.0;  // an explicit zero on the diagonal, as in a real pattern
     EXPECT_FALSE(solver.solve(with_zero, Vector::Ones(4)).has_value()) << symmetric;

@@ -140,5 +140,32 @@ TEST(StepPipeline, AnInteractionForceActsAsTheSameForceInTheModelWould) {
   }
 }
 
+// Issue 24: a caller's cancellation reaches the iterations inside a step. The question counts
+// how often it is asked and says yes at the 10th time: every integrator that iterates asks once
+// per iteration, so the step ends within its iterations (a step of 1000 iterations that ran to
+// the end would have asked 1000 times), throwing StepCancelled.
+int g_questions = 0;
+bool yes_at_the_tenth_question() { return ++g_questions >= 10; }
+
+TEST(StepPipeline, ACancellationEndsAStepWithinItsIterations) {
+  for (const char* method : {"local-global", "quasi-newton"}) {
+    TestScene scene = cloth(6, 1000.0, method, 0.01);
+    scene.model.integrator.options.set("iterations", 1000.0);
+    scene.model.integrator.options.set("tolerance", 0.0);  // never converged: all 1000 run
+    StepAdditions additions;
+    additions.cancellation = Cancellation(&yes_at_the_tenth_question);
+    StepPipeline pipeline(scene.model, std::move(additions));
+    State state = scene.initial;
+    g_questions = 0;
+    EXPECT_THROW(pipeline.step(state), StepCancelled) << method;
+    EXPECT_EQ(g_questions, 10) << method;
+  }
+  // Without one, nothing cancels.
+  TestScene scene = cloth(6, 1000.0, "local-global", 0.01);
+  StepPipeline pipeline(scene.model);
+  State state = scene.initial;
+  EXPECT_NO_THROW(pipeline.step(state));
+}
+
 }  // namespace
 }  // namespace fosssim::testing
