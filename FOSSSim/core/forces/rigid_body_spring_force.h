@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <memory>
 
 #include "core/force.h"
@@ -27,6 +28,11 @@ class RigidBodySpringForce final : public Force {
   void add_hessian_v(const ForceInput&, HessianBuilder&) const override {}
   bool is_conservative() const override { return true; }
   std::string label() const override;
+
+  /// The two ends in world coordinates at q (end i, then end j), for pictures.
+  std::array<Vec<2>, 2> world_ends(const Vector& q) const {
+    return {end(q, body_i_, p_i_).world, end(q, body_j_, p_j_).world};
+  }
 
  private:
   struct End {
