@@ -19,7 +19,10 @@ RigidBodySpringForce::RigidBodySpringForce(int body_i, const Vec<2>& p_i, int bo
     : body_i_(body_i), body_j_(body_j), p_i_(p_i), p_j_(p_j), k_(k), l0_(l0) {}
 
 std::string RigidBodySpringForce::label() const {
-  return "rigidbodyspringforce(" + std::to_string(body_i_) + "-" + std::to_string(body_j_) + ")";
+  const auto name = [](int body) {
+    return body == kWorld ? std::string("world") : "body " + std::to_string(body);
+  };
+  return "rigidbodyspringforce(" + name(body_i_) + " to " + name(body_j_) + ")";
 }
 
 RigidBodySpringForce::End RigidBodySpringForce::end(const Vector& q, int body,
