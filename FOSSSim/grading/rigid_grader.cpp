@@ -80,8 +80,8 @@ class RigidGrader {
     const double limit = report_.criteria.quantity_limit;
     const int n = bodies_;
     for (int b = 0; b < n; ++b) {
-      const double dp = std::hypot(provided[2 * b] - expected[2 * b],
-                                   provided[2 * b + 1] - expected[2 * b + 1]);
+      const double dp =
+          std::hypot(provided[2 * b] - expected[2 * b], provided[2 * b + 1] - expected[2 * b + 1]);
       if (!(dp < limit)) mismatch(kQuantityP, frame, b, provided[2 * b], expected[2 * b]);
       for (int q = 0; q < 4; ++q) {
         const int at = (2 + q) * n + b;
@@ -174,7 +174,9 @@ void print_rigid_grade_report(std::ostream& out, const RigidGradeReport& report)
 
 void write_rigid_residual_file(const std::string& path, const RigidGradeReport& report) {
   write_output_file(path, [&report](std::ostream& out) {
-    auto line = [&out](bool passed, double value) { out << (passed ? 1 : 0) << "   " << value << "\n"; };
+    auto line = [&out](bool passed, double value) {
+      out << (passed ? 1 : 0) << "   " << value << "\n";
+    };
     line(report.accumulated_passed(kResidualX) && report.accumulated_passed(kResidualTheta),
          report.accumulated[kResidualX] + report.accumulated[kResidualTheta]);
     line(report.accumulated_passed(kResidualV) && report.accumulated_passed(kResidualOmega),

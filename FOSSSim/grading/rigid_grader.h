@@ -26,15 +26,24 @@ struct RigidGradingCriteria {
 enum RigidResidual { kResidualX, kResidualTheta, kResidualV, kResidualOmega };
 
 /// The derived quantities the grader checks, in the course's report order.
-enum RigidQuantity { kQuantityM, kQuantityX0, kQuantityI, kQuantityP, kQuantityLcm,
-                     kQuantityLspin, kQuantityTcm, kQuantityTspin, kQuantityU };
+enum RigidQuantity {
+  kQuantityM,
+  kQuantityX0,
+  kQuantityI,
+  kQuantityP,
+  kQuantityLcm,
+  kQuantityLspin,
+  kQuantityTcm,
+  kQuantityTspin,
+  kQuantityU
+};
 inline constexpr int kRigidQuantityCount = 9;
 
 /// A difference found in a checked quantity (the first few are kept for the report).
 struct QuantityMismatch {
   RigidQuantity quantity;
   std::int64_t frame = 0;
-  int body = -1;  ///< −1 for U
+  int body = -1;                          ///< −1 for U
   double provided = 0.0, expected = 0.0;  ///< the first component for P and X(0)
 };
 

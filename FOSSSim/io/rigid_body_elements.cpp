@@ -17,13 +17,18 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-constexpr std::array<std::string_view, 8> kRigidBodyElements = {
-    "simtype",      "rigidbodyintegrator", "rigidbodyvertex",      "rigidbody",
-    "rigidbodycolor", "rigidbodyspringcolor", "rigidbodycollisionhandling", "rigidbodyforce"};
+constexpr std::array<std::string_view, 8> kRigidBodyElements = {"simtype",
+                                                                "rigidbodyintegrator",
+                                                                "rigidbodyvertex",
+                                                                "rigidbody",
+                                                                "rigidbodycolor",
+                                                                "rigidbodyspringcolor",
+                                                                "rigidbodycollisionhandling",
+                                                                "rigidbodyforce"};
 
 /// Elements of particle scenes that the course ignores in a rigid-body scene.
 constexpr std::array<std::string_view, 9> kParticleElements = {
-    "integrator", "particle",  "edge",      "particlecolor", "edgecolor",
+    "integrator",   "particle", "edge",      "particlecolor", "edgecolor",
     "particlepath", "scenetag", "halfplane", "collision"};
 
 /// The methods of Theme 3, by their exact names (the course accepts no alias).
@@ -76,8 +81,8 @@ class RigidBodySceneReader {
                        "the required element <" + std::string(name) + "> is missing");
     }
     for (std::size_t k = 1; k < found.size(); ++k) {
-      scene_.warnings.push_back(warning_at(*found[k], "a second <" + std::string(name) +
-                                                          "> is ignored (the first one counts)"));
+      scene_.warnings.push_back(warning_at(
+          *found[k], "a second <" + std::string(name) + "> is ignored (the first one counts)"));
     }
     return found[0];
   }
@@ -151,8 +156,8 @@ class RigidBodySceneReader {
     if (static_cast<std::int64_t>(elements.size()) > limits_.max_particles) {
       throw SceneError(file_, elements.front()->GetLineNum(),
                        std::string("<") + elements.front()->Name() + ">",
-                       "the scene declares " + std::to_string(elements.size()) + " " + what +
-                           ", " + over_limit(limits_.max_particles, what, "--max-particles"));
+                       "the scene declares " + std::to_string(elements.size()) + " " + what + ", " +
+                           over_limit(limits_.max_particles, what, "--max-particles"));
     }
   }
 
@@ -181,10 +186,11 @@ class RigidBodySceneReader {
       if (!r.has(name.c_str())) break;
       const int index = r.integer(name.c_str());
       if (index < 0 || index >= vertices) {
-        r.fail("p", "number " + std::to_string(k) + " refers to vertex " + std::to_string(index) +
-                        ", but the scene has " + std::to_string(vertices) +
-                        " <rigidbodyvertex> elements" +
-                        (vertices > 0 ? " (valid: 0 to " + std::to_string(vertices - 1) + ")" : ""));
+        r.fail("p",
+               "number " + std::to_string(k) + " refers to vertex " + std::to_string(index) +
+                   ", but the scene has " + std::to_string(vertices) +
+                   " <rigidbodyvertex> elements" +
+                   (vertices > 0 ? " (valid: 0 to " + std::to_string(vertices - 1) + ")" : ""));
       }
       hull.push_back(index);
     }
@@ -223,16 +229,16 @@ class RigidBodySceneReader {
       body.inertia = properties.inertia;
       body.initial_center = properties.center;
       for (const Vec2& p : points) {
-        body.body_points.emplace_back(p.x() - properties.center.x(),
-                                      p.y() - properties.center.y());
+        body.body_points.emplace_back(p.x() - properties.center.x(), p.y() - properties.center.y());
       }
       if (!(body.mass > 0.0) || !(body.inertia > 0.0)) {
         r.warn("mass " + to_text(body.mass) + " and moment of inertia " + to_text(body.inertia) +
                ": the body cannot be stepped (division by zero or a negative mass)");
       }
       if (signed_area(points) > 0.0) {
-        r.warn("the hull runs counter-clockwise; the course asks for clockwise hulls (no result "
-               "depends on it)");
+        r.warn(
+            "the hull runs counter-clockwise; the course asks for clockwise hulls (no result "
+            "depends on it)");
       }
       const Vec2 velocity(r.number("vx"), r.number("vy"));
       const double omega = r.number("omega");
@@ -242,8 +248,9 @@ class RigidBodySceneReader {
         body.reported_velocity = velocity;
         body.reported_omega = omega;
         if (velocity != Vec2::Zero() || omega != 0.0) {
-          r.warn("a fixed body with a velocity: it never moves, but its trajectory reports that "
-                 "velocity, as the course does");
+          r.warn(
+              "a fixed body with a velocity: it never moves, but its trajectory reports that "
+              "velocity, as the course does");
         }
       }
       model.mass.segment<3>(3 * b) << body.mass, body.mass, body.inertia;
@@ -280,7 +287,8 @@ class RigidBodySceneReader {
       for (int k = 0; k < static_cast<int>(declarations.size()); ++k) {
         ElementReader r = reader(*declarations[k], k);
         scene_.model.forces.push_back(kind.create(r, context));
-        if (kind.tag == "rigidbodyspringforce") springs_.push_back(scene_.model.forces.back().get());
+        if (kind.tag == "rigidbodyspringforce")
+          springs_.push_back(scene_.model.forces.back().get());
         keep_warnings(r);
       }
     }

@@ -19,8 +19,8 @@ Vector rigid_state_block(const SceneModel& model, const State& state) {
   Vector block(6 * bodies.size());
   for (int b = 0; b < bodies.size(); ++b) {
     const Vec2 V = reported_velocity(bodies, state.v, b);
-    block.segment<6>(6 * b) << state.q[3 * b], state.q[3 * b + 1], state.q[3 * b + 2], V.x(),
-        V.y(), reported_omega(bodies, state.v, b);
+    block.segment<6>(6 * b) << state.q[3 * b], state.q[3 * b + 1], state.q[3 * b + 2], V.x(), V.y(),
+        reported_omega(bodies, state.v, b);
   }
   return block;
 }

@@ -20,7 +20,8 @@
 namespace fosssim::testing {
 namespace {
 
-const std::string kScene = std::string(FOSSSIM_SOURCE_DIR) + "/assets/t3m1/mixed_explicit_all_forces.xml";
+const std::string kScene =
+    std::string(FOSSSIM_SOURCE_DIR) + "/assets/t3m1/mixed_explicit_all_forces.xml";
 
 /// Writes the scene's own trajectory to `path`.
 void write_run(const Scene& scene, const std::string& path) {

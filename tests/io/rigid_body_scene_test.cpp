@@ -83,7 +83,8 @@ TEST(RigidBodyScene, WorkedExampleAExplicitEulerBitForBit) {
   simulation.step();
   const State& s = simulation.state();
   EXPECT_EQ(s.q, (Vector(3) << 0.3, 0.25, 0.1).finished());
-  EXPECT_EQ(s.v, (Vector(3) << 0.691089267205342, -0.6370393190303845, 1.0873550935795848).finished());
+  EXPECT_EQ(s.v,
+            (Vector(3) << 0.691089267205342, -0.6370393190303845, 1.0873550935795848).finished());
   const Vector q1 = rigid_quantities_block(forces, s.q, s.v);
   EXPECT_EQ(q1, (Vector(7) << 2.764357068821368, -2.548157276121538, -1.4555364500418033,
                  3.805742827528547, 1.7668469384742251, 2.0690969241835684, 21.57199771738921)
@@ -105,9 +106,10 @@ TEST(RigidBodyScene, WorkedExampleBSymplecticEulerSpringAndWindBitForBit) {
   simulation.step();
   const State& s = simulation.state();
   const Vector expected_q = (Vector(6) << 0.05437500000000001, 0.010000000000000002, 0.0475,
-                             3.715625, 0.095, 0.006666666666666667).finished();
-  const Vector expected_v = (Vector(6) << 0.5437500000000001, 0.1, 0.475, -0.34375, 0.95,
-                             0.06666666666666667).finished();
+                             3.715625, 0.095, 0.006666666666666667)
+                                .finished();
+  const Vector expected_v =
+      (Vector(6) << 0.5437500000000001, 0.1, 0.475, -0.34375, 0.95, 0.06666666666666667).finished();
   // The spec asks for 1e-12 here; FOSSSim follows the course's order of operations and
   // matches its digits bit for bit (as printed, shortest round trip).
   EXPECT_EQ(s.q, expected_q);
@@ -116,11 +118,13 @@ TEST(RigidBodyScene, WorkedExampleBSymplecticEulerSpringAndWindBitForBit) {
 }
 
 TEST(RigidBodyScene, RepeatedHullAttributesAreNumberedKeepingLines) {
-  const std::string text = "<scene>\n<rigidbody p=\"0\" p = '1'\n p=\"2\" vx=\"1\"/>\n"
-                           "<rigidbodyvertex x=\"1\" y=\"2\" m=\"1\"/></scene>";
+  const std::string text =
+      "<scene>\n<rigidbody p=\"0\" p = '1'\n p=\"2\" vx=\"1\"/>\n"
+      "<rigidbodyvertex x=\"1\" y=\"2\" m=\"1\"/></scene>";
   const std::string out = number_repeated_hull_attributes(text);
-  EXPECT_EQ(out, "<scene>\n<rigidbody p=\"0\" p.2 = '1'\n p.3=\"2\" vx=\"1\"/>\n"
-                 "<rigidbodyvertex x=\"1\" y=\"2\" m=\"1\"/></scene>");
+  EXPECT_EQ(out,
+            "<scene>\n<rigidbody p=\"0\" p.2 = '1'\n p.3=\"2\" vx=\"1\"/>\n"
+            "<rigidbodyvertex x=\"1\" y=\"2\" m=\"1\"/></scene>");
   // Values holding "p=" are values, not attributes.
   EXPECT_EQ(number_repeated_hull_attributes("<rigidbody p=\"0\" q=\"p=1\" p=\"1\"/>"),
             "<rigidbody p=\"0\" q=\"p=1\" p.2=\"1\"/>");
@@ -135,7 +139,8 @@ std::string scene_with(const std::string& body, const std::string& extra = "") {
   <rigidbodyvertex x="-1" y="1" m="1"/>
   <rigidbodyvertex x="1" y="1" m="1"/>
   <rigidbodyvertex x="1" y="-1" m="1"/>
-  )" + body + "\n" + extra + "\n</scene>";
+  )" + body +
+         "\n" + extra + "\n</scene>";
 }
 
 TEST(RigidBodyScene, AcceptsTheCoursesNumberQuirksWithWarnings) {
@@ -190,17 +195,19 @@ TEST(RigidBodyScene, RefusesBadInputNamingFileLineAndElement) {
        "<rigidbody> 0", "refers to vertex 3"},
       {scene_with(R"(<rigidbody p="0" p="-1" vx="0" vy="0" omega="0" r="0.1"/>)"), 8,
        "<rigidbody> 0", "refers to vertex -1"},
-      {scene_with(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0"/>)"), 8,
-       "<rigidbody> 0", "\"r\" must be positive"},
+      {scene_with(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0"/>)"), 8, "<rigidbody> 0",
+       "\"r\" must be positive"},
       {scene_with(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1" fixed="2"/>)"), 8,
        "<rigidbody> 0", "\"fixed\" must be 0 or 1"},
       {scene_with(R"(<rigidbody p="0" p="1" vx="abc" vy="0" omega="0" r="0.1"/>)"), 8,
        "<rigidbody> 0", "\"vx\" must be a number"},
-      {scene_with(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1"/>)",
-                  R"(<rigidbodyspringforce i="0" pix="0" piy="0" j="1" pjx="0" pjy="0" k="1" l0="0"/>)"),
+      {scene_with(
+           R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1"/>)",
+           R"(<rigidbodyspringforce i="0" pix="0" piy="0" j="1" pjx="0" pjy="0" k="1" l0="0"/>)"),
        9, "<rigidbodyspringforce> 0", "refers to body 1"},
-      {scene_with(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1"/>)",
-                  R"(<rigidbodyspringforce i="-2" pix="0" piy="0" j="0" pjx="0" pjy="0" k="1" l0="0"/>)"),
+      {scene_with(
+           R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1"/>)",
+           R"(<rigidbodyspringforce i="-2" pix="0" piy="0" j="0" pjx="0" pjy="0" k="1" l0="0"/>)"),
        9, "<rigidbodyspringforce> 0", "refers to body -2"},
       {scene_with(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1"/>)",
                   R"(<rigidbodywindforce beta="-1" fx="0" fy="0" pointsperedge="2"/>)"),

@@ -75,7 +75,7 @@ void RigidBodySpringForce::add_hessian_x(const ForceInput& in, HessianBuilder& h
   const Vec<2> d = separation(in.q, ei, ej);
   const double l = std::sqrt(d.squaredNorm());
   Mat<2> hd = k_ * Mat<2>::Identity();  // the limit at l = l0 = 0
-  Vec<2> g = Vec<2>::Zero();             // ∇_d U
+  Vec<2> g = Vec<2>::Zero();            // ∇_d U
   if (l > 0.0) {
     const Vec<2> n = d / l;
     hd = k_ * n * n.transpose() + (k_ * (l - l0_) / l) * (Mat<2>::Identity() - n * n.transpose());
@@ -135,8 +135,10 @@ std::unique_ptr<Force> make_rigid_body_spring_force(ForceParameters& params,
   const Vec<2> p_j(params.number("pjx"), params.number("pjy"));
   const double k = params.number("k");
   const double l0 = params.number("l0");
-  if (k < 0.0) params.warn("negative stiffness k = " + to_text(k) + " (accepted, as the course does)");
-  if (l0 < 0.0) params.warn("negative rest length l0 = " + to_text(l0) + " (accepted, as the course does)");
+  if (k < 0.0)
+    params.warn("negative stiffness k = " + to_text(k) + " (accepted, as the course does)");
+  if (l0 < 0.0)
+    params.warn("negative rest length l0 = " + to_text(l0) + " (accepted, as the course does)");
   if (i == j) {
     params.warn(i == kWorld ? "both ends are world points: the spring does nothing"
                             : "both ends are on body " + std::to_string(i) +

@@ -18,8 +18,8 @@ struct RigidBodies;
 /// out (has_jacobian() is false), as rigid bodies are stepped by explicit methods only.
 class RigidBodyWindForce final : public Force {
  public:
-  RigidBodyWindForce(std::shared_ptr<const RigidBodies> bodies, double beta,
-                     const Vec<2>& wind, int points_per_edge);
+  RigidBodyWindForce(std::shared_ptr<const RigidBodies> bodies, double beta, const Vec<2>& wind,
+                     int points_per_edge);
 
   void add_energy(const ForceInput&, double&) const override {}
   void add_gradient(const ForceInput& in, Vector& gradient) const override;

@@ -60,8 +60,8 @@ double reported_omega(const RigidBodies& bodies, const Vector& v, int b) {
   return body.fixed ? body.reported_omega : v[3 * b + 2];
 }
 
-BodyQuantities compute_body_quantities(const RigidBodies& bodies, const Vector& q,
-                                       const Vector& v, int b) {
+BodyQuantities compute_body_quantities(const RigidBodies& bodies, const Vector& q, const Vector& v,
+                                       int b) {
   const RigidBody& body = bodies.bodies[b];
   const Vec2 V = reported_velocity(bodies, v, b);
   const double omega = reported_omega(bodies, v, b);

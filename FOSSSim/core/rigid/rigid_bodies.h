@@ -32,14 +32,15 @@ struct MassProperties {
 /// course program's order of operations, bit for bit: M sums the even-indexed and the
 /// odd-indexed masses separately, adds the two, then the last mass when the count is odd;
 /// X = (Σ m_i r_i)·(1/M) summed in order; I = Σ m_i ((y_i − X_y)² + (x_i − X_x)²) in order.
-MassProperties compute_mass_properties(std::span<const Vec2> points, std::span<const double> masses);
+MassProperties compute_mass_properties(std::span<const Vec2> points,
+                                       std::span<const double> masses);
 
 /// One rigid body: what does not change while a scene runs.
 struct RigidBody {
-  std::vector<int> hull;          ///< indices into the scene's vertex list, in file order
-  std::vector<Vec2> body_points;  ///< hull vertex minus the initial centre of mass, hull order
-  double mass = 0.0;              ///< M = Σ m_i
-  double inertia = 0.0;           ///< I about the centre of mass
+  std::vector<int> hull;               ///< indices into the scene's vertex list, in file order
+  std::vector<Vec2> body_points;       ///< hull vertex minus the initial centre of mass, hull order
+  double mass = 0.0;                   ///< M = Σ m_i
+  double inertia = 0.0;                ///< I about the centre of mass
   Vec2 initial_center = Vec2::Zero();  ///< X at load time, for the file's start block
   double radius = 0.1;                 ///< thickness for contact and pictures (> 0)
   bool fixed = false;
@@ -57,7 +58,8 @@ struct RigidBodies {
   int size() const { return static_cast<int>(bodies.size()); }
 };
 
-/// R(θ) p, with R rebuilt from cos θ and sin θ (the course's order: (c p_x − s p_y, s p_x + c p_y)).
+/// R(θ) p, with R rebuilt from cos θ and sin θ (the course's order: (c p_x − s p_y, s p_x + c
+/// p_y)).
 Vec2 rotate(double theta, const Vec2& p);
 /// The centre of mass X of body b in q.
 inline Vec2 body_center(const Vector& q, int b) { return {q[3 * b], q[3 * b + 1]}; }
@@ -80,7 +82,7 @@ struct BodyQuantities {
   double orbital_kinetic_energy = 0.0;
   double spin_kinetic_energy = 0.0;
 };
-BodyQuantities compute_body_quantities(const RigidBodies& bodies, const Vector& q,
-                                       const Vector& v, int b);
+BodyQuantities compute_body_quantities(const RigidBodies& bodies, const Vector& q, const Vector& v,
+                                       int b);
 
 }  // namespace fosssim

@@ -44,7 +44,8 @@ void randomize(Random& random, Vector& q, Vector& v) {
 }
 
 TEST(RigidBodyGravityForceTest, ForceIsMassTimesAccelerationNoTorque) {
-  auto [model, state] = make_rigid_model({{{{0, 0}, {2, 0}}, {1, 3}}, {{{0, 1}, {0, 2}, {1, 1}}, {1, 1, 2}}});
+  auto [model, state] =
+      make_rigid_model({{{{0, 0}, {2, 0}}, {1, 3}}, {{{0, 1}, {0, 2}, {1, 1}}, {1, 1, 2}}});
   const RigidBodyGravityForce gravity(Vec2(0.5, -9.81));
   const Vector gradient = gradient_of(gravity, state.q, state.v, model.mass);
   EXPECT_EQ(gradient[0], -4 * 0.5);
@@ -117,8 +118,8 @@ TEST(RigidBodySpringForceTest, DerivativesOnRandomConfigurations) {
       const RigidBodySpringForce spring(i, pi, j, pj, k, l0);
       check_force_everywhere(spring, 3, state.q, state.v, model.mass,
                              {"rigidbodyspring", "random",
-                              "seed " + std::to_string(seed) + " ends " + std::to_string(i) +
-                                  " " + std::to_string(j)});
+                              "seed " + std::to_string(seed) + " ends " + std::to_string(i) + " " +
+                                  std::to_string(j)});
     }
   }
 }

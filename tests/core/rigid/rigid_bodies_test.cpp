@@ -13,8 +13,8 @@
 #include "core/forces/rigid_body_gravity_force.h"
 #include "core/forces/rigid_body_spring_force.h"
 #include "core/integrators/integrator_registry.h"
-#include "core/step/simulation.h"
 #include "core/rigid_test_models.h"
+#include "core/step/simulation.h"
 
 namespace fosssim::testing {
 namespace {
@@ -60,8 +60,8 @@ TEST(MassPropertiesTest, MassSumsEvenAndOddEntriesSeparately) {
 }
 
 TEST(RigidBodyKinematicsTest, WorldVerticesAndPointVelocity) {
-  auto [model, state] = make_rigid_model({{{{-1, 1}, {1, 1}, {1, -1}, {-1, -1}},
-                                           std::vector<double>(4, 1.0), Vec2(0.5, 0), 2.0}});
+  auto [model, state] = make_rigid_model(
+      {{{{-1, 1}, {1, 1}, {1, -1}, {-1, -1}}, std::vector<double>(4, 1.0), Vec2(0.5, 0), 2.0}});
   state.q << 3.0, 4.0, M_PI / 2;
   const RigidBody& body = model.rigid_bodies->bodies[0];
   const Vec2 corner = world_vertex(body, state.q, 0, 1);  // (1, 1) rotated by 90°: (−1, 1)
@@ -75,9 +75,9 @@ TEST(RigidBodyKinematicsTest, WorldVerticesAndPointVelocity) {
 
 /// Two bodies joined by two springs, no external force.
 std::pair<SceneModel, State> spring_pair(const char* method) {
-  auto [model, state] = make_rigid_model(
-      {{{{-1, 1}, {1, 1}, {1, -1}, {-1, -1}}, {1, 2, 1, 3}, Vec2(0.3, -0.1), 0.7},
-       {{{3, 0}, {4, 1}, {5, -1}}, {2, 1, 1}, Vec2(-0.2, 0.4), -0.3}});
+  auto [model, state] =
+      make_rigid_model({{{{-1, 1}, {1, 1}, {1, -1}, {-1, -1}}, {1, 2, 1, 3}, Vec2(0.3, -0.1), 0.7},
+                        {{{3, 0}, {4, 1}, {5, -1}}, {2, 1, 1}, Vec2(-0.2, 0.4), -0.3}});
   model.forces.push_back(
       std::make_unique<RigidBodySpringForce>(0, Vec2(1, 0.5), 1, Vec2(0, 0.2), 40.0, 1.0));
   model.forces.push_back(
@@ -116,7 +116,8 @@ TEST(RigidBodyConservationTest, SpringsBetweenBodiesConserveMomentumAndAngularMo
       simulation.step();
       const Totals now = totals(model, simulation.state().q, simulation.state().v);
       worst_momentum = std::max(worst_momentum, (now.momentum - start.momentum).norm());
-      worst_angular = std::max(worst_angular, std::abs(now.angular_momentum - start.angular_momentum));
+      worst_angular =
+          std::max(worst_angular, std::abs(now.angular_momentum - start.angular_momentum));
       worst_energy = std::max(worst_energy, std::abs(now.energy - start.energy));
     }
     SCOPED_TRACE(method);
@@ -127,8 +128,8 @@ TEST(RigidBodyConservationTest, SpringsBetweenBodiesConserveMomentumAndAngularMo
     // particles, the spring's impulse has no moment about the updated positions); explicit
     // Euler drifts by O(h) (measured 0.0126), and its energy grows an order more than
     // symplectic Euler's (0.214 against 0.0178, an oscillation of O(h)).
-    std::printf("%s: momentum %.3g, angular momentum %.3g, energy %.3g\n", method,
-                worst_momentum, worst_angular, worst_energy);
+    std::printf("%s: momentum %.3g, angular momentum %.3g, energy %.3g\n", method, worst_momentum,
+                worst_angular, worst_energy);
     if (std::string(method) == "symplectic-euler") {
       EXPECT_LT(worst_angular, 1e-11);
       EXPECT_LT(worst_energy, 2.5e-2);
@@ -150,14 +151,15 @@ TEST(RigidBodyConservationTest, AngularMomentumErrorIsFirstOrderInH) {
     const double start = totals(model, state.q, state.v).angular_momentum;
     Simulation simulation(model, state);
     while (!simulation.finished()) simulation.step();
-    drift[k] = std::abs(totals(model, simulation.state().q, simulation.state().v).angular_momentum - start);
+    drift[k] = std::abs(totals(model, simulation.state().q, simulation.state().v).angular_momentum -
+                        start);
   }
   EXPECT_NEAR(drift[0] / drift[1], 2.0, 0.2);
 }
 
 TEST(RigidBodyFixedTest, FixedBodyNeverMovesButReportsItsVelocity) {
-  auto [model, state] = make_rigid_model(
-      {{{{0, 0}, {1, 0}, {0, 1}}, {1, 1, 1}, Vec2(5, -3), 2.0, /*fixed=*/true}});
+  auto [model, state] =
+      make_rigid_model({{{{0, 0}, {1, 0}, {0, 1}}, {1, 1, 1}, Vec2(5, -3), 2.0, /*fixed=*/true}});
   model.forces.push_back(std::make_unique<RigidBodyGravityForce>(Vec2(0, -9.81)));
   model.integrator.use(*find_integrator_method("explicit-euler"));
   model.integrator.dt = 0.01;
@@ -169,8 +171,10 @@ TEST(RigidBodyFixedTest, FixedBodyNeverMovesButReportsItsVelocity) {
   EXPECT_EQ(reported_velocity(*model.rigid_bodies, simulation.state().v, 0), Vec2(5, -3));
   EXPECT_EQ(reported_omega(*model.rigid_bodies, simulation.state().v, 0), 2.0);
   // P = M V with the reported velocity.
-  EXPECT_EQ(compute_body_quantities(*model.rigid_bodies, simulation.state().q,
-                                    simulation.state().v, 0).momentum, Vec2(15, -9));
+  EXPECT_EQ(
+      compute_body_quantities(*model.rigid_bodies, simulation.state().q, simulation.state().v, 0)
+          .momentum,
+      Vec2(15, -9));
 }
 
 }  // namespace
