@@ -13,6 +13,7 @@
 #include "core/analysis/energy.h"
 #include "core/error.h"
 #include "io/output_file.h"
+#include "io/rigid_trajectory.h"
 #include "io/trajectory_file.h"
 #include "io/trajectory_steps.h"
 #include "pictures/cairo_painter.h"
@@ -59,6 +60,32 @@ class TrajectoryOutput final : public FrameOutput {
  private:
   TrajectoryWriter writer_;
   TrajectoryLayout layout_;
+  std::int64_t frames_ = 0;
+};
+
+/// -o for a rigid-body scene: the course's Theme 3 layout (io/rigid_trajectory.h).
+class RigidTrajectoryOutput final : public FrameOutput {
+ public:
+  RigidTrajectoryOutput(TrajectoryWriter writer, const SceneModel& model)
+      : writer_(std::move(writer), model) {}
+  void write(Frame& frame) override {
+    writer_.write(frame.state());
+    ++frames_;
+  }
+  void commit() override { writer_.commit(); }
+  std::string describe() const override {
+    return "the trajectory " + writer_.path() + " (" + std::to_string(frames_) + " frames)";
+  }
+  std::string abandon() override {
+    const std::string kept = writer_.abandon();
+    if (kept.empty()) return writer_.path() + " was not written";
+    if (kept == writer_.path()) return "";
+    return "the " + std::to_string(frames_) + " frames computed so far are in " + kept + " (" +
+           writer_.path() + " was not written)";
+  }
+
+ private:
+  RigidTrajectoryWriter writer_;
   std::int64_t frames_ = 0;
 };
 
@@ -232,7 +259,10 @@ int movie_stride(const Options& options, double dt) {
 
 FrameOutputs FrameOutputs::open(const Scene& scene, const Options& options) {
   FrameOutputs outputs;
-  if (!options.output.empty()) {
+  if (!options.output.empty() && scene.model.rigid_bodies) {
+    outputs.outputs_.push_back(std::make_unique<RigidTrajectoryOutput>(
+        TrajectoryWriter::open(options.output), scene.model));
+  } else if (!options.output.empty()) {
     outputs.outputs_.push_back(std::make_unique<TrajectoryOutput>(
         TrajectoryWriter::open(options.output), trajectory_layout(scene.model)));
   }

@@ -5,12 +5,29 @@
 #include "app/progress_bar.h"
 #include "cli/exit_codes.h"
 #include "grading/grader.h"
+#include "grading/rigid_grader.h"
 #include "grading/step_grader.h"
 #include "io/trajectory_file.h"
 
 namespace fosssim {
 
+namespace {
+/// Theme 3: the course's rigid-body report and residual file.
+int run_rigid_grading(const Scene& scene, const Options& options) {
+  RigidGradeReport report;
+  try {
+    report = grade_rigid_trajectory(scene, options.input);
+  } catch (const Error& error) {
+    throw Error(error.kind(), options.input + ": " + error.what());
+  }
+  print_rigid_grade_report(std::cout, report);
+  write_rigid_residual_file(options.residual_file, report);
+  return report.passed() ? kExitOk : kExitGradingFailed;
+}
+}  // namespace
+
 int run_grading(const Scene& scene, const Options& options) {
+  if (scene.model.rigid_bodies) return run_rigid_grading(scene, options);
   TrajectoryReader file = open_trajectory(options.input, scene.model);
   ProgressBar progress("grading", scene.model.num_steps(),
                        choose_progress_style(options.progress, options.quiet),

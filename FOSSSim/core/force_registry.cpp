@@ -8,6 +8,9 @@
 #include "core/forces/elastic_body_cst_force.h"
 #include "core/forces/elastic_body_spring_force.h"
 #include "core/forces/gravitational_force.h"
+#include "core/forces/rigid_body_gravity_force.h"
+#include "core/forces/rigid_body_spring_force.h"
+#include "core/forces/rigid_body_wind_force.h"
 #include "core/forces/simple_gravity_force.h"
 #include "core/forces/spring_force.h"
 #include "core/forces/vortex_force.h"
@@ -25,6 +28,9 @@ constexpr std::array kForceKinds = {
     ForceKind{"elasticbodyspringforce", &make_elastic_body_spring_force, 4},
     ForceKind{"elasticbodybendingforce", &make_elastic_body_bending_force, 4},
     ForceKind{"elasticbodycstforce", &make_elastic_body_cst_force, 4},
+    ForceKind{"rigidbodygravityforce", &make_rigid_body_gravity_force, 3},
+    ForceKind{"rigidbodyspringforce", &make_rigid_body_spring_force, 3},
+    ForceKind{"rigidbodywindforce", &make_rigid_body_wind_force, 3},
 };
 }  // namespace
 

@@ -13,6 +13,8 @@
 
 namespace fosssim {
 
+struct RigidBodies;  // core/rigid/rigid_bodies.h
+
 /// How a scene steps: the method (an entry of core/integrators/integrator_registry.h), the time
 /// step, and the method's own settings.
 struct IntegratorSettings {
@@ -40,9 +42,14 @@ struct SceneModel {
   static constexpr double kDefaultParticleRadius = 0.1;
   static constexpr double kDefaultEdgeRadius = 0.015;
 
-  int dim = 2;              ///< 2 or 3
+  /// Coordinates per particle: 2 or 3 for particles in 2D or 3D; 3 for planar rigid bodies,
+  /// whose "particles" are bodies with coordinates (X_x, X_y, θ) (rigid_bodies is then set).
+  int dim = 2;
   Vector mass;              ///< per degree of freedom: [m0, m0, m1, m1, ...], size dim*n
   std::vector<bool> fixed;  ///< per particle; fixed particles receive no force
+  /// Set for a scene of planar rigid bodies (docs/rigid-bodies.md): their polygons, radii and
+  /// reported velocities; mass then holds (M, M, I) per body. Null for particle scenes.
+  std::shared_ptr<const RigidBodies> rigid_bodies;
   /// Per particle: the radius that collisions see and pictures draw.
   std::vector<double> particle_radius;
   std::vector<Edge> edges;

@@ -3,6 +3,9 @@
 #include <tinyxml2.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include "core/text.h"
@@ -110,9 +113,29 @@ const char* ElementReader::raw(const char* name) {
   return value;
 }
 
+template <typename T>
+bool ElementReader::parse_prefix(const char* name, const char* text, T& value) {
+  std::string_view s = trimmed(text);
+  if (s.size() > 1 && s.front() == '+' && s[1] != '-') s.remove_prefix(1);
+  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
+  if (error != std::errc()) return false;
+  if constexpr (std::is_floating_point_v<T>) {
+    if (!std::isfinite(value)) return false;
+  }
+  if (end != s.data() + s.size()) {
+    warn(std::string("attribute \"") + name + "\" has text after its number, " + quote(text) +
+         ", which is ignored (read as " + std::string(s.data(), end) + ", as the course does)");
+  }
+  return true;
+}
+
 double ElementReader::number(const char* name) {
   const char* text = raw(name);
   double value = 0.0;
+  if (course_numbers_) {
+    if (!parse_prefix(name, text, value)) fail(name, "must be a number, found " + quote(text));
+    return value;
+  }
   if (!parse_finite(trimmed(text), value)) {
     fail(name, "must be a finite number, found " + quote(text));
   }
@@ -133,6 +156,10 @@ double ElementReader::positive(const char* name) {
 int ElementReader::integer(const char* name) {
   const char* text = raw(name);
   int value = 0;
+  if (course_numbers_) {
+    if (!parse_prefix(name, text, value)) fail(name, "must be an integer, found " + quote(text));
+    return value;
+  }
   if (!parse_int(trimmed(text), value)) fail(name, "must be an integer, found " + quote(text));
   return value;
 }
@@ -140,7 +167,8 @@ int ElementReader::integer(const char* name) {
 bool ElementReader::flag(const char* name) {
   const char* text = raw(name);
   int value = -1;
-  if (!parse_int(trimmed(text), value) || (value != 0 && value != 1)) {
+  const bool read = course_numbers_ ? parse_prefix(name, text, value) : parse_int(trimmed(text), value);
+  if (!read || (value != 0 && value != 1)) {
     fail(name, "must be 0 or 1, found " + quote(text));
   }
   return value == 1;
@@ -230,7 +258,11 @@ std::vector<std::string> ElementReader::finish() const {
   int count = 0;
   for (const auto* a = element_.FirstAttribute(); a != nullptr; a = a->Next()) {
     if (was_asked(a->Name())) continue;
-    if (const std::string* meant = likely_meant(a->Name())) {
+    const std::string* meant = likely_meant(a->Name());
+    if (meant != nullptr && !misspellings_are_errors_) {
+      warnings.push_back(warning(std::string("unknown attribute \"") + a->Name() +
+                                 "\" ignored (did you mean \"" + *meant + "\"?)"));
+    } else if (meant != nullptr) {
       if (count++ > 0) misspelt += ", ";
       misspelt += std::string("\"") + a->Name() + "\" (did you mean \"" + *meant + "\"?)";
     } else {

@@ -59,6 +59,14 @@ class ElementReader final : public ForceParameters {
   /// True when the element has this attribute.
   bool has(const char* name) const;
 
+  /// Reads numbers as the course's Theme 3 program does (stream extraction): leading blanks
+  /// skipped and anything after the longest number ignored, with a warning (x="-1abc" is −1,
+  /// an integer "6.7" is 6). Text with no number at its start is still an error.
+  void read_numbers_as_course() { course_numbers_ = true; }
+  /// Makes finish() warn about likely misspelt attributes instead of refusing the element, for
+  /// formats whose course files may hold them (Theme 3).
+  void warn_about_misspellings() { misspellings_are_errors_ = false; }
+
   /// A warning about this element, located like errors: "file:line: warning: <element> k: text".
   std::string warning(const std::string& text) const;
   /// Ends reading the element: throws SceneError when attributes that no accessor asked for are
@@ -91,6 +99,12 @@ class ElementReader final : public ForceParameters {
   std::vector<std::string> asked_;  // a handful: a list is faster than a set
   std::vector<std::string> notes_;  // warnings recorded by warn() and unsupported()
   const BrokenElements* broken_ = nullptr;
+  bool course_numbers_ = false;
+  bool misspellings_are_errors_ = true;
+  /// The number at the start of `text` (course_numbers_ mode), warning about what follows it;
+  /// false when there is none.
+  template <typename T>
+  bool parse_prefix(const char* name, const char* text, T& value);
 };
 
 }  // namespace fosssim

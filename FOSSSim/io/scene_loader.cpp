@@ -16,6 +16,7 @@
 #include "io/json_scene_reader.h"
 #include "io/mesh_elements.h"
 #include "io/scene_error.h"
+#include "io/rigid_body_elements.h"
 #include "io/text_lines.h"
 
 namespace fosssim {
@@ -37,7 +38,8 @@ bool is_known_element(std::string_view name) {
   for (const char* known : kOtherElements) {
     if (name == known) return true;
   }
-  return find_force_kind(name) != nullptr || is_mesh_element(name) || is_collision_element(name);
+  return find_force_kind(name) != nullptr || is_mesh_element(name) || is_collision_element(name) ||
+         is_rigid_body_element(name);
 }
 
 /// " (did you mean <springforce>?)" for an unknown element name within two edits of a known
@@ -47,6 +49,7 @@ std::string element_suggestion(std::string_view unknown) {
   for (const ForceKind& kind : force_kinds()) names.push_back(kind.tag);
   for (std::string_view name : mesh_element_names()) names.push_back(name);
   for (std::string_view name : collision_element_names()) names.push_back(name);
+  for (std::string_view name : rigid_body_element_names()) names.push_back(name);
   for (std::string_view name : names) {
     if (looks_like_misspelling(unknown, name)) {
       return " (did you mean <" + std::string(name) + ">?)";
@@ -126,6 +129,21 @@ class SceneParser {
     scene_.source = file_;
     read_root(root);
     group_children(root);
+    if (is_rigid_body_scene(elements_, file_)) {
+      if (scene_.model.dim != 2) {
+        throw SceneError(file_, root.GetLineNum(), "<scene>",
+                         "rigid bodies are planar: a rigid-body scene cannot be dim=\"3\"");
+      }
+      read_rigid_body_scene(elements_, scene_, file_, files_.limits());
+      return std::move(scene_);
+    }
+    for (const char* tag : {"rigidbodyvertex", "rigidbody", "rigidbodyintegrator"}) {
+      if (!all(tag).empty()) {
+        throw SceneError(file_, all(tag)[0]->GetLineNum(), std::string("<") + tag + ">",
+                         "belongs to rigid-body scenes, which start with <simtype "
+                         "type=\"rigid-body\"/>");
+      }
+    }
     read_settings(root);
     read_particles();
     read_edges();
@@ -405,7 +423,7 @@ class SceneParser {
   const std::string& file_;
   InputFiles& files_;
   Scene scene_;
-  std::map<std::string, std::vector<const XMLElement*>> elements_;
+  ElementGroups elements_;
   std::vector<std::unique_ptr<Force>> mesh_forces_;
   SceneErrorList errors_;
   BrokenElements broken_;
@@ -464,7 +482,8 @@ Scene load_scene_text(std::string_view text, const std::string& name, InputFiles
   }
   check_attribute_counts(text, name, files.limits().max_attributes);
   std::vector<std::string> warnings;
-  const std::string fixed = separate_run_together_attributes(text, name, warnings);
+  const std::string fixed =
+      number_repeated_hull_attributes(separate_run_together_attributes(text, name, warnings));
   tinyxml2::XMLDocument doc;
   if (doc.Parse(fixed.data(), fixed.size()) != tinyxml2::XML_SUCCESS) {
     throw xml_syntax_error(name, doc);

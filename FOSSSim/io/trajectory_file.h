@@ -70,6 +70,11 @@ class TrajectoryWriter {
   void write_record(TrajectoryLayout layout, const Vector& q, const Vector& v,
                     const std::vector<CollisionRecord>& collisions,
                     const std::vector<Polynomial>& polynomials);
+  /// Appends `values` as little-endian doubles (layouts written elsewhere: io/rigid_trajectory.h).
+  /// Throws like write_frame.
+  void write_values(const Vector& values) {
+    write_doubles(values.data(), static_cast<std::size_t>(values.size()));
+  }
   /// Flushes to disk and renames the file to its final name. Throws on an I/O error.
   void commit();
   /// Closes the file and renames it to "<path>.incomplete"; returns that name ("" when nothing

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/forces/rigid_body_spring_force.h"
+#include "core/rigid/rigid_bodies.h"
+
 namespace fosssim {
 
 namespace {
@@ -71,6 +74,44 @@ void add_half_planes(const Scene& scene, const PixelMapping& mapping, Drawing& d
   }
 }
 
+/// Rigid bodies (docs/rigid-bodies.md): each hull filled in its body's colour, its edges as
+/// capsules of the body's radius (the shape contact sees), and the springs as thin capsules in
+/// their colours.
+void add_rigid_bodies(const Scene& scene, const State& state, const PixelMapping& mapping,
+                      Drawing& drawing) {
+  const RigidBodies& bodies = *scene.model.rigid_bodies;
+  const Appearance& look = scene.appearance;
+  const double ppu = mapping.pixels_per_unit();
+  for (int b = 0; b < bodies.size(); ++b) {
+    const RigidBody& body = bodies.bodies[b];
+    Region region;
+    region.color = look.particle_color[b];
+    for (int k = 0; k < body.num_vertices(); ++k) {
+      const Vec2 p = world_vertex(body, state.q, b, k);
+      region.corners.push_back(mapping.to_pixel(p.x(), p.y()));
+    }
+    for (int k = 0; k < body.num_vertices(); ++k) {
+      drawing.edges.push_back({region.corners[k],
+                               region.corners[(k + 1) % region.corners.size()],
+                               body.radius * ppu, look.particle_color[b]});
+    }
+    drawing.regions.push_back(std::move(region));
+  }
+  int spring = 0;
+  for (const auto& force : scene.model.forces) {
+    const auto* rigid_spring = dynamic_cast<const RigidBodySpringForce*>(force.get());
+    if (rigid_spring == nullptr) continue;
+    const auto ends = rigid_spring->world_ends(state.q);
+    const Color color = spring < static_cast<int>(look.edge_color.size())
+                            ? look.edge_color[spring]
+                            : Appearance::kDefaultEdgeColor;
+    drawing.edges.push_back({mapping.to_pixel(ends[0].x(), ends[0].y()),
+                             mapping.to_pixel(ends[1].x(), ends[1].y()),
+                             SceneModel::kDefaultEdgeRadius * ppu, color});
+    ++spring;
+  }
+}
+
 }  // namespace
 
 Drawing compose_drawing(const Scene& scene, const State& state, const PathHistory& paths,
@@ -95,6 +136,11 @@ Drawing compose_drawing(const Scene& scene, const State& state, const PathHistor
     line.points.reserve(trail.points.size());
     for (const Point3& p : trail.points) line.points.push_back(mapping.to_pixel(p.x, p.y));
     drawing.paths.push_back(std::move(line));
+  }
+  if (scene.model.rigid_bodies) {
+    add_rigid_bodies(scene, state, mapping, drawing);
+    drawing.text = overlay_text(overlay, state.time, scene.model.integrator.dt);
+    return drawing;
   }
   const auto& edges = scene.model.edges;
   drawing.edges.reserve(edges.size());

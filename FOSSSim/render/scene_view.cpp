@@ -18,7 +18,7 @@ SceneView::SceneView(const Scene& scene, const State& initial, int width, int he
       height_(height),
       camera_(initial_camera(scene, framing_state(initial, frame), width, height)),
       paths_(scene) {
-  if (scene.model.dim == 3) {
+  if (scene.model.dim == 3 && !scene.model.rigid_bodies) {  // bodies are planar: (x, y, θ)
     orbit_ = initial_orbit_camera(scene, framing_state(initial, frame), width, height);
     parts_ = compute_scene_parts_3d(scene);
   }

@@ -37,6 +37,9 @@ ParticleGrab::ParticleGrab(const Scene& scene) : model_(scene.model), spring_(sc
 }
 
 bool ParticleGrab::press(const SceneView& view, const State& state, double px, double py) {
+  // A rigid body's coordinates are (x, y, θ): the drag spring, written for particles, would
+  // pull its angle like a third coordinate. Dragging bodies is not supported yet.
+  if (model_.rigid_bodies) return false;
   const int dim = model_.dim;
   const Ray ray = view.ray_through(px, py);
   const Eigen::Vector3d focus = view.is_3d() ? view.orbit_camera().target : Eigen::Vector3d::Zero();

@@ -18,6 +18,7 @@
 #include "core/limits.h"
 #include "core/scene_model.h"
 #include "core/text.h"
+#include "io/rigid_trajectory.h"
 #include "io/trajectory_file.h"
 #include "printable_text.h"
 #include "sandbox.h"
@@ -298,6 +299,7 @@ CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_
 }
 
 std::int64_t expected_trajectory_bytes(const SceneModel& model) {
+  if (model.rigid_bodies) return rigid_trajectory_bytes(model.num_particles(), model.num_steps());
   const std::int64_t frames = model.num_steps() + 1;
   const std::int64_t frame = trajectory_frame_bytes(model.num_dofs());
   switch (trajectory_layout(model)) {

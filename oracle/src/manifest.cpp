@@ -10,6 +10,7 @@
 #include "core/limits.h"
 #include "core/text.h"
 #include "diagnosis.h"
+#include "io/rigid_trajectory.h"
 #include "io/scene_loader.h"
 #include "io/text_lines.h"
 #include "io/trajectory_file.h"
@@ -50,6 +51,25 @@ ManifestEntry compute_entry(const SceneEntry& scene, const CandidateRunOptions& 
       entry.status = verdict_id(*run.problem);
       if (*run.problem == Verdict::kExitStatus)
         entry.status += ":" + std::to_string(run.exit_status);
+      return entry;
+    }
+    if (model.rigid_bodies) {  // Theme 3's layout (io/rigid_trajectory.h)
+      std::optional<RigidTrajectoryReader> file;
+      try {
+        file.emplace(RigidTrajectoryReader::open(run.trajectory_path, model.num_particles(),
+                                                 model.num_steps()));
+      } catch (const Error&) {
+      }
+      const std::string digest = file ? sha256_file_hex(run.trajectory_path) : "";
+      if (digest.empty()) {
+        entry.status = "unreadable";
+        return entry;
+      }
+      entry.frames = model.num_steps() + 1;
+      entry.bytes = static_cast<std::int64_t>(std::filesystem::file_size(run.trajectory_path));
+      entry.sha256 = digest;
+      const State last = rigid_state_from_block(model, file->read_frame(entry.frames - 1).state);
+      entry.final_state = final_state_text(last.q, last.v, model.dim);
       return entry;
     }
     // A trajectory that cannot be opened, or read through for its digest, is "unreadable": an

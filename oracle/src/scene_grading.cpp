@@ -78,6 +78,12 @@ std::optional<std::string> replay_checking_frames(StepGrader& grader, Trajectory
 std::optional<GradeReport> grade_file(const Scene& scene, const std::string& path,
                                       ResidualHistory& history, SceneResult& result) {
   const int dim = scene.model.dim;
+  if (scene.model.rigid_bodies) {  // FOSSSim -i grades these (grading/rigid_grader.h)
+    result.verdict = Verdict::kCannotRun;
+    result.reason = "the oracle does not grade rigid-body (Theme 3) scenes yet; grade them with "
+                    "FOSSSim -i";
+    return std::nullopt;
+  }
   std::optional<TrajectoryReader> file;
   try {
     file.emplace(open_trajectory(path, scene.model));

@@ -127,3 +127,40 @@ TEST(TextColorFor, ContrastsWithTheBackground) {
 
 }  // namespace
 }  // namespace fosssim
+
+namespace fosssim::testing {
+namespace {
+
+// Rigid bodies (docs/rigid-bodies.md): a hull is a filled region in its body's colour with one
+// capsule of the body's radius per edge; a spring is a thin capsule between its ends.
+TEST(ComposeDrawing, RigidBodiesAreFilledHullsAndSpringsAreLines) {
+  const Scene scene = load_scene_text(R"(<scene>
+  <simtype type="rigid-body"/>
+  <duration time="1"/>
+  <rigidbodyintegrator type="explicit-euler" dt="0.1"/>
+  <rigidbodyvertex x="-1" y="1" m="1"/>
+  <rigidbodyvertex x="1" y="1" m="1"/>
+  <rigidbodyvertex x="1" y="-1" m="1"/>
+  <rigidbodyvertex x="-1" y="-1" m="1"/>
+  <rigidbody p="0" p="1" p="2" p="3" vx="0" vy="0" omega="0" r="0.25"/>
+  <rigidbodyspringforce i="0" pix="1" piy="1" j="-1" pjx="3" pjy="1" k="1" l0="1"/>
+  <rigidbodycolor body="0" r="0" g="0" b="1"/>
+  <rigidbodyspringcolor spring="0" r="1" g="0" b="0"/>
+</scene>)", "rigid.xml");
+  const PathHistory paths(scene);
+  const Camera camera{0.0, 0.0, 4.0};  // 4 world units in 256 pixels: 64 pixels per unit
+  const Drawing d = compose_drawing(scene, scene.initial, paths, camera, 512, 512);
+  ASSERT_EQ(d.regions.size(), 1u);
+  EXPECT_EQ(d.regions[0].color, (Color{0, 0, 1}));
+  ASSERT_EQ(d.regions[0].corners.size(), 4u);
+  EXPECT_NEAR(d.regions[0].corners[1].x, 256 + 64, 1e-9);
+  EXPECT_NEAR(d.regions[0].corners[1].y, 256 - 64, 1e-9);
+  ASSERT_EQ(d.edges.size(), 5u);  // four hull edges, one spring
+  EXPECT_NEAR(d.edges[0].radius, 0.25 * 64, 1e-9);
+  EXPECT_EQ(d.edges[4].color, (Color{1, 0, 0}));
+  EXPECT_NEAR(d.edges[4].b.x, 256 + 3 * 64, 1e-9);
+  EXPECT_TRUE(d.particles.empty());
+}
+
+}  // namespace
+}  // namespace fosssim::testing

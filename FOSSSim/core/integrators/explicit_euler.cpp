@@ -1,6 +1,7 @@
 #include "core/integrators/explicit_euler.h"
 
 #include "core/force_evaluation.h"
+#include "core/velocity_step.h"
 
 namespace fosssim {
 
@@ -9,7 +10,7 @@ void ExplicitEuler::advance(State& state) {
   Vector force = compute_force(forces(), state.q, state.v);
   zero_fixed(model(), force);
   state.q += h * state.v;
-  state.v += h * force.cwiseQuotient(model().mass);
+  add_velocity_step(model(), h, force, state.v);
 }
 
 constinit const IntegratorMethod kExplicitEulerMethod{

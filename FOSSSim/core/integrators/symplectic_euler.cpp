@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "core/force_evaluation.h"
+#include "core/velocity_step.h"
 
 namespace fosssim {
 
@@ -11,7 +12,7 @@ void SymplecticEuler::advance(State& state) {
   const double h = model().integrator.dt;
   Vector force = compute_force(forces(), state.q, state.v);
   zero_fixed(model(), force);
-  state.v += h * force.cwiseQuotient(model().mass);
+  add_velocity_step(model(), h, force, state.v);
   state.q += h * state.v;
 }
 
