@@ -63,7 +63,7 @@ using Shape = std::variant<Triangle, Capsule, Disc, Ring>;
 /// One picture, painted in this order (docs/viewing.md): background, regions, paths, the shapes,
 /// edges, particles, marks, guides, then the text lines at the top-left corner. The shapes of
 /// 2D pictures are the elastic bodies' triangles (filled) and hinges (two capsules each), in
-/// force order; 3D pictures have only shapes, depth-sorted, instead of paths, edges and
+/// the forces' summation order; 3D pictures have only shapes, depth-sorted, instead of paths, edges and
 /// particles.
 struct Drawing {
   int width = 512, height = 512;  ///< pixels

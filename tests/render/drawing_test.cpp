@@ -135,21 +135,22 @@ TEST(ComposeDrawing, FillsElasticTrianglesAndDrawsHingesPlainByDefault) {
   const Scene scene = elastic_scene();
   const Drawing d =
       compose_drawing(scene, scene.initial, PathHistory(scene), Camera{0, 0, 1}, 512, 512);
-  // One triangle, then the hinge's two capsules and the disc at its middle particle.
+  // In the forces' summation order (bending before triangles): the hinge's two capsules and
+  // the disc at its middle particle, then the triangle.
   ASSERT_EQ(d.shapes.size(), 4u);
-  const auto* triangle = std::get_if<Triangle>(&d.shapes[0]);
+  const auto* triangle = std::get_if<Triangle>(&d.shapes[3]);
   ASSERT_NE(triangle, nullptr);
   EXPECT_EQ(triangle->color, kPlainTriangleColor);
   EXPECT_DOUBLE_EQ(triangle->corners[1].x, 256.0 + 1.2 * 256.0);
   EXPECT_DOUBLE_EQ(triangle->corners[2].y, 256.0 - 256.0);
   EXPECT_GT(triangle->outline_width, 0.0);
-  const auto* arm = std::get_if<Capsule>(&d.shapes[1]);
+  const auto* arm = std::get_if<Capsule>(&d.shapes[0]);
   ASSERT_NE(arm, nullptr);
   EXPECT_EQ(arm->color, kPlainHingeColor);
   EXPECT_DOUBLE_EQ(arm->a.x, 256.0);                // particle 0
   EXPECT_DOUBLE_EQ(arm->b.x, 256.0 - 256.0);        // the hinge, particle 3
-  ASSERT_NE(std::get_if<Capsule>(&d.shapes[2]), nullptr);
-  const auto* hinge = std::get_if<Disc>(&d.shapes[3]);
+  ASSERT_NE(std::get_if<Capsule>(&d.shapes[1]), nullptr);
+  const auto* hinge = std::get_if<Disc>(&d.shapes[2]);
   ASSERT_NE(hinge, nullptr);
   EXPECT_DOUBLE_EQ(hinge->center.x, 0.0);
   EXPECT_EQ(d.text.size(), 1u);  // the time only: plain colours need no legend
@@ -164,15 +165,15 @@ TEST(ComposeDrawing, ColoursElasticElementsByStrainOrEnergyWithALegend) {
   ASSERT_EQ(d.shapes.size(), 4u);
   // Stretched by 0.2, beyond the default scale 0.1: full red. The hinge is bent by π/2 (the
   // turn from (-1, 0) to (0, -1) is counter-clockwise): full red too.
-  EXPECT_EQ(std::get<Triangle>(d.shapes[0]).color, strain_color(1.0, 1.0));
-  EXPECT_EQ(std::get<Capsule>(d.shapes[1]).color, strain_color(1.0, 1.0));
+  EXPECT_EQ(std::get<Triangle>(d.shapes[3]).color, strain_color(1.0, 1.0));
+  EXPECT_EQ(std::get<Capsule>(d.shapes[0]).color, strain_color(1.0, 1.0));
   ASSERT_EQ(d.text.size(), 2u);
   EXPECT_EQ(d.text[1], "strain: red +0.1, blue -0.1");
   // With a scale of 0.4 the triangle is half way to red.
   overlay.elements.scale = 0.4;
   const Drawing half = compose_drawing(scene, scene.initial, PathHistory(scene),
                                        Camera{0, 0, 1}, 512, 512, overlay);
-  const Color shown = std::get<Triangle>(half.shapes[0]).color;
+  const Color shown = std::get<Triangle>(half.shapes[3]).color;
   const Color halfway = strain_color(0.5, 1.0);
   EXPECT_NEAR(shown.r, halfway.r, 1e-12);
   EXPECT_NEAR(shown.g, halfway.g, 1e-12);
@@ -184,8 +185,8 @@ TEST(ComposeDrawing, ColoursElasticElementsByStrainOrEnergyWithALegend) {
                                          Camera{0, 0, 1}, 512, 512, overlay);
   const double triangle_density = 10.0 / 1.82 * 0.44 * 0.44;
   const double hinge_density = (std::numbers::pi / 2) * (std::numbers::pi / 2) / 8.0;
-  EXPECT_EQ(std::get<Triangle>(energy.shapes[0]).color, energy_color(1.0, 1.0));
-  const Color hinge = std::get<Capsule>(energy.shapes[1]).color;
+  EXPECT_EQ(std::get<Triangle>(energy.shapes[3]).color, energy_color(1.0, 1.0));
+  const Color hinge = std::get<Capsule>(energy.shapes[0]).color;
   const Color expected = energy_color(hinge_density / triangle_density, 1.0);
   EXPECT_NEAR(hinge.r, expected.r, 1e-12);
   EXPECT_NEAR(hinge.g, expected.g, 1e-12);
