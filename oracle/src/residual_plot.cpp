@@ -12,7 +12,11 @@ namespace {
 std::string short_number(double value) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.4g", value);
-  return text;
+  std::string out = text;
+  // "1e-09" -> "1e-9", as the limits are written everywhere else.
+  const std::size_t e = out.find('e');
+  if (e != std::string::npos && e + 3 < out.size() && out[e + 2] == '0') out.erase(e + 2, 1);
+  return out;
 }
 
 /// The decades shown: from below the smallest positive residual (or the limit) to above the
