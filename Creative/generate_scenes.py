@@ -316,6 +316,141 @@ def cloth_on_sphere():
         '<camera3d yaw="30" pitch="25" tx="0" ty="-0.1" tz="0" distance="3"/>',
     ])
 
+def soft_bodies():
+    """Two soft 2D bodies made of constant strain triangles (Theme 4) fall onto a floor and a
+    ramp (half-planes, Theme 2): a disc of rings of triangles and a square block. The penalty
+    force (k 2000, thickness 0.01) keeps every particle out of the half-planes and off the
+    other body's boundary edges; symplectic Euler with a small step keeps it all stable. Render it coloured by strain
+    to see where the bodies are squeezed on impact."""
+    s = SceneWriter()
+    E, nu, density = 300.0, 0.3, 1.0
+    triangles = []
+
+    def add_triangle(a, b, c, pts):
+        (ax, ay), (bx, by), (cx, cy) = pts[a], pts[b], pts[c]
+        if (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) < 0:  # counter-clockwise
+            b, c = c, b
+        triangles.append((a, b, c))
+
+    # The disc: a centre and rings of 6 k particles on circles of radius k h.
+    rings, h, centre, vel = 4, 0.07, (-0.55, 0.75), (0.6, 0.0)
+    pts, index = [], []
+    pts.append(centre)
+    ring_start = [0]
+    for k in range(1, rings + 1):
+        ring_start.append(len(pts))
+        for j in range(6 * k):
+            a = 2 * math.pi * j / (6 * k)
+            pts.append((centre[0] + k * h * math.cos(a), centre[1] + k * h * math.sin(a)))
+    # Triangulate ring k-1 to ring k by walking both rings in angle.
+    for k in range(1, rings + 1):
+        inner = [0] if k == 1 else list(range(ring_start[k - 1], ring_start[k - 1] + 6 * (k - 1)))
+        outer = list(range(ring_start[k], ring_start[k] + 6 * k))
+        def angle(i):
+            x, y = pts[i][0] - centre[0], pts[i][1] - centre[1]
+            return math.atan2(y, x) % (2 * math.pi)
+        if k == 1:
+            for j in range(6):
+                add_triangle(0, outer[j], outer[(j + 1) % 6], pts)
+            continue
+        i = o = 0
+        n_in, n_out = len(inner), len(outer)
+        while i < n_in or o < n_out:
+            a_in = angle(inner[(i + 1) % n_in]) if i + 1 < n_in else 2 * math.pi
+            a_out = angle(outer[(o + 1) % n_out]) if o + 1 < n_out else 2 * math.pi
+            if o < n_out and (i >= n_in or a_out <= a_in):
+                add_triangle(inner[i % n_in], outer[o], outer[(o + 1) % n_out], pts)
+                o += 1
+            else:
+                add_triangle(inner[i], inner[(i + 1) % n_in], outer[o % n_out], pts)
+                i += 1
+    disc = pts
+    # The block: an n x n grid of particles, each square cut along alternating diagonals.
+    n, side, origin = 6, 0.08, (0.25, 0.55)
+    base = len(disc)
+    block = [(origin[0] + c * side, origin[1] + r * side) for r in range(n) for c in range(n)]
+    pts = disc + block
+    for r in range(n - 1):
+        for c in range(n - 1):
+            a, b = base + r * n + c, base + r * n + c + 1
+            d, e = base + (r + 1) * n + c, base + (r + 1) * n + c + 1
+            if (r + c) % 2 == 0:
+                add_triangle(a, b, e, pts)
+                add_triangle(a, e, d, pts)
+            else:
+                add_triangle(a, b, d, pts)
+                add_triangle(b, e, d, pts)
+    # Lumped masses: a third of each triangle's area times the density.
+    mass = [0.0] * len(pts)
+    for a, b, c in triangles:
+        (ax, ay), (bx, by), (cx, cy) = pts[a], pts[b], pts[c]
+        area = 0.5 * abs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
+        for p in (a, b, c):
+            mass[p] += density * area / 3.0
+    for p, pos in enumerate(pts):
+        v = vel if p < base else (-0.3, 0.0)
+        s.particle(pos, v, mass[p], radius=0.008, color=(0.15, 0.2, 0.35))
+    # Boundary edges (sides of one triangle only): the penalty force keeps the other body's
+    # particles off them, so the bodies push each other apart instead of interpenetrating.
+    sides = {}
+    for a, b, c in triangles:
+        for e in ((a, b), (b, c), (c, a)):
+            key = (min(e), max(e))
+            sides[key] = sides.get(key, 0) + 1
+    for (a, b), count in sorted(sides.items()):
+        if count == 1:
+            s.edge(a, b, radius=0.004, color=(0.15, 0.2, 0.35))
+    for a, b, c in triangles:
+        s.add(f'<elasticbodycstforce i1="{a}" i2="{b}" i3="{c}" youngsmodulus="{fmt(E)}" '
+              f'poissonratio="{fmt(nu)}"/>')
+    s.add('<simplegravity fx="0" fy="-9.81"/>')
+    s.add('<dragdamping b="0.003"/>')
+    slope = (math.sin(0.35), math.cos(0.35))
+    for px, py, nx, ny in ((0, -0.2, 0, 1), (-1.1, 0.0, slope[0], slope[1]), (0.8, 0, -1, 0)):
+        s.add(f'<halfplane px="{fmt(px)}" py="{fmt(py)}" nx="{fmt(nx)}" ny="{fmt(ny)}"/>')
+    for h in range(3):
+        s.add(f'<halfplanecolor i="{h}" r="0.55" g="0.5" b="0.45"/>')
+    s.add('<collision type="penalty" k="2000" thickness="0.01"/>')
+    s.save("soft_bodies.xml", [
+        '<description text="Soft bodies: a disc and a block of constant strain triangles fall onto a floor and a ramp (penalty contact, symplectic Euler)"/>',
+        '<duration time="4.0"/>',
+        '<integrator type="symplectic-euler" dt="0.0005"/>',
+        '<maxsimfreq max="2000"/>',
+        '<viewport cx="-0.05" cy="0.4" size="0.9"/>',
+    ])
+
+
+def hair_strand():
+    """A curly strand of hair: a chain of particles held by elastic springs (stiff, so it
+    barely stretches) and bending hinges whose rest angle curls it. Held at its root, it starts
+    straight and horizontal, swings down under gravity and curls up as it goes; implicit Euler
+    (Newton) takes the stiff springs in its stride."""
+    s = SceneWriter()
+    n, seg = 31, 0.04
+    for k in range(n):
+        t = k / (n - 1)
+        color = rgb(0.08 - 0.06 * t, 0.75, 0.35 + 0.5 * t)
+        s.particle((-0.6 + k * seg, 0.6), (0, 0), 0.01 if k else 1.0, fixed=(k == 0),
+                   radius=0.012 if k else 0.03, color=color)
+    for k in range(n - 1):
+        s.add(f'<elasticbodyspringforce i1="{k}" i2="{k + 1}" alpha="{fmt(200.0)}" l0="{fmt(seg)}"/>')
+    for k in range(1, n - 1):
+        theta0 = 0.05 + 0.3 * (k / (n - 2)) ** 1.5  # straighter at the root, curlier at the tip
+        s.add(f'<elasticbodybendingforce i1="{k - 1}" i2="{k}" i3="{k + 1}" alpha="{fmt(0.2)}" '
+              f'theta0="{fmt(theta0)}"/>')
+    s.add('<simplegravity fx="0" fy="-9.81"/>')
+    s.add('<dragdamping b="0.002"/>')
+    s.path(n - 1, 0.8, (0.85, 0.45, 0.2))
+    s.save("hair_strand.xml", [
+        '<description text="A curly hair strand: elastic springs and bending hinges with curled rest angles, held at the root, swings under gravity (implicit Euler)"/>',
+        '<duration time="6.0"/>',
+        '<integrator type="implicit-euler" dt="0.004"/>',
+        '<maxsimfreq max="250"/>',
+        '<backgroundcolor r="0.97" g="0.96" b="0.93"/>',
+        '<viewport cx="0" cy="0.1" size="0.9"/>',
+    ])
+
+
 
 if __name__ == "__main__":
     vortex_spiral()
@@ -325,3 +460,5 @@ if __name__ == "__main__":
     tablecloth()
     billiards()
     cloth_on_sphere()
+    soft_bodies()
+    hair_strand()

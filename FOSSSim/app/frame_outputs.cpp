@@ -314,4 +314,13 @@ std::string FrameOutputs::abandon() {
   return notes;
 }
 
+ElementColors element_colors(const Options& options) {
+  ElementColors colors;
+  colors.by = options.color_by == "strain"   ? ElementColoring::kStrain
+              : options.color_by == "energy" ? ElementColoring::kEnergy
+                                             : ElementColoring::kPlain;
+  colors.scale = options.color_scale;
+  return colors;
+}
+
 }  // namespace fosssim

@@ -81,4 +81,7 @@ class FrameOutputs {
 /// max(1, round(1 / (fps · dt))).
 int movie_stride(const Options& options, double dt);
 
+/// The colouring of elastic bodies that --color-by and --color-scale ask for.
+ElementColors element_colors(const Options& options);
+
 }  // namespace fosssim

@@ -57,6 +57,17 @@ void add_picture_options(CLI::App& app, Options& options) {
       ->check(CLI::IsMember({"run", "first"}))
       ->capture_default_str()
       ->group(group);
+  app.add_option("--color-by", options.color_by,
+                 "2D elastic bodies: colour their triangles and hinges plain, by strain (blue\n"
+                 "compressed, grey at rest, red stretched) or by energy density")
+      ->check(CLI::IsMember({"plain", "strain", "energy"}))
+      ->capture_default_str()
+      ->group(group);
+  app.add_option("--color-scale", options.color_scale,
+                 "The strain (default 0.1) or energy density (default: each picture's largest)\n"
+                 "drawn in full colour by --color-by")
+      ->check(CLI::PositiveNumber)
+      ->group(group);
   app.add_option("--energy-plot", options.energy_plot,
                  "Plot kinetic, potential and total energy over the run into this PNG (or .svg)")
       ->group(group);

@@ -45,6 +45,8 @@ struct Options {
   std::string view;                 ///< --view YAW,PITCH[,DISTANCE] of 3D scenes
   bool orthographic = false;        ///< --orthographic: parallel projection of 3D scenes
   std::string frame = "run";        ///< --frame run|first: what the pictures' camera fits
+  std::string color_by = "plain";   ///< --color-by plain|strain|energy: elastic bodies' colours
+  double color_scale = 0.0;         ///< --color-scale: the value in full colour; 0: default
   std::string window_screenshot;    ///< test aid: PNG of the window at window_screenshot_step
   std::int64_t window_screenshot_step = 0;
   bool display_given = false;  ///< -d appeared on the command line

@@ -81,6 +81,7 @@ int run_headless(const Scene& scene, const Options& options) {
     Simulation simulation(scene.model, scene.initial, interruptible_additions(scene));
     SceneView view(scene, simulation.state(), options.width, options.height,
                    frame ? &*frame : nullptr);
+    view.set_element_colors(element_colors(options));
     ProgressBar progress("simulating", scene.model.num_steps(),
                          choose_progress_style(options.progress, options.quiet),
                          options.progress_every);

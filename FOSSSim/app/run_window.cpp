@@ -34,6 +34,7 @@ int run_simulation_window(const Scene& scene, const Options& options) {
   ParticleGrab grab(scene);
   SimulationStepper stepper(scene, {&grab.force()});
   SceneView view(scene, stepper.state(), options.width, options.height);
+  view.set_element_colors(element_colors(options));
   int status = kExitOk;
   bool outputs_open = true;
   auto close_outputs = [&](const std::string& why) {
@@ -102,6 +103,7 @@ int run_grading_window(const Scene& scene, const Options& options) {
     }
   }();
   SceneView view(scene, stepper.state(), options.width, options.height);
+  view.set_element_colors(element_colors(options));
   std::optional<int> status;
   WindowEvents events;
   events.finished = [&] { status = report_grade(scene, options, stepper.grader().report()); };

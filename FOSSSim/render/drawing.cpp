@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "core/forces/rigid_body_spring_force.h"
 #include "core/rigid/rigid_bodies.h"
@@ -112,7 +114,95 @@ void add_rigid_bodies(const Scene& scene, const State& state, const PixelMapping
   }
 }
 
+/// Hinges are drawn as capsules of this radius (pixels), their middle particle as a disc of
+/// twice it.
+constexpr double kHingeRadius = 1.5;
+
+/// (1 - t) a + t b: exactly a at t = 0 and b at t = 1.
+Color mix(const Color& a, const Color& b, double t) {
+  const double s = 1.0 - t;
+  return {s * a.r + t * b.r, s * a.g + t * b.g, s * a.b + t * b.b};
+}
+
+Color darker(const Color& c) { return {0.55 * c.r, 0.55 * c.g, 0.55 * c.b}; }
+
+/// The elastic bodies' triangles and hinges of the model's forces at `state`, as 2D shapes.
+/// Returns the scale used (for the legend).
+double add_elastic_elements(const Scene& scene, const State& state, const PixelMapping& mapping,
+                            const ElementColors& colors, Drawing& drawing) {
+  std::vector<ForceElement> elements;
+  for (const auto& force : scene.model.forces) force->append_elements(state.q, elements);
+  if (elements.empty()) return 0.0;
+  double scale = colors.scale;
+  if (scale <= 0.0) {
+    scale = kDefaultStrainScale;
+    if (colors.by == ElementColoring::kEnergy) {
+      scale = 0.0;
+      for (const ForceElement& e : elements) {
+        if (std::isfinite(e.energy_density)) scale = std::max(scale, e.energy_density);
+      }
+      if (scale <= 0.0) scale = 1.0;  // everything at rest: any scale draws it pale
+    }
+  }
+  const int dim = scene.model.dim;
+  const auto color_of = [&](const ForceElement& e, const Color& plain) {
+    switch (colors.by) {
+      case ElementColoring::kStrain:
+        return strain_color(e.strain, scale);
+      case ElementColoring::kEnergy:
+        return energy_color(e.energy_density, scale);
+      case ElementColoring::kPlain:
+        break;
+    }
+    return plain;
+  };
+  for (const ForceElement& e : elements) {
+    const Point2 a = position(state, dim, mapping, e.particles[0]);
+    const Point2 b = position(state, dim, mapping, e.particles[1]);
+    const Point2 c = position(state, dim, mapping, e.particles[2]);
+    if (e.kind == ForceElement::Kind::kTriangle) {
+      const Color fill = color_of(e, kPlainTriangleColor);
+      drawing.shapes.push_back(Triangle{std::array<Point2, 3>{a, b, c}, fill, 1.0, darker(fill)});
+    } else {
+      const Color line = color_of(e, kPlainHingeColor);
+      drawing.shapes.push_back(Capsule{a, b, kHingeRadius, line});
+      drawing.shapes.push_back(Capsule{b, c, kHingeRadius, line});
+      drawing.shapes.push_back(Disc{b, 2.0 * kHingeRadius, line});
+    }
+  }
+  return scale;
+}
+
+/// "triangles and hinges by strain: red +10%, blue -10%" and the like.
+std::string element_legend(ElementColoring by, double scale) {
+  char buffer[128];
+  if (by == ElementColoring::kStrain) {
+    std::snprintf(buffer, sizeof buffer, "strain: red +%.3g, blue -%.3g", scale, scale);
+  } else {
+    std::snprintf(buffer, sizeof buffer, "energy density: dark red %.3g", scale);
+  }
+  return buffer;
+}
+
 }  // namespace
+
+Color strain_color(double strain, double scale) {
+  if (std::isnan(strain)) return {0.0, 0.0, 0.0};
+  constexpr Color kCompressed{0.23, 0.30, 0.75};
+  constexpr Color kRest{0.86, 0.86, 0.86};
+  constexpr Color kStretched{0.71, 0.02, 0.15};
+  const double t = std::clamp(strain / scale, -1.0, 1.0);
+  return t < 0.0 ? mix(kRest, kCompressed, -t) : mix(kRest, kStretched, t);
+}
+
+Color energy_color(double density, double scale) {
+  if (std::isnan(density)) return {0.0, 0.0, 0.0};
+  constexpr Color kZero{1.0, 0.97, 0.78};
+  constexpr Color kMiddle{0.99, 0.55, 0.24};
+  constexpr Color kFull{0.50, 0.0, 0.15};
+  const double t = std::sqrt(std::clamp(density / scale, 0.0, 1.0));
+  return t < 0.5 ? mix(kZero, kMiddle, 2.0 * t) : mix(kMiddle, kFull, 2.0 * t - 1.0);
+}
 
 Drawing compose_drawing(const Scene& scene, const State& state, const PathHistory& paths,
                         const Camera& camera, int width, int height, const Overlay& overlay) {
@@ -142,6 +232,8 @@ Drawing compose_drawing(const Scene& scene, const State& state, const PathHistor
     drawing.text = overlay_text(overlay, state.time, scene.model.integrator.dt);
     return drawing;
   }
+  const double element_scale =
+      add_elastic_elements(scene, state, mapping, overlay.elements, drawing);
   const auto& edges = scene.model.edges;
   drawing.edges.reserve(edges.size());
   for (std::size_t e = 0; e < edges.size(); ++e) {
@@ -165,6 +257,9 @@ Drawing compose_drawing(const Scene& scene, const State& state, const PathHistor
                    drawing.text_color);
   }
   drawing.text = overlay_text(overlay, state.time, scene.model.integrator.dt);
+  if (element_scale > 0.0 && overlay.elements.by != ElementColoring::kPlain) {
+    drawing.text.push_back(element_legend(overlay.elements.by, element_scale));
+  }
   return drawing;
 }
 

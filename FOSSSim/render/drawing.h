@@ -60,16 +60,17 @@ struct Region {
 /// One shape of a 3D picture.
 using Shape = std::variant<Triangle, Capsule, Disc, Ring>;
 
-/// One picture, painted in this order (docs/viewing.md): background, regions, paths, the 3D shapes,
-/// edges, particles, marks, guides, then the text lines at the top-left corner. 2D pictures
-/// have no shapes; 3D pictures have only shapes, depth-sorted, instead of paths, edges and
+/// One picture, painted in this order (docs/viewing.md): background, regions, paths, the shapes,
+/// edges, particles, marks, guides, then the text lines at the top-left corner. The shapes of
+/// 2D pictures are the elastic bodies' triangles (filled) and hinges (two capsules each), in
+/// the forces' summation order; 3D pictures have only shapes, depth-sorted, instead of paths, edges and
 /// particles.
 struct Drawing {
   int width = 512, height = 512;  ///< pixels
   Color background{1.0, 1.0, 1.0};
   std::vector<Region> regions;  ///< 2D: the half-planes, in their colours
   std::vector<Polyline> paths;
-  std::vector<Shape> shapes;  ///< 3D: farthest first
+  std::vector<Shape> shapes;  ///< 2D: elastic triangles and hinges; 3D: farthest first
   std::vector<Capsule> edges;
   std::vector<Disc> particles;
   std::vector<Ring> marks;
@@ -95,17 +96,49 @@ struct DragGuide {
   Eigen::Vector3d target = Eigen::Vector3d::Zero();  ///< world units (z ignored in 2D)
 };
 
+/// How the triangles and hinges of elastic bodies (Force::append_elements) are coloured.
+enum class ElementColoring {
+  kPlain,   ///< triangles kPlainTriangleColor with a darker outline, hinges kPlainHingeColor
+  kStrain,  ///< by ForceElement::strain: blue compressed, grey at rest, red stretched
+  kEnergy,  ///< by ForceElement::energy_density: pale yellow at 0 to dark red
+};
+
+/// The colouring of elastic bodies and the value drawn in full colour.
+struct ElementColors {
+  ElementColoring by = ElementColoring::kPlain;
+  /// |strain| or energy density drawn in full colour (larger values saturate); 0: the default,
+  /// kDefaultStrainScale for strain and the picture's largest density for energy.
+  double scale = 0.0;
+};
+
+inline constexpr Color kPlainTriangleColor{0.62, 0.78, 0.93};
+inline constexpr Color kPlainHingeColor{0.30, 0.30, 0.38};
+/// A strain of ±0.1 (10% stretch or compression, or 0.1 rad of bending) is drawn in full colour
+/// unless a scale is given.
+inline constexpr double kDefaultStrainScale = 0.1;
+
+/// The colour of a signed strain s at `scale`: a diverging map from blue (s ≤ -scale) through
+/// light grey (0) to red (s ≥ scale), linear in between; NaN is black.
+Color strain_color(double strain, double scale);
+/// The colour of an energy density e ≥ 0 at `scale`: pale yellow at 0 through orange to dark
+/// red at e ≥ scale, linear in sqrt(e / scale) (small densities stay visible); NaN is black.
+Color energy_color(double density, double scale);
+
 /// What a viewer adds to a scene's own appearance.
 struct Overlay {
   bool show_time = true;            ///< "t = 1.23" as the first text line
   std::vector<std::string> status;  ///< more text lines below the time
   std::vector<ParticleMark> marks;
   std::optional<DragGuide> drag;
+  /// How elastic triangles and hinges are coloured (2D pictures); a line of text says what the
+  /// colours mean when they are not plain.
+  ElementColors elements;
 };
 
 /// The drawing of `state` seen through `camera` on a width × height picture: trails from
-/// `paths`, edges as capsules and particles as discs with the scene's radii and colours, then
-/// the overlay. 3D scenes are projected onto the x-y plane.
+/// `paths`, the elastic bodies' triangles filled and hinges as two capsules (coloured as
+/// overlay.elements says), edges as capsules and particles as discs with the scene's radii and
+/// colours, then the overlay. 3D scenes are projected onto the x-y plane.
 Drawing compose_drawing(const Scene& scene, const State& state, const PathHistory& paths,
                         const Camera& camera, int width, int height, const Overlay& overlay = {});
 

@@ -31,7 +31,9 @@ Drawing SceneView::compose(const State& state, const Overlay& overlay) const {
   if (orbit_) {
     return compose_drawing_3d(scene_, parts_, state, paths_, *orbit_, width_, height_, overlay);
   }
-  return compose_drawing(scene_, state, paths_, camera_, width_, height_, overlay);
+  Overlay with_colors = overlay;
+  with_colors.elements = element_colors_;
+  return compose_drawing(scene_, state, paths_, camera_, width_, height_, with_colors);
 }
 
 void SceneView::recenter(const State& state) {

@@ -39,6 +39,10 @@ class SceneView {
   void restart_trails(const State& state);
   /// Changes the picture size, keeping the camera.
   void resize(int width, int height);
+  /// How elastic triangles and hinges are coloured in every drawing composed from now on
+  /// (the overlay's own setting is replaced).
+  void set_element_colors(const ElementColors& colors) { element_colors_ = colors; }
+  const ElementColors& element_colors() const { return element_colors_; }
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -74,6 +78,7 @@ class SceneView {
   std::optional<OrbitCamera> orbit_;
   SceneParts3D parts_;
   PathHistory paths_;
+  ElementColors element_colors_;
 };
 
 }  // namespace fosssim

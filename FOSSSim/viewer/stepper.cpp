@@ -30,14 +30,17 @@ void GradingStepper::step() {
 
 std::vector<ParticleMark> grading_marks(const std::vector<double>& position_residuals,
                                         const std::vector<double>& velocity_residuals,
-                                        double maximum_limit) {
+                                        const GradingCriteria& criteria) {
+  const double position_limit = criteria.maximum_limit;
+  const double velocity_limit = criteria.maximum_velocity_limit;
   std::vector<ParticleMark> marks;
   for (std::size_t p = 0; p < position_residuals.size(); ++p) {
-    const double r = std::fmax(position_residuals[p], velocity_residuals[p]);
-    const bool nan = std::isnan(position_residuals[p]) || std::isnan(velocity_residuals[p]);
-    if (nan || r > kDisagreeResidual) {
+    const double x = position_residuals[p];
+    const double v = velocity_residuals[p];
+    // Comparisons written so that NaN fails them.
+    if (!(x <= kDisagreeFactor * position_limit && v <= kDisagreeFactor * velocity_limit)) {
       marks.push_back({static_cast<int>(p), kDisagreeColor});
-    } else if (!(r < maximum_limit)) {
+    } else if (!(below_limit(x, position_limit) && below_limit(v, velocity_limit))) {
       marks.push_back({static_cast<int>(p), kFailColor});
     }
   }
@@ -48,7 +51,7 @@ Overlay GradingStepper::overlay() const {
   Overlay overlay;
   const GradeReport& report = grader_.report();
   overlay.marks = grading_marks(grader_.position_residuals(), grader_.velocity_residuals(),
-                                report.criteria.maximum_limit);
+                                report.criteria);
   char line[160];
   std::snprintf(line, sizeof line, "grading step %lld/%lld: %zu particle(s) disagree",
                 static_cast<long long>(grader_.file_state().step),

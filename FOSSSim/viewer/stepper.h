@@ -41,14 +41,17 @@ class SimulationStepper final : public Stepper {
 };
 
 /// Colours of the grading marks.
-inline constexpr Color kDisagreeColor{0.9, 0.0, 0.0};  ///< residual above kDisagreeResidual
-inline constexpr Color kFailColor{1.0, 0.6, 0.0};      ///< above the course's maximum only
-/// A particle whose position or velocity residual exceeds this is ringed in kDisagreeColor.
-inline constexpr double kDisagreeResidual = 1e-9;
+inline constexpr Color kDisagreeColor{0.9, 0.0, 0.0};  ///< kDisagreeFactor times a limit or more
+inline constexpr Color kFailColor{1.0, 0.6, 0.0};      ///< fails its limit, by less than that
+/// A particle whose position or velocity residual exceeds this many times its limit is ringed
+/// in kDisagreeColor.
+inline constexpr double kDisagreeFactor = 10.0;
 
 /// Replays a trajectory file step by step against the scene (grading mode, docs/viewing.md) and
-/// shows the file's frames. Particles whose step residual (position or velocity) exceeds 1e-9
-/// get a red ring; those above the course's maximum (1e-10) but not 1e-9 an orange one.
+/// shows the file's frames. A particle whose step residual fails the scene's criteria
+/// (criteria_for: position residual at least the maximum limit, 1e-10, or velocity residual at
+/// least the maximum velocity limit, 1e-10 for Theme 1 scenes and 1e-9 for Theme 4 ones) gets
+/// an orange ring, a red one when either residual exceeds ten times its limit.
 class GradingStepper final : public Stepper {
  public:
   explicit GradingStepper(StepGrader grader) : grader_(std::move(grader)) {}
@@ -63,10 +66,12 @@ class GradingStepper final : public Stepper {
   StepGrader grader_;
 };
 
-/// The marks of one graded step: for every particle with a position or velocity residual of at
-/// least `maximum_limit`, a ring coloured by how large the residual is.
+/// The marks of one graded step: for every particle whose position residual is at least
+/// criteria.maximum_limit or whose velocity residual is at least
+/// criteria.maximum_velocity_limit (or NaN), a ring: kDisagreeColor beyond kDisagreeFactor
+/// times the limit (or NaN), kFailColor otherwise.
 std::vector<ParticleMark> grading_marks(const std::vector<double>& position_residuals,
                                         const std::vector<double>& velocity_residuals,
-                                        double maximum_limit);
+                                        const GradingCriteria& criteria);
 
 }  // namespace fosssim

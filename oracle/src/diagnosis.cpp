@@ -52,6 +52,7 @@ void write_diagnosis(const std::string& folder, const SceneResult& result,
   plot.title = result.name + ": largest residual per step (" + result.integrator + ")";
   plot.dt = result.dt;
   plot.limit = report->criteria.maximum_limit;
+  plot.velocity_limit = report->criteria.maximum_velocity_limit;
   if (report->first_divergence) plot.marked_step = report->first_divergence->step;
   write_line_plot(residual_plot(history.columns(), plot), stem + ".residuals.svg");
 }

@@ -14,9 +14,12 @@ constexpr std::string_view kTableHeader =
     "\tsum_position\tsum_velocity\n";
 }  // namespace
 
-ResidualHistory::ResidualHistory(std::int64_t steps, double dt, double maximum_limit,
+ResidualHistory::ResidualHistory(std::int64_t steps, double dt, const GradingCriteria& criteria,
                                  bool keep_table)
-    : dt_(dt), maximum_limit_(maximum_limit), columns_(steps) {
+    : dt_(dt),
+      position_limit_(criteria.maximum_limit),
+      velocity_limit_(criteria.maximum_velocity_limit),
+      columns_(steps) {
   if (keep_table) {
     table_.reset(std::tmpfile());
     table_failed_ = table_ == nullptr;
@@ -26,7 +29,7 @@ ResidualHistory::ResidualHistory(std::int64_t steps, double dt, double maximum_l
 void ResidualHistory::add(const StepResidual& r) {
   columns_.add(r);
   const bool exceeds =
-      !(below_limit(r.max_position, maximum_limit_) && below_limit(r.max_velocity, maximum_limit_));
+      !(below_limit(r.max_position, position_limit_) && below_limit(r.max_velocity, velocity_limit_));
   if (exceeds) {
     if (over_++ == 0) first_over_ = r.step;
     last_over_ = r.step;

@@ -12,14 +12,16 @@
 
 namespace fosssim {
 
-/// Collects the residuals of each graded step (StepGrader's report().last_step): the steps at or
-/// above the maximum limit, the largest single residual, the residual plot's columns and, when
+/// Collects the residuals of each graded step (StepGrader's report().last_step): the steps that
+/// fail a maximum limit (position residual at or above criteria.maximum_limit, or velocity
+/// residual at or above criteria.maximum_velocity_limit), the largest single residual, the residual plot's columns and, when
 /// asked for, the table of every step, which goes to an anonymous temporary file as it grows.
 class ResidualHistory {
  public:
-  /// For a grading of `steps` steps of `dt` seconds against `maximum_limit`; `keep_table` keeps
-  /// the table of every step for write_table().
-  ResidualHistory(std::int64_t steps, double dt, double maximum_limit, bool keep_table);
+  /// For a grading of `steps` steps of `dt` seconds against the maximum limits of `criteria`
+  /// (the scene's, criteria_for); `keep_table` keeps the table of every step for write_table().
+  ResidualHistory(std::int64_t steps, double dt, const GradingCriteria& criteria,
+                  bool keep_table);
 
   /// Takes the next step's residuals.
   void add(const StepResidual& residual);
@@ -45,7 +47,8 @@ class ResidualHistory {
   };
 
   double dt_;
-  double maximum_limit_;
+  double position_limit_;
+  double velocity_limit_;
   std::int64_t over_ = 0, first_over_ = 0, last_over_ = 0, worst_step_ = 0;
   double worst_ = -1.0;
   ResidualColumns columns_;

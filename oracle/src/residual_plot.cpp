@@ -12,14 +12,18 @@ namespace {
 std::string short_number(double value) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.4g", value);
-  return text;
+  std::string out = text;
+  // "1e-09" -> "1e-9", as the limits are written everywhere else.
+  const std::size_t e = out.find('e');
+  if (e != std::string::npos && e + 3 < out.size() && out[e + 2] == '0') out.erase(e + 2, 1);
+  return out;
 }
 
 /// The decades shown: from below the smallest positive residual (or the limit) to above the
 /// largest finite one, at least two decades.
 std::pair<int, int> decade_range(const std::vector<ResidualColumns::Column>& columns,
-                                 double limit) {
-  double smallest = limit, largest = limit;
+                                 double limit, double other_limit) {
+  double smallest = std::min(limit, other_limit), largest = std::max(limit, other_limit);
   for (const ResidualColumns::Column& c : columns) {
     for (double v : {c.position, c.velocity}) {
       if (std::isfinite(v) && v > 0.0) {
@@ -85,7 +89,9 @@ LinePlot residual_plot(const ResidualColumns& reduced, const ResidualPlotOptions
   plot.x.high = columns.empty()
                     ? options.dt
                     : std::max(static_cast<double>(columns.back().last_step) * options.dt, 1e-300);
-  const auto [low, high] = decade_range(columns, options.limit);
+  const bool velocity_line = options.velocity_limit && *options.velocity_limit != options.limit;
+  const auto [low, high] =
+      decade_range(columns, options.limit, velocity_line ? *options.velocity_limit : options.limit);
   plot.y.title = "largest residual of the step";
   plot.y.scale = AxisScale::kLog10;
   plot.y.zero_at_low = has_zero;  // zeros get the bottom line of their own, a decade lower
@@ -94,9 +100,17 @@ LinePlot residual_plot(const ResidualColumns& reduced, const ResidualPlotOptions
 
   plot.references.push_back({ReferenceLine::Direction::kHorizontal,
                              options.limit,
-                             "maximum limit " + short_number(options.limit),
+                             (velocity_line ? "maximum position limit " : "maximum limit ") +
+                                 short_number(options.limit),
                              {0.839, 0.153, 0.157},
                              {6.0, 4.0}});
+  if (velocity_line) {
+    plot.references.push_back({ReferenceLine::Direction::kHorizontal,
+                               *options.velocity_limit,
+                               "maximum velocity limit " + short_number(*options.velocity_limit),
+                               {0.839, 0.153, 0.157},
+                               {2.0, 2.0}});
+  }
   if (options.marked_step) {
     plot.references.push_back({ReferenceLine::Direction::kVertical,
                                static_cast<double>(*options.marked_step) * options.dt,

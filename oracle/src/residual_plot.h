@@ -45,6 +45,9 @@ struct ResidualPlotOptions {
   std::string title;
   double dt = 0.01;                         ///< seconds per step, for the time axis
   double limit = 1e-10;                     ///< the maximum limit, drawn as a dashed line
+  /// The maximum velocity limit when it differs from `limit` (Theme 4: 1e-9), drawn as a
+  /// second dashed line; none when velocities are held to `limit` too.
+  std::optional<double> velocity_limit;
   std::optional<std::int64_t> marked_step;  ///< the first divergence, drawn as a vertical line
   int max_points = 1500;                    ///< longer runs are reduced to this many columns, each
                                             ///< keeping its largest residual (ResidualColumns)

@@ -155,7 +155,7 @@ std::string failure_details(const GradeReport& report, const ResidualHistory& hi
   std::ostringstream out;
   out << describe_failure(report, dim);
   if (history.steps_over_limit() > 0) {
-    out << "Steps at or above the maximum limit: " << history.steps_over_limit() << " of "
+    out << "Steps at or above a maximum limit: " << history.steps_over_limit() << " of "
         << report.steps << " (from step " << history.first_step_over_limit() << " to step "
         << history.last_step_over_limit() << ")\n";
   }
@@ -212,7 +212,7 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
   const std::int64_t expected_bytes = expected_trajectory_bytes(model);
 
   std::optional<GradeReport> report;
-  ResidualHistory history(result.steps, result.dt, GradingCriteria{}.maximum_limit,
+  ResidualHistory history(result.steps, result.dt, criteria_for(scene),
                           !options.diagnose_dir.empty());
   try {
     WorkFolder work(options.work_dir);

@@ -77,6 +77,39 @@ TEST_F(CliPictures, PngFolderAndSizeCanBeChosen) {
             0.01);
 }
 
+TEST_F(CliPictures, ElasticTrianglesAreFilledAndColouredByStrainOnRequest) {
+  // A triangle stretched 20% along x (rest corners (0,0), (1,0), (0,1)), viewport 2 units
+  // tall on 512 pixels: its inside point (0.3, 0.3) is pixel (332.8, 179.2).
+  folder_.write("triangle.xml", R"(<scene>
+  <duration time="0.01"/><integrator type="symplectic-euler" dt="0.01"/>
+  <viewport cx="0" cy="0" size="1"/>
+  <particle m="1" px="0" py="0" vx="0" vy="0" fixed="1" radius="0.01"/>
+  <particle m="1" px="1.2" py="0" vx="0" vy="0" fixed="1" radius="0.01"/>
+  <particle m="1" px="0" py="1" vx="0" vy="0" fixed="1" radius="0.01"/>
+  <elasticbodycstforce i1="0" i2="1" i3="2" youngsmodulus="10" poissonratio="0.3" xb2x="1"/>
+</scene>)");
+  const Color plain{0.62, 0.78, 0.93};      // kPlainTriangleColor
+  const Color stretched{0.71, 0.02, 0.15};  // full red: 0.2 beyond the default scale 0.1
+  ASSERT_EQ(fosssim("-s triangle.xml -d 0 -q -g 1 --png-dir plain").status, 0);
+  EXPECT_LT(color_distance(read_png(folder_ / "plain/frame_00000.png").color_at(333, 179), plain),
+            0.01);
+  ASSERT_EQ(fosssim("-s triangle.xml -d 0 -q -g 1 --png-dir strain --color-by strain").status, 0);
+  EXPECT_LT(
+      color_distance(read_png(folder_ / "strain/frame_00000.png").color_at(333, 179), stretched),
+      0.01);
+  // With --color-scale 0.4 the stretch of 0.2 is half way from grey to red.
+  ASSERT_EQ(
+      fosssim("-s triangle.xml -d 0 -q -g 1 --png-dir half --color-by strain --color-scale 0.4")
+          .status,
+      0);
+  const Color half{0.5 * (0.86 + 0.71), 0.5 * (0.86 + 0.02), 0.5 * (0.86 + 0.15)};
+  EXPECT_LT(color_distance(read_png(folder_ / "half/frame_00000.png").color_at(333, 179), half),
+            0.01);
+  const auto bad = fosssim("-s triangle.xml -d 0 -q -g 1 --color-by stress");
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.err.find("--color-by"), std::string::npos) << bad.err;
+}
+
 TEST_F(CliPictures, SvgPerStepIsValidXml) {
   const auto result = fosssim("-s scene.xml -d 0 -m svgs");
   ASSERT_EQ(result.status, 0) << result.err;

@@ -75,6 +75,25 @@ TEST(ResidualPlot, ShowsBothSeriesTheLimitAndTheMarkerOnALogAxis) {
   EXPECT_FALSE(contains(plot.note, "NaN")) << plot.note;
 }
 
+TEST(ResidualPlot, AThemeFourVelocityLimitIsASecondDashedLine) {
+  ResidualPlotOptions options = ramp_options();
+  options.velocity_limit = 1e-9;
+  const LinePlot plot = residual_plot(ramp(100), options);
+  ASSERT_EQ(plot.references.size(), 3u);
+  EXPECT_EQ(plot.references[0].value, 1e-10);
+  EXPECT_EQ(plot.references[0].label, "maximum position limit 1e-10");
+  EXPECT_EQ(plot.references[1].direction, ReferenceLine::Direction::kHorizontal);
+  EXPECT_EQ(plot.references[1].value, 1e-9);
+  EXPECT_EQ(plot.references[1].label, "maximum velocity limit 1e-9");
+  EXPECT_FALSE(plot.references[1].dashes.empty());
+  EXPECT_EQ(plot.references[2].direction, ReferenceLine::Direction::kVertical);
+  // A velocity limit equal to the position limit is the one line of Theme 1.
+  options.velocity_limit = 1e-10;
+  const LinePlot theme1 = residual_plot(ramp(100), options);
+  ASSERT_EQ(theme1.references.size(), 2u);
+  EXPECT_EQ(theme1.references[0].label, "maximum limit 1e-10");
+}
+
 TEST(ResidualPlot, WithoutZerosOrMarkerThereIsNoZeroLineAndNoVerticalLine) {
   std::vector<StepResidual> per_step = ramp(100);
   per_step.erase(per_step.begin(), per_step.begin() + 9);  // the zeros

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <numbers>
+#include <variant>
+
 #include "io/scene_loader.h"
 #include "render/scene_view.h"
 #include "support/tiny_scenes.h"
@@ -108,6 +112,100 @@ TEST(ComposeDrawing, FillsTheSolidSideOfEachHalfPlaneInItsColour) {
   for (const Point2& c : d.regions[0].corners) EXPECT_GE(c.y, 384.0 - 1e-9);
   for (const Point2& c : d.regions[1].corners) EXPECT_GE(c.x, 384.0 - 1e-9);
   EXPECT_EQ(d.regions[0].corners.size(), 4u);
+}
+
+/// A triangle stretched 20% along x (rest corners (0,0), (1,0), (0,1)) and a bent hinge
+/// (θ = π/2 against θ0 = 0), 256 pixels per unit.
+Scene elastic_scene() {
+  return load_scene_text(R"(<scene>
+    <duration time="0.1"/><integrator type="symplectic-euler" dt="0.1"/>
+    <particle m="1" px="0" py="0" vx="0" vy="0" fixed="0"/>
+    <particle m="1" px="1.2" py="0" vx="0" vy="0" fixed="0"/>
+    <particle m="1" px="0" py="1" vx="0" vy="0" fixed="0"/>
+    <particle m="1" px="-1" py="0" vx="0" vy="0" fixed="0"/>
+    <particle m="1" px="-1" py="-1" vx="0" vy="0" fixed="0"/>
+    <elasticbodycstforce i1="0" i2="1" i3="2" youngsmodulus="10" poissonratio="0.3"
+                         xb2x="1.0"/>
+    <elasticbodybendingforce i1="0" i2="3" i3="4" alpha="1" theta0="0"/>
+  </scene>)",
+                         "elastic.xml");
+}
+
+TEST(ComposeDrawing, FillsElasticTrianglesAndDrawsHingesPlainByDefault) {
+  const Scene scene = elastic_scene();
+  const Drawing d =
+      compose_drawing(scene, scene.initial, PathHistory(scene), Camera{0, 0, 1}, 512, 512);
+  // In the forces' summation order (bending before triangles): the hinge's two capsules and
+  // the disc at its middle particle, then the triangle.
+  ASSERT_EQ(d.shapes.size(), 4u);
+  const auto* triangle = std::get_if<Triangle>(&d.shapes[3]);
+  ASSERT_NE(triangle, nullptr);
+  EXPECT_EQ(triangle->color, kPlainTriangleColor);
+  EXPECT_DOUBLE_EQ(triangle->corners[1].x, 256.0 + 1.2 * 256.0);
+  EXPECT_DOUBLE_EQ(triangle->corners[2].y, 256.0 - 256.0);
+  EXPECT_GT(triangle->outline_width, 0.0);
+  const auto* arm = std::get_if<Capsule>(&d.shapes[0]);
+  ASSERT_NE(arm, nullptr);
+  EXPECT_EQ(arm->color, kPlainHingeColor);
+  EXPECT_DOUBLE_EQ(arm->a.x, 256.0);                // particle 0
+  EXPECT_DOUBLE_EQ(arm->b.x, 256.0 - 256.0);        // the hinge, particle 3
+  ASSERT_NE(std::get_if<Capsule>(&d.shapes[1]), nullptr);
+  const auto* hinge = std::get_if<Disc>(&d.shapes[2]);
+  ASSERT_NE(hinge, nullptr);
+  EXPECT_DOUBLE_EQ(hinge->center.x, 0.0);
+  EXPECT_EQ(d.text.size(), 1u);  // the time only: plain colours need no legend
+}
+
+TEST(ComposeDrawing, ColoursElasticElementsByStrainOrEnergyWithALegend) {
+  const Scene scene = elastic_scene();
+  Overlay overlay;
+  overlay.elements.by = ElementColoring::kStrain;
+  const Drawing d = compose_drawing(scene, scene.initial, PathHistory(scene), Camera{0, 0, 1},
+                                    512, 512, overlay);
+  ASSERT_EQ(d.shapes.size(), 4u);
+  // Stretched by 0.2, beyond the default scale 0.1: full red. The hinge is bent by π/2 (the
+  // turn from (-1, 0) to (0, -1) is counter-clockwise): full red too.
+  EXPECT_EQ(std::get<Triangle>(d.shapes[3]).color, strain_color(1.0, 1.0));
+  EXPECT_EQ(std::get<Capsule>(d.shapes[0]).color, strain_color(1.0, 1.0));
+  ASSERT_EQ(d.text.size(), 2u);
+  EXPECT_EQ(d.text[1], "strain: red +0.1, blue -0.1");
+  // With a scale of 0.4 the triangle is half way to red.
+  overlay.elements.scale = 0.4;
+  const Drawing half = compose_drawing(scene, scene.initial, PathHistory(scene),
+                                       Camera{0, 0, 1}, 512, 512, overlay);
+  const Color shown = std::get<Triangle>(half.shapes[3]).color;
+  const Color halfway = strain_color(0.5, 1.0);
+  EXPECT_NEAR(shown.r, halfway.r, 1e-12);
+  EXPECT_NEAR(shown.g, halfway.g, 1e-12);
+  EXPECT_NEAR(shown.b, halfway.b, 1e-12);
+  // By energy, scaled by the picture's largest density: the triangle's
+  // E/(2(1 - ν²)) εxx² = 10/1.82 · 0.44² ≈ 1.064 J/m² beats the hinge's (π/2)²/(2·2²) ≈ 0.308 J/m.
+  overlay.elements = {ElementColoring::kEnergy, 0.0};
+  const Drawing energy = compose_drawing(scene, scene.initial, PathHistory(scene),
+                                         Camera{0, 0, 1}, 512, 512, overlay);
+  const double triangle_density = 10.0 / 1.82 * 0.44 * 0.44;
+  const double hinge_density = (std::numbers::pi / 2) * (std::numbers::pi / 2) / 8.0;
+  EXPECT_EQ(std::get<Triangle>(energy.shapes[3]).color, energy_color(1.0, 1.0));
+  const Color hinge = std::get<Capsule>(energy.shapes[0]).color;
+  const Color expected = energy_color(hinge_density / triangle_density, 1.0);
+  EXPECT_NEAR(hinge.r, expected.r, 1e-12);
+  EXPECT_NEAR(hinge.g, expected.g, 1e-12);
+  EXPECT_EQ(energy.text[1], "energy density: dark red 1.06");
+}
+
+TEST(ElementColors, StrainRunsFromBlueThroughGreyToRedAndEnergyFromPaleToDark) {
+  EXPECT_EQ(strain_color(0.0, 0.1), (Color{0.86, 0.86, 0.86}));
+  EXPECT_EQ(strain_color(0.1, 0.1), (Color{0.71, 0.02, 0.15}));
+  EXPECT_EQ(strain_color(5.0, 0.1), strain_color(0.1, 0.1));  // saturates
+  EXPECT_EQ(strain_color(-0.1, 0.1), (Color{0.23, 0.30, 0.75}));
+  const Color quarter = strain_color(0.025, 0.1);
+  EXPECT_NEAR(quarter.r, 0.86 + 0.25 * (0.71 - 0.86), 1e-15);
+  EXPECT_EQ(energy_color(0.0, 2.0), (Color{1.0, 0.97, 0.78}));
+  EXPECT_EQ(energy_color(2.0, 2.0), (Color{0.50, 0.0, 0.15}));
+  EXPECT_EQ(energy_color(0.5, 2.0), (Color{0.99, 0.55, 0.24}));  // sqrt(1/4) = 1/2: the middle
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(strain_color(nan, 0.1), (Color{0, 0, 0}));
+  EXPECT_EQ(energy_color(nan, 0.1), (Color{0, 0, 0}));
 }
 
 TEST(FormatTime, ShowsEnoughDecimalsForTheTimeStep) {

@@ -28,7 +28,7 @@ Scene load() { return load_scene_text(kTwoSprings, "springs.xml"); }
 TEST(GradingMarks, RingsByHowFarTheFileIsFromTheReference) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const auto marks =
-      grading_marks({0.0, 5e-10, 2e-9, 0.0, 1e-10, nan}, {0.0, 0.0, 0.0, 3e-6, 0.0, 0.0}, 1e-10);
+      grading_marks({0.0, 5e-10, 2e-9, 0.0, 1e-10, nan}, {0.0, 0.0, 0.0, 3e-6, 0.0, 0.0}, {});
   ASSERT_EQ(marks.size(), 5u);
   EXPECT_EQ(marks[0].particle, 1);
   EXPECT_EQ(marks[0].color, kFailColor);  // above 1e-10, below 1e-9
@@ -40,6 +40,29 @@ TEST(GradingMarks, RingsByHowFarTheFileIsFromTheReference) {
   EXPECT_EQ(marks[3].color, kFailColor);  // exactly 1e-10 fails the strict criterion
   EXPECT_EQ(marks[4].particle, 5);
   EXPECT_EQ(marks[4].color, kDisagreeColor);  // NaN
+}
+
+TEST(GradingMarks, VelocitiesAreRingedByTheVelocityLimitOfTheScenesTheme) {
+  // Theme 4's single velocity residual may reach 1e-9 (its position limit stays 1e-10).
+  const std::vector<double> positions = {0.0, 0.0, 0.0, 0.0, 5e-10, 2e-9};
+  const std::vector<double> velocities = {5e-10, 1e-9, 2e-9, 2e-8, 0.0, 0.0};
+  const auto theme1 = grading_marks(positions, velocities, GradingCriteria{});
+  ASSERT_EQ(theme1.size(), 6u);
+  EXPECT_EQ(theme1[0].color, kFailColor);       // 5e-10 ≥ 1e-10
+  EXPECT_EQ(theme1[1].color, kFailColor);       // 1e-9: not beyond ten times 1e-10
+  EXPECT_EQ(theme1[2].color, kDisagreeColor);   // 2e-9 > 1e-9
+  const auto theme4 = grading_marks(positions, velocities, kTheme4Criteria);
+  ASSERT_EQ(theme4.size(), 5u);
+  EXPECT_EQ(theme4[0].particle, 1);  // 5e-10 passes 1e-9: no ring
+  EXPECT_EQ(theme4[0].color, kFailColor);  // exactly 1e-9 fails the strict criterion
+  EXPECT_EQ(theme4[1].particle, 2);
+  EXPECT_EQ(theme4[1].color, kFailColor);  // 2e-9: fails, within ten times the limit
+  EXPECT_EQ(theme4[2].particle, 3);
+  EXPECT_EQ(theme4[2].color, kDisagreeColor);  // 2e-8 > 1e-8
+  EXPECT_EQ(theme4[3].particle, 4);
+  EXPECT_EQ(theme4[3].color, kFailColor);  // positions keep 1e-10
+  EXPECT_EQ(theme4[4].particle, 5);
+  EXPECT_EQ(theme4[4].color, kDisagreeColor);
 }
 
 TEST(SimulationStepper, RunsTheSceneToItsEnd) {

@@ -49,6 +49,9 @@ class PenaltyForce final : public Force {
   bool is_conservative() const override { return true; }
   bool has_jacobian() const override { return jacobian_ == PenaltyJacobian::kExact; }
   std::string label() const override;
+  /// Local/global: its obstacle contacts implicit, its particle-edge pairs explicit
+  /// (core/integrators/local_global.h).
+  LocalGlobalRole local_global_role() const override { return LocalGlobalRole::kContact; }
 
   /// add_gradient over the pairs `which` selects only. The local/global solver takes the
   /// obstacles' pairs into its global matrix and the others explicitly (docs/collisions.md).

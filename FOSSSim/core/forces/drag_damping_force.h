@@ -20,6 +20,8 @@ class DragDampingForce final : public Force {
   void add_hessian_v(const ForceInput& in, HessianBuilder& hessian) const override;
   bool is_conservative() const override { return false; }
   std::string label() const override { return "dragdamping"; }
+  /// Local/global: explicit (the drag of vⁿ, held through the step).
+  LocalGlobalRole local_global_role() const override { return LocalGlobalRole::kExplicit; }
 
  private:
   double b_;  ///< drag coefficient, N·s/m

@@ -42,4 +42,9 @@ std::string DragSpringForce::label() const {
   return "dragspring(" + std::to_string(particle_) + ")";
 }
 
+std::optional<AnchorTerm> DragSpringForce::local_global_anchor() const {
+  if (!active()) return std::nullopt;
+  return AnchorTerm{particle_, k_, target_};
+}
+
 }  // namespace fosssim

@@ -43,6 +43,9 @@ class DragSpringForce final : public Force {
   void add_hessian_v(const ForceInput&, HessianBuilder&) const override {}
   bool is_conservative() const override { return true; }
   std::string label() const override;
+  /// Local/global: an anchor, asked for every step (it changes between steps).
+  LocalGlobalRole local_global_role() const override { return LocalGlobalRole::kAnchor; }
+  std::optional<AnchorTerm> local_global_anchor() const override;
 
  private:
   int dim_;

@@ -41,6 +41,16 @@ void ElasticBodyBendingForce::add_energy(const ForceInput& in, double& energy) c
   energy += alpha_ * deviation * deviation / (2.0 * rest_length_);
 }
 
+void ElasticBodyBendingForce::append_elements(const Vector& q,
+                                              std::vector<ForceElement>& elements) const {
+  ForceElement element;
+  element.kind = ForceElement::Kind::kHinge;
+  element.particles = {i1_, i2_, i3_};
+  element.strain = angle(q) - theta0_;
+  element.energy_density = alpha_ * element.strain * element.strain / (2.0 * rest_length_ * rest_length_);
+  elements.push_back(element);
+}
+
 void ElasticBodyBendingForce::add_gradient(const ForceInput& in, Vector& gradient) const {
   const Vec2 e1 = particle_vec<2>(in.q, i2_) - particle_vec<2>(in.q, i1_);
   const Vec2 e2 = particle_vec<2>(in.q, i3_) - particle_vec<2>(in.q, i2_);

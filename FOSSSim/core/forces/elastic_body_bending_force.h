@@ -35,6 +35,11 @@ class ElasticBodyBendingForce final : public Force {
   void add_hessian_v(const ForceInput&, HessianBuilder&) const override {}
   bool is_conservative() const override { return true; }
   std::string label() const override;
+  /// Local/global: explicit. U is quadratic in the angle, not in a projection of positions
+  /// onto a shape, so it has no constant matrix (docs/integrators.md, 'Local/global').
+  LocalGlobalRole local_global_role() const override { return LocalGlobalRole::kExplicit; }
+  /// One hinge, its strain θ - θ0, its density U / L.
+  void append_elements(const Vector& q, std::vector<ForceElement>& elements) const override;
 
   /// θ of the current positions, as above.
   double angle(const Vector& q) const;

@@ -1,6 +1,7 @@
 #include "core/forces/elastic_body_cst_force.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 #include "core/forces/make_for_dim.h"
@@ -119,6 +120,27 @@ void ElasticBodyCstForce<D>::add_hessian_x(const ForceInput& in, HessianBuilder&
       hessian.add_block<D>(corners_[p], corners_[r], block);
     }
   }
+}
+
+template <int D>
+void ElasticBodyCstForce<D>::append_elements(const Vector& q,
+                                             std::vector<ForceElement>& elements) const {
+  const Eigen::Matrix<double, D, 2> F = deformation_gradient(q);
+  // The eigenvalues of the symmetric 2×2 matrix C = FᵀF are λ² of the principal stretches.
+  const Mat2 C = F.transpose() * F;
+  const double mean = 0.5 * (C(0, 0) + C(1, 1));
+  const double half_gap = std::hypot(0.5 * (C(0, 0) - C(1, 1)), C(0, 1));
+  const double small = std::sqrt(std::max(mean - half_gap, 0.0)) - 1.0;
+  const double large = std::sqrt(std::max(mean + half_gap, 0.0)) - 1.0;
+  ForceElement element;
+  element.kind = ForceElement::Kind::kTriangle;
+  element.particles = corners_;
+  element.strain = std::abs(small) > std::abs(large) ? small : large;
+  double energy = 0.0;
+  const Vector none;
+  add_energy(ForceInput{q, none, none}, energy);
+  element.energy_density = rest_.area > 0.0 ? energy / rest_.area : 0.0;
+  elements.push_back(element);
 }
 
 template <int D>

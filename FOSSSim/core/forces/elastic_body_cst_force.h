@@ -50,6 +50,12 @@ class ElasticBodyCstForce final : public Force {
   void add_hessian_v(const ForceInput&, HessianBuilder&) const override {}
   bool is_conservative() const override { return true; }
   std::string label() const override;
+  /// Local/global: explicit. The St. Venant-Kirchhoff energy of FᵀF - I is quartic in the
+  /// positions, not the squared distance to a projection, so it has no constant matrix
+  /// (docs/integrators.md, 'Local/global').
+  LocalGlobalRole local_global_role() const override { return LocalGlobalRole::kExplicit; }
+  /// One triangle, its strain the principal stretch of largest magnitude, its density U / Ā.
+  void append_elements(const Vector& q, std::vector<ForceElement>& elements) const override;
 
  private:
   /// F = D B of the current positions.

@@ -30,6 +30,11 @@ class ElasticBodySpringForce final : public Force {
   void add_hessian_v(const ForceInput&, HessianBuilder&) const override {}
   bool is_conservative() const override { return true; }
   std::string label() const override;
+  /// Local/global: one spring of stiffness α / l0, implicit like the Theme 1 spring.
+  LocalGlobalRole local_global_role() const override { return LocalGlobalRole::kSprings; }
+  void append_local_global_springs(std::vector<SpringTerm>& springs) const override {
+    springs.push_back({i_, j_, alpha_ / l0_, l0_, 0.0});
+  }
 
  private:
   int i_, j_;

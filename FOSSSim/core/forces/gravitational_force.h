@@ -24,6 +24,8 @@ class GravitationalForce final : public Force {
   void add_hessian_v(const ForceInput&, HessianBuilder&) const override {}
   bool is_conservative() const override { return true; }
   std::string label() const override;
+  /// Local/global: explicit (not a spring: the attraction at qⁿ, held through the step).
+  LocalGlobalRole local_global_role() const override { return LocalGlobalRole::kExplicit; }
 
  private:
   int i_, j_;

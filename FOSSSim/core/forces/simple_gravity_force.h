@@ -20,6 +20,8 @@ class SimpleGravityForce final : public Force {
   void add_hessian_v(const ForceInput&, HessianBuilder&) const override {}
   bool is_conservative() const override { return true; }
   std::string label() const override { return "simplegravity"; }
+  /// Local/global: explicit, and exact there (the force does not depend on the state).
+  LocalGlobalRole local_global_role() const override { return LocalGlobalRole::kExplicit; }
 
  private:
   Vec<D> g_;  ///< acceleration, m/s²

@@ -37,8 +37,11 @@ class SpringForce final : public Force {
   bool is_conservative() const override { return b_ == 0.0; }
   bool has_symmetric_jacobians() const override { return b_ == 0.0; }
   std::string label() const override;
-  /// The spring as the local/global solver takes it (core/systems/local_global_system.h).
-  SpringTerm term() const { return {i_, j_, k_, l0_, b_}; }
+  /// Local/global: one spring, its damping as Laplacian damping (core/integrators/local_global.h).
+  LocalGlobalRole local_global_role() const override { return LocalGlobalRole::kSprings; }
+  void append_local_global_springs(std::vector<SpringTerm>& springs) const override {
+    springs.push_back({i_, j_, k_, l0_, b_});
+  }
 
  private:
   /// x_j - x_i.

@@ -29,6 +29,11 @@ class SpringSetForce final : public Force {
   bool is_conservative() const override { return !damped_; }
   bool has_symmetric_jacobians() const override { return !damped_; }
   std::string label() const override;
+  /// Local/global: its springs, in order, implicit.
+  LocalGlobalRole local_global_role() const override { return LocalGlobalRole::kSprings; }
+  void append_local_global_springs(std::vector<SpringTerm>& springs) const override {
+    springs.insert(springs.end(), springs_.begin(), springs_.end());
+  }
   /// The springs, in summation order.
   const std::vector<SpringTerm>& springs() const { return springs_; }
 

@@ -32,6 +32,8 @@ class VortexForce final : public Force {
   bool has_symmetric_jacobians() const override { return false; }
   bool has_potential() const override { return false; }
   std::string label() const override;
+  /// Local/global: explicit (the vortex at (qⁿ, vⁿ), held through the step).
+  LocalGlobalRole local_global_role() const override { return LocalGlobalRole::kExplicit; }
 
  private:
   int i_, j_;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
+#include <string>
 #include <string_view>
 
 #if defined(__SSE2__)
@@ -18,7 +20,16 @@ template <int D>
 void LocalGlobal<D>::prepare() {
   const SceneModel& model = this->model();
   split_ = sort_mass_spring_forces(forces());
-  penalty_ = dynamic_cast<const PenaltyForce<D>*>(split_.contact);
+  check_local_global_roles(split_, "local-global");
+  if (split_.contact != nullptr) {
+    // kContact is the penalty force's role; it gives the obstacle pairs and their stiffness.
+    penalty_ = dynamic_cast<const PenaltyForce<D>*>(split_.contact);
+    if (penalty_ == nullptr) {
+      throw Error(ErrorKind::kBadInput, "local-global: " + split_.contact->label() +
+                                            " declares itself a contact force but is not the " +
+                                            std::to_string(D) + "D penalty force");
+    }
+  }
   const bool eliminate = settings_.pins == PinMethod::kElimination;
   free_ = FreeDofs(eliminate ? model.fixed : std::vector<bool>(model.fixed.size(), false), D);
   if (!eliminate) {
@@ -37,9 +48,9 @@ void LocalGlobal<D>::prepare() {
   // Q for the anchors there are now (the pins; the drag spring, if already grabbed). The pins'
   // targets only enter the right side, so they can wait for the first step.
   anchors_.clear();
-  for (const DragSpringForce* drag : split_.anchors) {
-    if (drag->active() && !model.fixed[drag->particle()])
-      anchors_.push_back({drag->particle(), drag->stiffness(), drag->target()});
+  for (const Force* force : split_.anchors) {
+    const std::optional<AnchorTerm> anchor = force->local_global_anchor();
+    if (anchor && !model.fixed[anchor->i]) anchors_.push_back(*anchor);
   }
   for (int p : pinned_) anchors_.push_back({p, settings_.penalty_weight, Eigen::Vector3d::Zero()});
   for (const AnchorTerm& a : anchors_) factored_anchors_.emplace_back(a.i, a.k);
@@ -126,8 +137,9 @@ std::vector<std::pair<int, double>> LocalGlobal<D>::collect_anchors(const State&
   const SceneModel& model = this->model();
   const double h = model.integrator.dt;
   anchors_.clear();
-  for (const DragSpringForce* drag : split_.anchors) {
-    if (drag->active()) anchors_.push_back({drag->particle(), drag->stiffness(), drag->target()});
+  for (const Force* force : split_.anchors) {
+    if (const std::optional<AnchorTerm> anchor = force->local_global_anchor())
+      anchors_.push_back(*anchor);
   }
   std::erase_if(anchors_, [&](const AnchorTerm& a) { return model.fixed[a.i]; });
   const double elapsed = static_cast<double>(state.step + 1 - pin_step_) * h;

@@ -73,8 +73,11 @@ struct LocalGlobalSettings {
 /// implicit Euler's (the Newton solution of ImplicitEuler) for undamped springs, from either
 /// start.
 ///
-/// What else the solver takes implicitly, all of it keeping Q constant (sort_mass_spring_forces
-/// says which forces are which):
+/// Every force declares how it enters (Force::local_global_role, core/force.h): springs
+/// (SpringForce, SpringSetForce, ElasticBodySpringForce with k = α / l0) as above; a force that
+/// declares nothing makes precompute throw Error (kBadInput) naming it, rather than being
+/// treated explicitly without a word. What else the solver takes implicitly, all of it keeping
+/// Q constant:
 /// - spring damping b_s as Laplacian damping (Li, Liu and Kavan, "Laplacian Damping for
 ///   Projective Dynamics", VRIPHYS 2018): the force -b_s (v_i - v_j) acts along every
 ///   direction, not only along the spring as in SpringForce; Q gains Aᵀ diag(b_s/h) A;
@@ -93,9 +96,12 @@ struct LocalGlobalSettings {
 ///   spring's direction. Particles within reach of an obstacle at the start of a step, with a
 ///   margin of twice the distance the old velocity carries them, get the term for the whole
 ///   step and add k to Q's diagonal: Q is refactored (numerically) when that set changes.
-/// Every other force (gravity, constant forces, drag, vortices, Newtonian gravity, the penalty
-/// force between particles and edges) is evaluated once per step at (pⁿ, vⁿ) and held constant
-/// as f_ext: exact for gravity and constant forces, explicit for the rest.
+/// The forces declared explicit (gravity, constant forces, drag, vortices, Newtonian gravity,
+/// the elastic bending and constant-strain-triangle forces, the penalty force between particles
+/// and edges) are evaluated once per step at (pⁿ, vⁿ) and held constant as f_ext: exact for
+/// gravity and constant forces, explicit for the rest, whose stiffness then bounds the stable
+/// time step as in symplectic Euler. (Bending and CST energies are not squared distances to a
+/// projection, so they have no constant matrix to join.)
 template <int D>
 class LocalGlobal final : public Integrator {
  public:

@@ -4,10 +4,10 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string_view>
 
 #include "core/error.h"
-#include "core/forces/drag_spring_force.h"
 
 namespace fosssim {
 
@@ -32,10 +32,9 @@ void QuasiNewton::prepare() {
 
 void QuasiNewton::update_anchors() {
   anchors_.clear();
-  for (const DragSpringForce* drag : split_.anchors) {
-    if (drag->active() && !model().fixed[drag->particle()]) {
-      anchors_.push_back({drag->particle(), drag->stiffness(), drag->target()});
-    }
+  for (const Force* force : split_.anchors) {
+    const std::optional<AnchorTerm> anchor = force->local_global_anchor();
+    if (anchor && !model().fixed[anchor->i]) anchors_.push_back(*anchor);
   }
 }
 

@@ -1,47 +1,51 @@
 #include "core/systems/local_global_system.h"
 
-#include "core/collisions/penalty_force.h"
-#include "core/forces/spring_force.h"
-#include "core/forces/spring_set_force.h"
+#include <string>
+
+#include "core/error.h"
 
 namespace fosssim {
 
-namespace {
-
-/// Appends the springs of `force` when it is made of springs; false otherwise.
-template <int D>
-bool append_springs(const Force& force, std::vector<SpringTerm>& springs) {
-  if (const auto* spring = dynamic_cast<const SpringForce<D>*>(&force)) {
-    springs.push_back(spring->term());
-    return true;
-  }
-  if (const auto* set = dynamic_cast<const SpringSetForce<D>*>(&force)) {
-    springs.insert(springs.end(), set->springs().begin(), set->springs().end());
-    return true;
-  }
-  return false;
-}
-
-}  // namespace
-
 MassSpringForces sort_mass_spring_forces(const ForceSet& forces) {
   MassSpringForces out;
-  const int dim = forces.model().dim;
   for (const Force* force : forces) {
-    const bool spring =
-        dim == 3 ? append_springs<3>(*force, out.springs) : append_springs<2>(*force, out.springs);
-    if (spring) continue;
-    if (const auto* anchor = dynamic_cast<const DragSpringForce*>(force)) {
-      out.anchors.push_back(anchor);
-    } else {
-      out.others.push_back(force);
-      if (dynamic_cast<const PenaltyForce<2>*>(force) != nullptr ||
-          dynamic_cast<const PenaltyForce<3>*>(force) != nullptr) {
+    switch (force->local_global_role()) {
+      case LocalGlobalRole::kSprings:
+        force->append_local_global_springs(out.springs);
+        break;
+      case LocalGlobalRole::kAnchor:
+        out.anchors.push_back(force);
+        break;
+      case LocalGlobalRole::kContact:
+        if (out.contact != nullptr) {
+          throw Error(ErrorKind::kBadInput, "local/global: two contact forces, " +
+                                                out.contact->label() + " and " + force->label() +
+                                                "; it takes one penalty force");
+        }
         out.contact = force;
-      }
+        out.others.push_back(force);
+        break;
+      case LocalGlobalRole::kExplicit:
+        out.others.push_back(force);
+        break;
+      case LocalGlobalRole::kUndeclared:
+        out.undeclared.push_back(force);
+        break;
     }
   }
   return out;
+}
+
+void check_local_global_roles(const MassSpringForces& sorted, std::string_view solver) {
+  if (sorted.undeclared.empty()) return;
+  std::string message = std::string(solver) + ": the force " + sorted.undeclared.front()->label() +
+                        " does not say how it enters the local/global solver (springs, anchor, "
+                        "contact or explicit; Force::local_global_role), so this integrator "
+                        "cannot take it";
+  if (sorted.undeclared.size() > 1) {
+    message += " (nor " + std::to_string(sorted.undeclared.size() - 1) + " other force(s))";
+  }
+  throw Error(ErrorKind::kBadInput, message + "; choose another integrator");
 }
 
 SparseMatrix assemble_local_global_matrix(const Vector& mass, const FreeDofs& free,

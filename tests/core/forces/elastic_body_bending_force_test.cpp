@@ -62,6 +62,23 @@ TEST(ElasticBodyBendingForceTest, MatchesWorkedExampleE2) {
   for (int k = 0; k < 6; ++k) expect_close_bits(F[k], expected[k]);
 }
 
+TEST(ElasticBodyBendingForceTest, ItsElementForPicturesIsTheHingeWithItsAngleAndDensity) {
+  // E2's hinge: θ - θ0 = 1.0121970114513341 - 0.5, density U / L = α (θ - θ0)² / (2 L²).
+  const Vector q = three_points(0.0, 0.0, 1.0, 0.0, 1.5, 0.8);
+  const double L = rest_length(q);
+  const ElasticBodyBendingForce bending(0, 1, 2, 2.0, 0.5, L);
+  std::vector<ForceElement> elements;
+  bending.append_elements(q, elements);
+  ASSERT_EQ(elements.size(), 1u);
+  EXPECT_EQ(elements[0].kind, ForceElement::Kind::kHinge);
+  EXPECT_EQ(elements[0].particles, (std::array<int, 3>{0, 1, 2}));
+  EXPECT_DOUBLE_EQ(elements[0].strain, 1.0121970114513341 - 0.5);
+  double energy = 0.0;
+  const Vector none = Vector::Zero(6);
+  bending.add_energy(ForceInput{q, none, none}, energy);
+  EXPECT_DOUBLE_EQ(elements[0].energy_density, energy / L);
+}
+
 TEST(ElasticBodyBendingForceTest, MatchesWorkedExampleE5WithoutWrapping) {
   const Vector q = three_points(-1.0, 0.0, 0.0, 0.0, -0.9991351502732795, -0.04158066243329049);
   const Vector v = Vector::Zero(6);

@@ -80,6 +80,38 @@ TYPED_TEST(ElasticBodyCstForceTest, RestDataOfARightTriangle) {
   EXPECT_LE(gradient_of(cst, tilted, Vector::Zero(3 * D), Vector::Ones(3 * D)).norm(), 1e-14);
 }
 
+TYPED_TEST(ElasticBodyCstForceTest, ItsElementForPicturesHasThePrincipalStretchAndDensity) {
+  constexpr int D = TypeParam::value;
+  const Vector rest = planar<D>({0, 0, 1, 0, 0, 1});
+  const ElasticBodyCstForce<D> force({0, 1, 2}, 10.0, 0.3, rest_of<D>(rest));
+  std::vector<ForceElement> elements;
+  force.append_elements(rest, elements);
+  ASSERT_EQ(elements.size(), 1u);
+  EXPECT_EQ(elements[0].kind, ForceElement::Kind::kTriangle);
+  EXPECT_EQ(elements[0].particles, (std::array<int, 3>{0, 1, 2}));
+  EXPECT_EQ(elements[0].strain, 0.0);
+  EXPECT_EQ(elements[0].energy_density, 0.0);
+  // Stretched 30% along x and compressed 10% along y, then rotated: principal stretches 1.3
+  // and 0.9, so λ - 1 = 0.3 wins; ε = (0.69, -0.19, 0), U / Ā = E/(2(1-ν²)) (εxx² + 2ν εxx εyy
+  // + εyy²).
+  const Vector stretched = transformed<D>(
+      rest, rotation<D>(0.7) * Vec<D>(Vec<D>::Ones() + Vec<D>::Unit(0) * 0.3 - Vec<D>::Unit(1) * 0.1)
+                                   .asDiagonal(),
+      Vec<D>::Constant(0.25));
+  force.append_elements(stretched, elements);
+  ASSERT_EQ(elements.size(), 2u);
+  EXPECT_NEAR(elements[1].strain, 0.3, 1e-14);
+  const double exx = 0.69, eyy = -0.19;
+  EXPECT_NEAR(elements[1].energy_density,
+              10.0 / (2.0 * (1.0 - 0.09)) * (exx * exx + 0.6 * exx * eyy + eyy * eyy), 1e-13);
+  // Compressed more than stretched: the negative principal value wins.
+  const Vector squeezed = transformed<D>(
+      rest, Vec<D>(Vec<D>::Ones() + Vec<D>::Unit(0) * 0.05 - Vec<D>::Unit(1) * 0.2).asDiagonal(),
+      Vec<D>::Zero());
+  force.append_elements(squeezed, elements);
+  EXPECT_NEAR(elements[2].strain, -0.2, 1e-14);
+}
+
 TYPED_TEST(ElasticBodyCstForceTest, MatchesWorkedExampleE3) {
   constexpr int D = TypeParam::value;
   const CstRest rest = rest_of<D>(planar<D>({0, 0, 1, 0, 0, 1}));
