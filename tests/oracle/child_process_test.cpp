@@ -14,6 +14,7 @@ namespace fosssim {
 namespace {
 
 using testing::TemporaryFolder;
+using testing::write_bytes;
 
 ChildLimits quick_limits(double timeout = 20.0) {
   ChildLimits limits;
