@@ -34,15 +34,21 @@ int run_grading(const Scene& scene, const Options& options) {
                        options.progress_every);
   GradeReport report;
   try {
-    StepGrader grader = StepGrader::open(scene, file);
-    while (grader.grade_next_step()) {
-      progress.update(grader.steps_graded());
-      if (interrupt_requested()) {
-        progress.finish();
-        std::cerr << "FOSSSim: interrupted at step " << grader.steps_graded()
-                  << " of the grading; no report and no residual file were written\n";
-        return kExitInterrupted;
+    StepGrader grader =
+        StepGrader::open(scene, file, std::nullopt, Cancellation(&interrupt_requested));
+    const auto interrupted = [&] {
+      progress.finish();
+      std::cerr << "FOSSSim: interrupted at step " << grader.steps_graded()
+                << " of the grading; no report and no residual file were written\n";
+      return kExitInterrupted;
+    };
+    try {
+      while (grader.grade_next_step()) {
+        progress.update(grader.steps_graded());
+        if (interrupt_requested()) return interrupted();
       }
+    } catch (const StepCancelled&) {
+      return interrupted();  // a signal arrived inside a reference step
     }
     report = grader.report();
   } catch (const Error& error) {

@@ -12,8 +12,17 @@
 
 namespace fosssim {
 
-StepGrader::StepGrader(const Scene& scene, TrajectoryReader& file, const GradingCriteria& criteria)
-    : scene_(&scene), file_(&file), pipeline_(scene.model, scripted_additions(scene)) {
+namespace {
+StepAdditions grading_additions(const Scene& scene, Cancellation cancellation) {
+  StepAdditions additions = scripted_additions(scene);
+  additions.cancellation = cancellation;
+  return additions;
+}
+}  // namespace
+
+StepGrader::StepGrader(const Scene& scene, TrajectoryReader& file, const GradingCriteria& criteria,
+                       Cancellation cancellation)
+    : scene_(&scene), file_(&file), pipeline_(scene.model, grading_additions(scene, cancellation)) {
   pipeline_.set_health_check(false);
   report_.criteria = criteria;
   report_.steps = scene.model.num_steps();
@@ -71,7 +80,8 @@ std::string why_frames_differ(const Scene& scene, TrajectoryReader& file) {
 }  // namespace
 
 StepGrader StepGrader::open(const Scene& scene, TrajectoryReader& file,
-                            const std::optional<GradingCriteria>& criteria) {
+                            const std::optional<GradingCriteria>& criteria,
+                            Cancellation cancellation) {
   const std::int64_t steps = scene.model.num_steps();
   if (file.num_frames() != steps + 1) {
     throw Error(ErrorKind::kBadInput, "the trajectory has " + std::to_string(file.num_frames()) +
@@ -80,7 +90,7 @@ StepGrader StepGrader::open(const Scene& scene, TrajectoryReader& file,
                                           " (the initial state and one frame per step)" +
                                           why_frames_differ(scene, file));
   }
-  return StepGrader(scene, file, criteria ? *criteria : criteria_for(scene));
+  return StepGrader(scene, file, criteria ? *criteria : criteria_for(scene), cancellation);
 }
 
 bool StepGrader::finished() const {

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/scene.h"
+#include "core/step/cancellation.h"
 #include "core/step/step_pipeline.h"
 #include "grading/grader.h"
 #include "io/trajectory_file.h"
@@ -32,8 +33,11 @@ class StepGrader {
   /// Starts grading. `scene` and `file` must outlive the grader. Throws Error (kBadInput) when
   /// the file does not hold exactly num_steps() + 1 frames (the message does not name the file).
   /// Without `criteria`, grades with those of the scene's course program (criteria_for).
+  /// `cancellation` lets the caller end a reference step in progress: grade_next_step() then
+  /// throws StepCancelled (core/step/cancellation.h).
   static StepGrader open(const Scene& scene, TrajectoryReader& file,
-                         const std::optional<GradingCriteria>& criteria = std::nullopt);
+                         const std::optional<GradingCriteria>& criteria = std::nullopt,
+                         Cancellation cancellation = {});
 
   /// Grades the next step. Returns false, grading nothing, once every step is graded or the
   /// reference integrator has failed (report().reference_failure says why).
@@ -54,7 +58,8 @@ class StepGrader {
   const std::vector<double>& velocity_residuals() const { return velocity_residuals_; }
 
  private:
-  StepGrader(const Scene& scene, TrajectoryReader& file, const GradingCriteria& criteria);
+  StepGrader(const Scene& scene, TrajectoryReader& file, const GradingCriteria& criteria,
+             Cancellation cancellation);
   void compare(const State& reference, const Vector& previous_q, const Vector& previous_v);
   /// Adds one step's residuals to the report's criteria.
   void accumulate(const StepResidual& residual);

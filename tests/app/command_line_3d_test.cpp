@@ -256,4 +256,34 @@ TEST_F(CommandLine3D, SigtermEndsARunInsideAStepThatWouldTakeMinutes) {
   EXPECT_TRUE(std::filesystem::exists(path("out.bin.incomplete")));
 }
 
+// The same inside grading (-i): the reference step restarted from the file's frame is a million
+// local/global iterations; SIGTERM must end the grading within 2 s with no report.
+TEST_F(CommandLine3D, SigtermEndsAGradingInsideAReferenceStep) {
+  const std::string cloth =
+      R"(<generate type="cloth" nx="40" ny="40" plane="xz" pin="corners" k="1000" m="0.001"/>
+  <simplegravity fx="0" fy="-9.8" fz="0"/>
+</scene>)";
+  write("short.xml", R"(<scene dim="3">
+  <duration time="0.02"/>
+  <integrator type="local-global" dt="0.01" iterations="1"/>
+  )" + cloth);
+  write("long.xml", R"(<scene dim="3">
+  <duration time="0.02"/>
+  <integrator type="local-global" dt="0.01" iterations="1000000" tolerance="0"/>
+  )" + cloth);
+  const ProgramResult written =
+      run(kFosssim + " -s " + path("short.xml") + " -d 0 -q -o " + path("short.bin"));
+  ASSERT_EQ(written.status, 0) << written.output();
+  const ProgramResult result =
+      run(kFosssim + " -s " + path("long.xml") + " -d 0 -q -i " + path("short.bin") +
+          " & pid=$!; sleep 1; start=$(date +%s%N); kill -s TERM $pid; wait $pid; "
+          "status=$?; echo \"ms $(( ($(date +%s%N) - start) / 1000000 ))\"; exit $status");
+  EXPECT_EQ(result.status, 130) << result.output();
+  EXPECT_NE(result.err.find("FOSSSim: interrupted at step 0 of the grading"), std::string::npos)
+      << result.err;
+  const std::size_t at = result.out.find("ms ");
+  ASSERT_NE(at, std::string::npos) << result.output();
+  EXPECT_LT(std::stol(result.out.substr(at + 3)), 2000) << result.output();
+}
+
 }  // namespace
