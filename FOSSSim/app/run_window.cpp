@@ -32,7 +32,7 @@ WindowSettings window_settings(const Scene& scene, const Options& options) {
 int run_simulation_window(const Scene& scene, const Options& options) {
   FrameOutputs outputs = FrameOutputs::open(scene, options);
   ParticleGrab grab(scene);
-  SimulationStepper stepper(scene, {&grab.force()});
+  SimulationStepper stepper(scene, {&grab.force()}, Cancellation(&interrupt_requested));
   SceneView view(scene, stepper.state(), options.width, options.height);
   view.set_element_colors(element_colors(options));
   int status = kExitOk;
@@ -97,7 +97,8 @@ int run_grading_window(const Scene& scene, const Options& options) {
   TrajectoryReader file = open_trajectory(options.input, scene.model);
   GradingStepper stepper = [&] {
     try {
-      return GradingStepper(StepGrader::open(scene, file));
+      return GradingStepper(
+          StepGrader::open(scene, file, std::nullopt, Cancellation(&interrupt_requested)));
     } catch (const Error& error) {
       throw Error(error.kind(), options.input + ": " + error.what());
     }

@@ -9,17 +9,20 @@
 namespace fosssim {
 
 namespace {
-StepAdditions window_additions(const Scene& scene, std::vector<const Force*> interaction_forces) {
+StepAdditions window_additions(const Scene& scene, std::vector<const Force*> interaction_forces,
+                               Cancellation cancellation) {
   StepAdditions additions = scripted_additions(scene);
   additions.interaction_forces = std::move(interaction_forces);
+  additions.cancellation = cancellation;
   return additions;
 }
 }  // namespace
 
 SimulationStepper::SimulationStepper(const Scene& scene,
-                                     std::vector<const Force*> interaction_forces)
+                                     std::vector<const Force*> interaction_forces,
+                                     Cancellation cancellation)
     : simulation_(scene.model, scene.initial,
-                  window_additions(scene, std::move(interaction_forces))) {}
+                  window_additions(scene, std::move(interaction_forces), cancellation)) {}
 
 void GradingStepper::step() {
   if (grader_.grade_next_step()) return;

@@ -29,8 +29,10 @@ class Stepper {
 /// plus the window's interaction forces (the drag spring of ParticleGrab).
 class SimulationStepper final : public Stepper {
  public:
-  /// The scene and the interaction forces must outlive the stepper.
-  explicit SimulationStepper(const Scene& scene, std::vector<const Force*> interaction_forces = {});
+  /// The scene and the interaction forces must outlive the stepper. `cancellation` lets the
+  /// caller end a step in progress (step() then throws StepCancelled).
+  explicit SimulationStepper(const Scene& scene, std::vector<const Force*> interaction_forces = {},
+                             Cancellation cancellation = {});
   const State& state() const override { return simulation_.state(); }
   bool finished() const override { return simulation_.finished(); }
   void step() override { simulation_.step(); }

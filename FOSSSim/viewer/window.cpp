@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/step/cancellation.h"
 #include "pictures/cairo_painter.h"
 #include "viewer/controls.h"
 #include "viewer/mouse_control.h"
@@ -54,7 +55,7 @@ class Window {
   WindowOutcome outcome() const { return {finished_, failed_}; }
 
  private:
-  bool can_step() const { return !finished_ && !failed_; }
+  bool can_step() const { return !finished_ && !failed_ && !cancelled_; }
   void step_once();
   void set_paused(bool paused);
   std::vector<std::string> status() const;
@@ -68,7 +69,7 @@ class Window {
   Throttle throttle_;
   MouseControl mouse_;
   bool paused_;
-  bool finished_ = false, failed_ = false;
+  bool finished_ = false, failed_ = false, cancelled_ = false;
 };
 
 Window* g_window = nullptr;
@@ -79,6 +80,12 @@ void Window::step_once() {
   } catch (const StepError& error) {
     failed_ = true;
     if (events_.failed) events_.failed(error);
+    return;
+  } catch (const StepCancelled&) {
+    // The caller asked a step in progress to stop (a signal): the step is abandoned unseen and
+    // the window closes as it does when stop_requested says so between frames.
+    cancelled_ = true;
+    glutLeaveMainLoop();
     return;
   }
   view_.record(stepper_.state());
