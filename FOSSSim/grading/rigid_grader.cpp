@@ -22,8 +22,7 @@ bool close(double a, double b, double limit) { return std::abs(a - b) < limit; }
 class RigidGrader {
  public:
   RigidGrader(const Scene& scene, const std::string& path, const RigidGradingCriteria& criteria)
-      : scene_(scene),
-        model_(scene.model),
+      : model_(scene.model),
         bodies_(model_.num_particles()),
         file_(RigidTrajectoryReader::open(path, bodies_, model_.num_steps())),
         forces_(model_),
@@ -111,7 +110,6 @@ class RigidGrader {
     if (failed && report_.first_failing_step == 0) report_.first_failing_step = step;
   }
 
-  const Scene& scene_;
   const SceneModel& model_;
   int bodies_;
   RigidTrajectoryReader file_;
