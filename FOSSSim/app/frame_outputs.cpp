@@ -34,6 +34,16 @@ const Image& Frame::image() {
 
 namespace {
 
+/// What an abandoned trajectory output kept: `kept` is where its frames are now (the writer's
+/// abandon(): empty when nothing was written, `path` itself for a device or FIFO).
+std::string trajectory_kept_note(const std::string& kept, const std::string& path,
+                                 std::int64_t frames) {
+  if (kept.empty()) return path + " was not written";
+  if (kept == path) return "";  // a device or FIFO: the frames went there
+  return "the " + std::to_string(frames) + " frames computed so far are in " + kept + " (" + path +
+         " was not written)";
+}
+
 /// -o: the trajectory file (docs/command-line.md, 'Trajectory files'), in the layout of the
 /// scene's collision method (docs/collisions.md): continuous-time and hybrid steps write their
 /// sync record, then their end-of-step record.
@@ -50,11 +60,7 @@ class TrajectoryOutput final : public FrameOutput {
     return "the trajectory " + writer_.path() + " (" + std::to_string(frames_) + " frames)";
   }
   std::string abandon() override {
-    const std::string kept = writer_.abandon();
-    if (kept.empty()) return writer_.path() + " was not written";
-    if (kept == writer_.path()) return "";  // a device or FIFO: the frames went there
-    return "the " + std::to_string(frames_) + " frames computed so far are in " + kept + " (" +
-           writer_.path() + " was not written)";
+    return trajectory_kept_note(writer_.abandon(), writer_.path(), frames_);
   }
 
  private:
@@ -77,11 +83,7 @@ class RigidTrajectoryOutput final : public FrameOutput {
     return "the trajectory " + writer_.path() + " (" + std::to_string(frames_) + " frames)";
   }
   std::string abandon() override {
-    const std::string kept = writer_.abandon();
-    if (kept.empty()) return writer_.path() + " was not written";
-    if (kept == writer_.path()) return "";
-    return "the " + std::to_string(frames_) + " frames computed so far are in " + kept + " (" +
-           writer_.path() + " was not written)";
+    return trajectory_kept_note(writer_.abandon(), writer_.path(), frames_);
   }
 
  private:
