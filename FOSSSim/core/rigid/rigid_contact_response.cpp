@@ -223,7 +223,7 @@ void apply_inelastic_response(ContactSolver solver, const RigidBodies& bodies, c
 
 void apply_generalized_reflections(ContactSolver solver, const RigidBodies& bodies, const Vector& q,
                                    const std::vector<RigidContact>& contacts, int max_reflections,
-                                   Vector& v, ContactReport& report) {
+                                   Vector& v, ContactReport& report, Cancellation cancellation) {
   check_normals(bodies, contacts);
   std::vector<ContactColumn> columns;
   for (const RigidContact& c : contacts) columns.push_back(contact_column(bodies, q, c));
@@ -247,6 +247,7 @@ void apply_generalized_reflections(ContactSolver solver, const RigidBodies& bodi
                  "if the scene needs more";
       throw SolverFailure(message.str());
     }
+    cancellation.check();
     ++report.reflections;
     Vector inelastic = v;
     apply_inelastic_response(solver, bodies, q, approaching, inelastic, report);

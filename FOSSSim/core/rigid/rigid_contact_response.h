@@ -8,6 +8,7 @@
 
 #include "core/rigid/contact_lcp.h"
 #include "core/rigid/rigid_contact_detection.h"
+#include "core/step/cancellation.h"
 
 namespace fosssim {
 
@@ -61,10 +62,11 @@ void apply_inelastic_response(ContactSolver solver, const RigidBodies& bodies, c
 /// Generalized reflections (Smith, Kaufman, Vouga, Tamstorf, Grinspun 2012, Algorithm 2, fully
 /// elastic): while some contact approaches (η·q̇ < −1e-14 over the free bodies), solve the
 /// inelastic problem on the approaching contacts only, giving q̇*, and reflect q̇ ← 2q̇* − q̇.
-/// Throws SolverFailure after `max_reflections` solves.
+/// Throws SolverFailure after `max_reflections` solves; asks `cancellation` once per reflection.
 void apply_generalized_reflections(ContactSolver solver, const RigidBodies& bodies, const Vector& q,
                                    const std::vector<RigidContact>& contacts, int max_reflections,
-                                   Vector& v, ContactReport& report);
+                                   Vector& v, ContactReport& report,
+                                   Cancellation cancellation = {});
 
 /// The course's threshold of an approaching contact in generalized reflections.
 inline constexpr double kReflectionThreshold = -1e-14;

@@ -21,7 +21,8 @@ void RigidContactStage::apply(const StepContext& context, State& state) {
   if (contacts.empty()) return;
   if (method_->generalized_reflections) {
     apply_generalized_reflections(method_->solver, bodies, state.q, contacts,
-                                  settings_.max_reflections, state.v, report_);
+                                  settings_.max_reflections, state.v, report_,
+                                  context.cancellation);
   } else {
     apply_inelastic_response(method_->solver, bodies, state.q, contacts, state.v, report_);
   }
