@@ -297,6 +297,13 @@ class RigidBodySceneReader {
       if (limit < 1) r.fail("maxreflections", "must be at least 1, found " + std::to_string(limit));
       settings.max_reflections = limit;
     }
+    if (r.has("maxgroupcontacts")) {
+      const int limit = r.integer("maxgroupcontacts");
+      if (limit < 1) {
+        r.fail("maxgroupcontacts", "must be at least 1, found " + std::to_string(limit));
+      }
+      settings.max_group_contacts = limit;
+    }
     for (int b = 0; b < bodies.size(); ++b) {
       const RigidBody& body = bodies.bodies[b];
       if (!body.fixed || (body.reported_velocity == Vec2::Zero() && body.reported_omega == 0.0)) {

@@ -139,7 +139,7 @@ double contact_normal_velocity(const RigidBodies& bodies, const Vector& q, const
 
 void apply_inelastic_response(ContactSolver solver, const RigidBodies& bodies, const Vector& q,
                               const std::vector<RigidContact>& contacts, Vector& v,
-                              ContactReport& report) {
+                              ContactReport& report, int max_group_contacts) {
   check_normals(bodies, contacts);
   const int nb = bodies.size();
   // Groups: free bodies joined by contacts; a contact belongs to its free bodies' group.
@@ -172,6 +172,14 @@ void apply_inelastic_response(ContactSolver solver, const RigidBodies& bodies, c
   for (const std::vector<int>& group : groups) {
     ++report.groups;
     const int m = static_cast<int>(group.size());
+    if (m > max_group_contacts) {
+      std::ostringstream message;
+      message << "rigid-body contact: " << m << " contacts form one group (bodies touching each "
+              << "other in a chain or pile), more than the limit of " << max_group_contacts
+              << " (its dense matrices would hold " << m << "² doubles); raise "
+              << "maxgroupcontacts=\"...\" of <rigidbodycollisionhandling> to solve it";
+      throw SolverFailure(message.str());
+    }
     std::vector<const RigidContact*> members;
     std::vector<const ContactColumn*> member_columns;
     for (int c : group) {
@@ -223,7 +231,8 @@ void apply_inelastic_response(ContactSolver solver, const RigidBodies& bodies, c
 
 void apply_generalized_reflections(ContactSolver solver, const RigidBodies& bodies, const Vector& q,
                                    const std::vector<RigidContact>& contacts, int max_reflections,
-                                   Vector& v, ContactReport& report, Cancellation cancellation) {
+                                   Vector& v, ContactReport& report, Cancellation cancellation,
+                                   int max_group_contacts) {
   check_normals(bodies, contacts);
   std::vector<ContactColumn> columns;
   for (const RigidContact& c : contacts) columns.push_back(contact_column(bodies, q, c));
@@ -250,7 +259,7 @@ void apply_generalized_reflections(ContactSolver solver, const RigidBodies& bodi
     cancellation.check();
     ++report.reflections;
     Vector inelastic = v;
-    apply_inelastic_response(solver, bodies, q, approaching, inelastic, report);
+    apply_inelastic_response(solver, bodies, q, approaching, inelastic, report, max_group_contacts);
     for (int b = 0; b < bodies.size(); ++b) {
       if (bodies.bodies[b].fixed) continue;
       v.segment<3>(3 * b) = 2.0 * inelastic.segment<3>(3 * b) - v.segment<3>(3 * b);

@@ -8,6 +8,7 @@
 
 #include "core/rigid/contact_lcp.h"
 #include "core/rigid/rigid_contact_detection.h"
+#include "core/rigid/rigid_contact_settings.h"
 #include "core/step/cancellation.h"
 
 namespace fosssim {
@@ -55,18 +56,22 @@ ContactProblem assemble_contact_problem(ContactSolver solver, const RigidBodies&
 /// change any velocity). LCP: ODE's Dantzig solver on each group whose A is not degenerate,
 /// checked; a degenerate group, or one whose answer fails the check, gets the exact QP's answer
 /// (the same velocities any valid impulse gives), counted in report.fallbacks.
-void apply_inelastic_response(ContactSolver solver, const RigidBodies& bodies, const Vector& q,
-                              const std::vector<RigidContact>& contacts, Vector& v,
-                              ContactReport& report);
+/// A group of more than `max_group_contacts` contacts (its dense A alone holds their square of
+/// doubles) is refused with SolverFailure (RigidContactSettings::max_group_contacts).
+void apply_inelastic_response(
+    ContactSolver solver, const RigidBodies& bodies, const Vector& q,
+    const std::vector<RigidContact>& contacts, Vector& v, ContactReport& report,
+    int max_group_contacts = RigidContactSettings::kDefaultMaxGroupContacts);
 
 /// Generalized reflections (Smith, Kaufman, Vouga, Tamstorf, Grinspun 2012, Algorithm 2, fully
 /// elastic): while some contact approaches (η·q̇ < −1e-14 over the free bodies), solve the
 /// inelastic problem on the approaching contacts only, giving q̇*, and reflect q̇ ← 2q̇* − q̇.
 /// Throws SolverFailure after `max_reflections` solves; asks `cancellation` once per reflection.
-void apply_generalized_reflections(ContactSolver solver, const RigidBodies& bodies, const Vector& q,
-                                   const std::vector<RigidContact>& contacts, int max_reflections,
-                                   Vector& v, ContactReport& report,
-                                   Cancellation cancellation = {});
+void apply_generalized_reflections(
+    ContactSolver solver, const RigidBodies& bodies, const Vector& q,
+    const std::vector<RigidContact>& contacts, int max_reflections, Vector& v,
+    ContactReport& report, Cancellation cancellation = {},
+    int max_group_contacts = RigidContactSettings::kDefaultMaxGroupContacts);
 
 /// The course's threshold of an approaching contact in generalized reflections.
 inline constexpr double kReflectionThreshold = -1e-14;

@@ -13,6 +13,11 @@ struct RigidContactSettings {
   /// own attribute maxreflections="..." raises it.
   static constexpr int kDefaultMaxReflections = 10000;
   int max_reflections = kDefaultMaxReflections;
+  /// The most contacts one group (bodies linked by contacts) may hold: its problem is dense (A
+  /// has their square of doubles: 32 MB at the default). FOSSSim's own attribute
+  /// maxgroupcontacts="..." raises it.
+  static constexpr int kDefaultMaxGroupContacts = 2000;
+  int max_group_contacts = kDefaultMaxGroupContacts;
 };
 
 }  // namespace fosssim

@@ -21,10 +21,11 @@ void RigidContactStage::apply(const StepContext& context, State& state) {
   if (contacts.empty()) return;
   if (method_->generalized_reflections) {
     apply_generalized_reflections(method_->solver, bodies, state.q, contacts,
-                                  settings_.max_reflections, state.v, report_,
-                                  context.cancellation);
+                                  settings_.max_reflections, state.v, report_, context.cancellation,
+                                  settings_.max_group_contacts);
   } else {
-    apply_inelastic_response(method_->solver, bodies, state.q, contacts, state.v, report_);
+    apply_inelastic_response(method_->solver, bodies, state.q, contacts, state.v, report_,
+                             settings_.max_group_contacts);
   }
   context.cancellation.check();
   if (report_.fallbacks > 0 && !warned_) {

@@ -252,6 +252,20 @@ TEST(RigidContactScene, GeneralizedReflectionsOnAMovingFixedFloorStopAtTheLimit)
   EXPECT_NE(message.find("step 1"), std::string::npos) << message;
 }
 
+TEST(RigidContactScene, AGroupOfMoreContactsThanTheLimitFailsClearly) {
+  // Example C's box lands with two contacts: a limit of one refuses the step.
+  const Scene scene = load_scene_text(
+      with_response(kTiltedBox, R"(<rigidbodycollisionhandling detection="all-pairs" )"
+                                R"(response="lcp" maxgroupcontacts="1"/>)"),
+      "contact.xml");
+  EXPECT_EQ(scene.model.rigid_bodies->contact.max_group_contacts, 1);
+  Simulation simulation(scene.model, scene.initial);
+  const StepError error = thrown_by<StepError>([&] { simulation.step(); });
+  EXPECT_NE(std::string(error.what()).find("2 contacts form one group"), std::string::npos)
+      << error.what();
+  EXPECT_NE(std::string(error.what()).find("maxgroupcontacts"), std::string::npos);
+}
+
 std::string error_of(const std::string& handling) {
   const std::string text = with_response(kTiltedBox, handling);
   return thrown_by<SceneError>([&] { load_scene_text(text, "contact.xml"); }).what();
@@ -279,6 +293,8 @@ TEST(RigidContactScene, MalformedCollisionHandlingIsRefusedWithTheCoursesMessage
        "attribute \"maxreflections\" must be at least 1, found 0"},
       {R"(<rigidbodycollisionhandling detection="all-pairs" response="gr-lcp" maxreflections="x"/>)",
        "maxreflections"},
+      {R"(<rigidbodycollisionhandling detection="all-pairs" response="lcp" maxgroupcontacts="0"/>)",
+       "attribute \"maxgroupcontacts\" must be at least 1, found 0"},
   };
   for (const Case& c : cases) {
     const std::string message = error_of(c.element);
