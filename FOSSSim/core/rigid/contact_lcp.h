@@ -20,7 +20,7 @@ struct ContactProblem {
   Eigen::MatrixXd A;
   Vector b;
   /// M^(−1/2)N: the columns in the kinetic metric (so A = JᵀJ), over the free coordinates of
-  /// the group; solve_contact_qp finds its directions from them, by orthogonal factorizations.
+  /// the group; solve_contact_qp finds its directions from them.
   Eigen::MatrixXd J;
 };
 
@@ -57,11 +57,13 @@ ContactSolveResult solve_contact_lcp_dantzig(const ContactProblem& problem);
 /// adds the most violated contact (w_p < −tol) and moves λ along the direction that keeps the
 /// active contacts at w = 0, dropping an active contact whose multiplier would turn negative;
 /// a contact whose column depends on the active ones is reached by drops alone, so redundant
-/// contacts are handled. The directions come from a Householder QR factorization (Eigen) of the
-/// active columns of J, as QuadProg++ keeps its factorization, accurate however ill-conditioned
-/// A is. Exact to round-off and finite; after `max_iterations` additions and drops, or when a
-/// contact cannot be met (only possible when b holds fixed bodies' velocities that no free
-/// velocity can make up for), throws SolverFailure.
+/// contacts are handled. The directions come from the triangular factor R of a QR factorization
+/// of the active columns of J (sparse), updated as contacts join (corrected semi-normal
+/// equations: a solve and one correction) and leave (Givens rotations), as QuadProg++ updates
+/// its factorization: accurate however ill-conditioned A is, O(s²) per change for s active
+/// contacts. w is computed from J; A is not used. Exact to round-off and finite; after
+/// `max_iterations` additions and drops, or when a contact cannot be met (only possible when b
+/// holds fixed bodies' velocities that no free velocity can make up for), throws SolverFailure.
 Vector solve_contact_qp(const ContactProblem& problem, int max_iterations);
 
 /// The iteration limit solve_contact_qp is given for a problem of n contacts: 100 + 20 n.
