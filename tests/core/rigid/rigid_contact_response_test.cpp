@@ -283,3 +283,42 @@ TEST(RigidContactResponse, AFreeBodyExactlyTouchingFailsClearly) {
 
 }  // namespace
 }  // namespace fosssim::testing
+
+namespace fosssim::testing {
+namespace {
+
+TEST(ContactLcp, NearlyRedundantProblemsAreSolvedOrCaught) {
+  // Columns that almost repeat others (by 1e-3 to 1e-6): A is definite but ill-conditioned.
+  // Dantzig's method gets them (is_degenerate says no) and must end; its answer is either valid
+  // or caught by the check, and the response's answer (Dantzig's or the QP's) is always valid.
+  Random random(21);
+  int dantzig_valid = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const int dofs = 3 + random.index(6);
+    const int base = 1 + random.index(dofs - 1);
+    Eigen::MatrixXd N(dofs, base + random.index(dofs - base + 1));
+    for (int j = 0; j < N.cols(); ++j) {
+      if (j < base) {
+        for (int i = 0; i < dofs; ++i) N(i, j) = random.uniform(-1, 1);
+      } else {
+        const double eps = std::pow(10.0, -3 - random.index(4));
+        N.col(j) = N.col(random.index(base)) + eps * random.uniform_vector(dofs, -1, 1);
+      }
+    }
+    const Vector inverse_mass = random.uniform_vector(dofs, 0.2, 3.0);
+    ContactProblem problem;
+    problem.J = inverse_mass.cwiseSqrt().asDiagonal() * N;
+    problem.A = N.transpose() * inverse_mass.asDiagonal() * N;
+    problem.b = N.transpose() * random.uniform_vector(dofs, -2, 1);
+    if (is_degenerate(problem.A)) continue;
+    const ContactSolveResult dantzig = solve_contact_lcp_dantzig(problem);
+    dantzig_valid += dantzig.valid;
+    const Vector qp = solve_contact_qp(problem, contact_qp_iteration_limit(N.cols()));
+    std::string why;
+    EXPECT_TRUE(check_contact_solution(problem, qp, &why)) << "trial " << trial << ": " << why;
+  }
+  EXPECT_GT(dantzig_valid, 100);
+}
+
+}  // namespace
+}  // namespace fosssim::testing
