@@ -290,7 +290,7 @@ void check_picture_options(Options& options) {
   for (const OutputRequest& request : output_requests(options)) {
     const OutputFormat& format = *request.format;
     if (!format.needs.with_grading && !options.input.empty()) {
-      fail(join_names(run_only) + " picture a run; they cannot be combined with grading (-i)");
+      fail(join_names(run_only) + " describe a run; they cannot be combined with grading (-i)");
     }
   }
   for (const OutputRequest& request : output_requests(options)) {

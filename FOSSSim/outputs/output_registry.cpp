@@ -7,6 +7,7 @@
 #include "outputs/energy_plot_output.h"
 #include "outputs/movie_output.h"
 #include "outputs/picture_sequence_output.h"
+#include "outputs/stats_json_output.h"
 #include "outputs/trajectory_output.h"
 
 namespace fosssim {
@@ -16,6 +17,7 @@ namespace {
 const std::array kFormats = {
     &kTrajectoryOutput, &kPngSequenceOutput,  &kSvgSequenceOutput,
     &kMovieOutput,      &kEnergyPlotOutput,   &kEnergyCsvOutput,
+    &kStatsJsonOutput,
 };
 }  // namespace
 
