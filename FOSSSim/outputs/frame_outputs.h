@@ -10,12 +10,17 @@
 
 namespace fosssim {
 
+/// Throws Error (kBadInput) naming the option when `format` cannot be written for `scene`
+/// (OutputNeeds: its dimension, particles or rigid bodies), before anything is opened.
+void check_needs(const OutputFormat& format, const Scene& scene);
+
 /// The outputs a run writes, in registry order.
 class FrameOutputs {
  public:
   FrameOutputs() = default;
-  /// Opens every output of `requests` for a run of `scene`. Throws Error (kCannotWrite): an
-  /// unwritable file or folder, no ffmpeg for --movie.
+  /// Opens every output of `requests` for a run of `scene`, after check_needs() of each.
+  /// Throws Error: kBadInput from check_needs; kCannotWrite for an unwritable file or folder,
+  /// no ffmpeg for --movie.
   static FrameOutputs open(const Scene& scene, std::span<const OutputRequest> requests,
                            const OutputSettings& settings);
 

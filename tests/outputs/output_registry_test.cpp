@@ -149,6 +149,32 @@ TEST(OutputRegistry, DocumentedInCommandLineAndArchitecture) {
   EXPECT_NE(architecture.find("outputs/output_registry.cpp"), std::string::npos);
 }
 
+// What a format says it needs is checked before anything is opened: a format for 3D scenes
+// only is refused on a 2D scene, naming its option, and writes nothing.
+TEST(OutputRegistry, WhatAFormatNeedsIsCheckedBeforeOpening) {
+  static bool opened = false;
+  OutputFormat only_3d = *find_output_format("energy-csv");
+  only_3d.flags = "--only-3d";
+  only_3d.needs.runs_2d = false;
+  only_3d.open = [](const std::string&, const OutputContext&) -> std::unique_ptr<FrameOutput> {
+    opened = true;
+    return nullptr;
+  };
+  const Scene scene = testing::tiny_scene();  // 2D, particles
+  const std::vector<OutputRequest> requests = {{&only_3d, "x.csv"}};
+  try {
+    FrameOutputs::open(scene, requests, OutputSettings{});
+    ADD_FAILURE() << "a 3D-only output was opened for a 2D scene";
+  } catch (const Error& error) {
+    EXPECT_EQ(error.kind(), ErrorKind::kBadInput);
+    EXPECT_EQ(std::string(error.what()), "--only-3d cannot be written for 2D scenes (tiny.xml)");
+  }
+  EXPECT_FALSE(opened);
+  OutputFormat no_rigid = only_3d;
+  no_rigid.needs = {.rigid_bodies = false};
+  EXPECT_NO_THROW(check_needs(no_rigid, scene)) << "the tiny scene has particles";
+}
+
 /// Runs the tiny scene to its end (or `abandon_after` steps) feeding one output of `format` at
 /// `destination`; returns the note abandon() gave ("" after a completed run).
 std::string run_tiny(const OutputFormat& format, const std::string& destination,
