@@ -65,66 +65,6 @@ std::vector<Eigen::Vector2d> read_corners(ElementReader& r, std::int64_t max_cor
   return corners;
 }
 
-/// Reads the OBJ file named by `file`: planar triangles only, each problem named with the OBJ
-/// file and line and, in parentheses, the element that asked for it.
-ElasticShape read_obj_shape(ElementReader& r, const std::string& scene_file, InputFiles& files) {
-  std::filesystem::path path(r.text("file"));
-  if (path.is_relative()) path = std::filesystem::path(scene_file).parent_path() / path;
-  const std::string name = path.string();
-  const std::string context = "the mesh of " + scene_file + ":" + std::to_string(r.line());
-  ObjLines lines;
-  Mesh mesh;
-  try {
-    mesh = read_obj_text(files.read(name), name, files.limits().max_face_corners, true, &lines);
-  } catch (const SceneError& e) {
-    throw SceneError(e.file(), e.line(), e.element(), e.problem() + " (" + context + ")");
-  }
-  const auto fail = [&](int line, const std::string& problem) {
-    throw SceneError(name, line, "", problem + " (" + context + ")");
-  };
-  const std::int64_t limit = files.limits().max_particles;
-  if (mesh.num_vertices() > limit) {
-    fail(0, "the file has " + std::to_string(mesh.num_vertices()) + " vertices, " +
-                over_limit(limit, "particles", "--max-particles"));
-  }
-  std::vector<Eigen::Vector2d> vertices;
-  for (int v = 0; v < mesh.num_vertices(); ++v) {
-    if (mesh.vertices[v].z() != 0.0) {
-      fail(lines.vertices[v], "vertex " + std::to_string(v + 1) + " has z = " +
-                                  to_text(mesh.vertices[v].z()) +
-                                  ": an elastic body is planar (z must be 0 or absent)");
-    }
-    vertices.push_back(mesh.vertices[v].head<2>());
-  }
-  if (!mesh.segments.empty()) {
-    fail(lines.segments[0],
-         "a polyline or a face of 2 corners: an elastic body's mesh holds triangles only");
-  }
-  if (mesh.faces.empty()) fail(0, "the file has no faces: an elastic body needs triangles");
-  std::vector<std::array<int, 3>> triangles;
-  std::vector<int> first_use(vertices.size(), -1);
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    const auto& face = mesh.faces[f];
-    if (face.size() != 3) {
-      fail(lines.faces[f], "a face of " + std::to_string(face.size()) +
-                               " corners: an elastic body's mesh holds triangles only");
-    }
-    if (orientation(vertices[face[0]], vertices[face[1]], vertices[face[2]]) == 0.0)
-      fail(lines.faces[f], "the triangle has zero area (its corners are collinear)");
-    triangles.push_back({face[0], face[1], face[2]});
-  }
-  std::vector<char> used(vertices.size(), 0);
-  for (const auto& t : triangles)
-    for (const int v : t) used[v] = 1;
-  for (std::size_t v = 0; v < used.size(); ++v) {
-    if (!used[v]) {
-      fail(lines.vertices[v], "vertex " + std::to_string(v + 1) +
-                                  " is on no triangle: it would have no mass and no force");
-    }
-  }
-  return make_triangle_shape(std::move(vertices), triangles);
-}
-
 /// The body's shape from the attributes of its kind.
 ElasticShape read_shape(ElementReader& r, const std::string& shape, const std::string& file,
                         InputFiles& files, std::int64_t max_vertices) {
@@ -160,7 +100,12 @@ ElasticShape read_shape(ElementReader& r, const std::string& shape, const std::s
       const auto corners = read_corners(r, max_corners);
       return make_polygon(corners, positive_or(r, "spacing", 0.0), max_vertices, max_corners);
     }
-    if (shape == "obj") return read_obj_shape(r, file, files);
+    if (shape == "obj") {
+      std::filesystem::path path(r.text("file"));
+      if (path.is_relative()) path = std::filesystem::path(file).parent_path() / path;
+      return read_elastic_obj(path.string(), files,
+                              "the mesh of " + file + ":" + std::to_string(r.line()));
+    }
   } catch (const SceneError&) {
     throw;
   } catch (const Error& error) {
@@ -275,6 +220,38 @@ class DeclaredParameters final : public ForceParameters {
   std::set<std::string>& warned_;
 };
 
+/// The body an <elasticbody> describes, its vertices to become particles first, first + 1, ...
+ElasticBodyDescription read_description(ElementReader& r, const std::string& file,
+                                        InputFiles& files, int first) {
+  const std::int64_t max_particles = files.limits().max_particles;
+  ElasticBodyDescription body;
+  const std::string shape_name = r.text("shape");
+  body.shape = read_shape(r, shape_name, file, files, max_particles);
+  const ElasticShape& shape = body.shape;
+  if (std::int64_t{first} + shape.num_vertices() > max_particles) {
+    r.fail("its " + std::to_string(shape.num_vertices()) + " vertices bring the scene to " +
+           std::to_string(std::int64_t{first} + shape.num_vertices()) + " particles, " +
+           over_limit(max_particles, "particles", "--max-particles"));
+  }
+  body.material = read_material(r, shape);
+  const ElasticMass mass = read_mass(r);
+  const ElasticFixing fixing = read_fixing(r, shape);
+  ElasticPlacement placement;
+  placement.origin = {r.number_or("x", 0.0), r.number_or("y", 0.0)};
+  placement.rotation_degrees = r.number_or("rotation", 0.0);
+  placement.velocity = {r.number_or("vx", 0.0), r.number_or("vy", 0.0)};
+  body.radius = r.non_negative_or("particleradius", SceneModel::kDefaultParticleRadius);
+  try {
+    body.particles = make_elastic_particles(shape, placement, mass, fixing);
+  } catch (const Error& error) {
+    r.fail(error.what());
+  }
+  for (const auto& x : body.particles.positions) {
+    if (!x.allFinite()) r.fail("the placed body has a vertex beyond the range of a double");
+  }
+  return body;
+}
+
 /// Reads one <elasticbody> and, when it is sound, adds it to the scene and its forces to
 /// `forces`. The scene is left unchanged when the element has a problem.
 void read_elastic_body(const XMLElement& e, int index, Scene& scene, const std::string& file,
@@ -283,34 +260,12 @@ void read_elastic_body(const XMLElement& e, int index, Scene& scene, const std::
   ElementReader r(e, file, index, model.num_particles(), static_cast<int>(model.edges.size()));
   if (model.dim != 2) r.fail("an elastic body is planar: it belongs to 2D scenes");
   const int first = model.num_particles();
-  const std::int64_t max_particles = files.limits().max_particles;
-  const std::string shape_name = r.text("shape");
-  const ElasticShape shape = read_shape(r, shape_name, file, files, max_particles);
-  if (std::int64_t{first} + shape.num_vertices() > max_particles) {
-    r.fail("its " + std::to_string(shape.num_vertices()) + " vertices bring the scene to " +
-           std::to_string(std::int64_t{first} + shape.num_vertices()) + " particles, " +
-           over_limit(max_particles, "particles", "--max-particles"));
-  }
-  const ElasticMaterial material = read_material(r, shape);
-  const ElasticMass mass = read_mass(r);
-  const ElasticFixing fixing = read_fixing(r, shape);
-  ElasticPlacement placement;
-  placement.origin = {r.number_or("x", 0.0), r.number_or("y", 0.0)};
-  placement.rotation_degrees = r.number_or("rotation", 0.0);
-  placement.velocity = {r.number_or("vx", 0.0), r.number_or("vy", 0.0)};
-  const double radius = r.non_negative_or("radius", SceneModel::kDefaultParticleRadius);
-  ElasticParticles particles;
-  try {
-    particles = make_elastic_particles(shape, placement, mass, fixing);
-  } catch (const Error& error) {
-    r.fail(error.what());
-  }
-  for (const auto& x : particles.positions) {
-    if (!x.allFinite()) r.fail("the placed body has a vertex beyond the range of a double");
-  }
+  const ElasticBodyDescription body = read_description(r, file, files, first);
+  const ElasticShape& shape = body.shape;
+  const ElasticParticles& particles = body.particles;
+  const int n = shape.num_vertices();
 
   // The forces, made by the registry's factories from the body's initial positions.
-  const int n = shape.num_vertices();
   Vector q(2 * (first + n));
   q.head(2 * first) = scene.initial.q;
   for (int v = 0; v < n; ++v) q.segment<2>(2 * (first + v)) = particles.positions[v];
@@ -322,7 +277,7 @@ void read_elastic_body(const XMLElement& e, int index, Scene& scene, const std::
   ForcesByTag made;
   std::set<std::string> warned;
   int theme = scene.grading_theme;
-  declare_elastic_forces(shape, particles.positions, material, first,
+  declare_elastic_forces(shape, particles.positions, body.material, first,
                          [&](std::string_view tag, std::span<const DeclaredValue> values) {
                            DeclaredParameters params(tag, values, r, warned);
                            const ForceKind* kind = find_force_kind(tag);
@@ -344,7 +299,7 @@ void read_elastic_body(const XMLElement& e, int index, Scene& scene, const std::
     scene.initial.v.segment<2>(2 * p) = model.fixed[p] ? Eigen::Vector2d::Zero().eval()
                                                         : particles.velocity;
   }
-  model.particle_radius.resize(total, radius);
+  model.particle_radius.resize(total, body.radius);
   scene.appearance.particle_color.resize(total, Appearance::kDefaultParticleColor);
   scene.particle_tags.resize(total);
   for (const auto& [a, b] : shape.edges) {
@@ -363,6 +318,61 @@ void read_elastic_body(const XMLElement& e, int index, Scene& scene, const std::
 
 }  // namespace
 
+ElasticShape read_elastic_obj(const std::string& name, InputFiles& files,
+                              const std::string& context) {
+  ObjLines lines;
+  Mesh mesh;
+  try {
+    mesh = read_obj_text(files.read(name), name, files.limits().max_face_corners, true, &lines);
+  } catch (const SceneError& e) {
+    throw SceneError(e.file(), e.line(), e.element(), e.problem() + " (" + context + ")");
+  }
+  const auto fail = [&](int line, const std::string& problem) {
+    throw SceneError(name, line, "", problem + " (" + context + ")");
+  };
+  const std::int64_t limit = files.limits().max_particles;
+  if (mesh.num_vertices() > limit) {
+    fail(0, "the file has " + std::to_string(mesh.num_vertices()) + " vertices, " +
+                over_limit(limit, "particles", "--max-particles"));
+  }
+  std::vector<Eigen::Vector2d> vertices;
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    if (mesh.vertices[v].z() != 0.0) {
+      fail(lines.vertices[v], "vertex " + std::to_string(v + 1) + " has z = " +
+                                  to_text(mesh.vertices[v].z()) +
+                                  ": an elastic body is planar (z must be 0 or absent)");
+    }
+    vertices.push_back(mesh.vertices[v].head<2>());
+  }
+  if (!mesh.segments.empty()) {
+    fail(lines.segments[0],
+         "a polyline or a face of 2 corners: an elastic body's mesh holds triangles only");
+  }
+  if (mesh.faces.empty()) fail(0, "the file has no faces: an elastic body needs triangles");
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<int> first_use(vertices.size(), -1);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const auto& face = mesh.faces[f];
+    if (face.size() != 3) {
+      fail(lines.faces[f], "a face of " + std::to_string(face.size()) +
+                               " corners: an elastic body's mesh holds triangles only");
+    }
+    if (orientation(vertices[face[0]], vertices[face[1]], vertices[face[2]]) == 0.0)
+      fail(lines.faces[f], "the triangle has zero area (its corners are collinear)");
+    triangles.push_back({face[0], face[1], face[2]});
+  }
+  std::vector<char> used(vertices.size(), 0);
+  for (const auto& t : triangles)
+    for (const int v : t) used[v] = 1;
+  for (std::size_t v = 0; v < used.size(); ++v) {
+    if (!used[v]) {
+      fail(lines.vertices[v], "vertex " + std::to_string(v + 1) +
+                                  " is on no triangle: it would have no mass and no force");
+    }
+  }
+  return make_triangle_shape(std::move(vertices), triangles);
+}
+
 ForcesByTag read_elastic_bodies(const XMLElement& root, Scene& scene, const std::string& file,
                                 InputFiles& files, SceneErrorList& errors) {
   ForcesByTag forces;
@@ -373,6 +383,21 @@ ForcesByTag read_elastic_bodies(const XMLElement& root, Scene& scene, const std:
     errors.attempt([&] { read_elastic_body(*e, k, scene, file, files, forces); });
   }
   return forces;
+}
+
+ElasticBodyText read_elastic_body_text(std::string_view element, const std::string& name,
+                                       InputFiles& files) {
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(element.data(), element.size()) != tinyxml2::XML_SUCCESS ||
+      doc.RootElement() == nullptr ||
+      std::string_view(doc.RootElement()->Name()) != kElasticBodyElement) {
+    throw SceneError(name, 0, "", "not one <elasticbody .../> element");
+  }
+  ElementReader r(*doc.RootElement(), name, -1, 0, 0);
+  ElasticBodyText out;
+  out.body = read_description(r, name, files, 0);
+  out.warnings = r.finish();
+  return out;
 }
 
 }  // namespace fosssim

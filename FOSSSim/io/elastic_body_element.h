@@ -12,6 +12,7 @@
 #include "core/force.h"
 #include "core/scene.h"
 #include "io/input_files.h"
+#include "mesh/elastic_body.h"
 
 namespace tinyxml2 {
 class XMLElement;
@@ -37,6 +38,33 @@ using ForcesByTag = std::map<std::string, std::vector<std::unique_ptr<Force>>, s
 /// relative to the directory of `file` and read through `files`. Each element's problem (a
 /// SceneError naming the scene file, line, element and attribute, or the OBJ file and its line)
 /// goes into `errors`, and reading goes on with the next element.
+/// A body as an <elasticbody> element describes it.
+struct ElasticBodyDescription {
+  ElasticShape shape;
+  ElasticParticles particles;  ///< vertex v is the body's particle v
+  ElasticMaterial material;
+  double radius = 0.0;  ///< of every particle (particleradius, default SceneModel::kDefaultParticleRadius)
+};
+
+/// What read_elastic_body_text found.
+struct ElasticBodyText {
+  ElasticBodyDescription body;
+  std::vector<std::string> warnings;
+};
+
+/// Reads one <elasticbody .../> given as text, as a scene file's would be read, its particles
+/// numbered from 0 (FOSSSim-generate builds the element from its command line, so that both
+/// check and build bodies alike). `name` stands for the text in messages; an OBJ file is found
+/// relative to its folder. Throws SceneError.
+ElasticBodyText read_elastic_body_text(std::string_view element, const std::string& name,
+                                       InputFiles& files);
+
+/// Reads the OBJ file at `path` (through `files`) as the triangles of an elastic body: "v x y"
+/// or "v x y 0" vertices, triangle faces only, none of zero area, every vertex on one. Throws
+/// SceneError naming the OBJ file and line, with " (<context>)" after the problem.
+ElasticShape read_elastic_obj(const std::string& path, InputFiles& files,
+                              const std::string& context);
+
 ForcesByTag read_elastic_bodies(const tinyxml2::XMLElement& root, Scene& scene,
                                 const std::string& file, InputFiles& files,
                                 SceneErrorList& errors);
