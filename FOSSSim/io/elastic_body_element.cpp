@@ -28,9 +28,16 @@ int integer_at_least(ElementReader& r, const char* name, int minimum) {
   return value;
 }
 
+/// True when the element has the optional attribute `name`, which is remembered as one this
+/// element may have (so that a misspelling of it is reported).
+bool present(ElementReader& r, const char* name) {
+  r.text_or_empty(name);
+  return r.has(name);
+}
+
 /// An optional positive number.
 double positive_or(ElementReader& r, const char* name, double fallback) {
-  return r.has(name) ? r.positive(name) : fallback;
+  return present(r, name) ? r.positive(name) : fallback;
 }
 
 /// The numbers of a list attribute, separated by blanks or commas.
@@ -70,7 +77,7 @@ ElasticShape read_shape(ElementReader& r, const std::string& shape, const std::s
                         InputFiles& files, std::int64_t max_vertices) {
   try {
     if (shape == "sheet") {
-      const std::string pattern = r.has("diagonals") ? r.text("diagonals") : "alternating";
+      const std::string pattern = present(r, "diagonals") ? r.text("diagonals") : "alternating";
       if (pattern != "alternating" && pattern != "parallel")
         r.fail("diagonals", "must be \"alternating\" or \"parallel\", found \"" + pattern + "\"");
       return make_sheet(integer_at_least(r, "nx", 1), integer_at_least(r, "ny", 1),
@@ -86,13 +93,13 @@ ElasticShape read_shape(ElementReader& r, const std::string& shape, const std::s
     if (shape == "ring") {
       const int segments = integer_at_least(r, "segments", 3);
       const double radius = positive_or(r, "radius", 1.0);
-      if (!r.has("innerradius")) return make_ring_rod(segments, radius, max_vertices);
+      if (!present(r, "innerradius")) return make_ring_rod(segments, radius, max_vertices);
       const double inner = r.positive("innerradius");
       if (!(inner < radius)) {
         r.fail("innerradius", "must be less than radius (" + to_text(radius) + "), found " +
                                   to_text(inner));
       }
-      const int layers = r.has("layers") ? integer_at_least(r, "layers", 1) : 1;
+      const int layers = present(r, "layers") ? integer_at_least(r, "layers", 1) : 1;
       return make_annulus(segments, layers, inner, radius, max_vertices);
     }
     if (shape == "polygon") {
@@ -119,16 +126,16 @@ ElasticShape read_shape(ElementReader& r, const std::string& shape, const std::s
 /// stretch, for springs on their edges), rods take stretch and bend.
 ElasticMaterial read_material(ElementReader& r, const ElasticShape& shape) {
   ElasticMaterial material;
-  if (r.has("stretch")) material.stretch = r.non_negative("stretch");
+  if (present(r, "stretch")) material.stretch = r.non_negative("stretch");
   if (shape.is_rod()) {
     for (const char* name : {"youngsmodulus", "poissonratio"}) {
-      if (r.has(name)) r.fail(name, "applies to bodies of triangles, not to a rod or a ring rod");
+      if (present(r, name)) r.fail(name, "applies to bodies of triangles, not to a rod or a ring rod");
     }
     if (!material.stretch) r.fail("a rod needs stretch (alpha of the springs along it)");
-    if (r.has("bend")) material.bend = r.non_negative("bend");
+    if (present(r, "bend")) material.bend = r.non_negative("bend");
     return material;
   }
-  if (r.has("bend")) {
+  if (present(r, "bend")) {
     r.fail("bend", "applies to rods and ring rods (a ring without innerradius), not to a body "
                    "of triangles");
   }
@@ -138,7 +145,7 @@ ElasticMaterial read_material(ElementReader& r, const ElasticShape& shape) {
 }
 
 ElasticMass read_mass(ElementReader& r) {
-  const bool per_particle = r.has("m"), total = r.has("totalmass");
+  const bool per_particle = present(r, "m"), total = present(r, "totalmass");
   if (per_particle == total) {
     r.fail(per_particle ? "give either m (every particle's mass) or totalmass (the body's), not both"
                         : "the mass is missing: give m (every particle's mass) or totalmass "
@@ -150,14 +157,14 @@ ElasticMass read_mass(ElementReader& r) {
 
 ElasticFixing read_fixing(ElementReader& r, const ElasticShape& shape) {
   ElasticFixing fixing;
-  const std::string side = r.has("fix") ? r.text("fix") : "none";
+  const std::string side = present(r, "fix") ? r.text("fix") : "none";
   if (side == "left") fixing.side = ShapeSide::kLeft;
   else if (side == "right") fixing.side = ShapeSide::kRight;
   else if (side == "bottom") fixing.side = ShapeSide::kBottom;
   else if (side == "top") fixing.side = ShapeSide::kTop;
   else if (side != "none")
     r.fail("fix", "must be left, right, bottom, top or none, found \"" + side + "\"");
-  if (r.has("fixed")) {
+  if (present(r, "fixed")) {
     for (const double value : number_list(r, "fixed")) {
       if (value != std::floor(value) || value < 0.0 || value >= shape.num_vertices()) {
         r.fail("fixed", "refers to vertex " + to_text(value) + ", but the body has " +
