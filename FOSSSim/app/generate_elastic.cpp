@@ -34,6 +34,7 @@ constexpr const char* kBodyOptions[][2] = {
     {"fix", "Side of the body's own frame to fix: left, right, bottom, top or none"},
     {"fixed", "Vertices to fix (0-based, blank or comma separated)"},
     {"particleradius", "Radius of every particle (m), for drawing and collisions"},
+    {"edgeradius", "Radius of every edge (m), for drawing and collisions"},
 };
 
 /// The shape options of each subcommand: name, help.
@@ -150,6 +151,8 @@ std::optional<int> run_elastic_subcommand(const ElasticSubcommands& elastic,
     if (elastic.gravity) settings.gravity = Eigen::Vector2d(0.0, *elastic.gravity);
     const bool default_radius = read.body.radius == SceneModel::kDefaultParticleRadius;
     if (!default_radius) settings.radius = read.body.radius;
+    if (read.body.edge_radius != SceneModel::kDefaultEdgeRadius)
+      settings.edge_radius = read.body.edge_radius;
     write_elastic_scene(output, settings, read.body.shape, read.body.particles,
                         read.body.material);
     std::cout << "wrote " << output << ": " << read.body.shape.num_vertices() << " particles, "

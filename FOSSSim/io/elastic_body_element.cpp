@@ -55,11 +55,17 @@ std::vector<double> number_list(ElementReader& r, const char* name) {
 
 /// The polygon's corners from points="x0 y0 x1 y1 ...".
 std::vector<Eigen::Vector2d> read_corners(ElementReader& r, std::int64_t max_corners) {
+  // Count the words before converting them, in one pass that allocates nothing.
   const std::string text = r.text("points");
-  // Count before converting: a corner needs at least 4 characters ("0 0 ").
-  const auto bound = static_cast<std::int64_t>(text.size() / 4 + 1);
-  if (bound > 4 * max_corners) {
-    r.fail("points", "holds more than " +
+  std::int64_t words = 0;
+  bool in_word = false;
+  for (const char c : text) {
+    const bool separator = c == ',' || c == ' ' || c == '\t' || c == '\n' || c == '\r';
+    if (!separator && !in_word) ++words;
+    in_word = !separator;
+  }
+  if ((words + 1) / 2 > max_corners) {
+    r.fail("points", "holds " + std::to_string((words + 1) / 2) + " corners, " +
                          over_limit(max_corners, "corners", "--max-polygon-corners"));
   }
   const std::vector<double> values = number_list(r, "points");
@@ -248,6 +254,7 @@ ElasticBodyDescription read_description(ElementReader& r, const std::string& fil
   placement.rotation_degrees = r.number_or("rotation", 0.0);
   placement.velocity = {r.number_or("vx", 0.0), r.number_or("vy", 0.0)};
   body.radius = r.non_negative_or("particleradius", SceneModel::kDefaultParticleRadius);
+  body.edge_radius = r.non_negative_or("edgeradius", SceneModel::kDefaultEdgeRadius);
   try {
     body.particles = make_elastic_particles(shape, placement, mass, fixing);
   } catch (const Error& error) {
@@ -311,7 +318,7 @@ void read_elastic_body(const XMLElement& e, int index, Scene& scene, const std::
   scene.particle_tags.resize(total);
   for (const auto& [a, b] : shape.edges) {
     model.edges.push_back({first + a, first + b});
-    model.edge_radius.push_back(SceneModel::kDefaultEdgeRadius);
+    model.edge_radius.push_back(body.edge_radius);
     scene.appearance.edge_color.push_back(Appearance::kDefaultEdgeColor);
     if (!model.edge_collides.empty()) model.edge_collides.push_back(true);
   }

@@ -43,7 +43,10 @@ struct ElasticBodyDescription {
   ElasticShape shape;
   ElasticParticles particles;  ///< vertex v is the body's particle v
   ElasticMaterial material;
-  double radius = 0.0;  ///< of every particle (particleradius, default SceneModel::kDefaultParticleRadius)
+  /// Of every particle (particleradius, default SceneModel::kDefaultParticleRadius) and every
+  /// edge (edgeradius, default SceneModel::kDefaultEdgeRadius), for drawing and collisions.
+  double radius = 0.0;
+  double edge_radius = 0.0;
 };
 
 /// What read_elastic_body_text found.

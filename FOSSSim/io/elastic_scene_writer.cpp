@@ -56,8 +56,12 @@ std::string elastic_scene_text(const ElasticSceneSettings& settings, const Elast
            "\" vx=\"" + to_text(velocity.x()) + "\" vy=\"" + to_text(velocity.y()) +
            "\" fixed=\"" + (fixed ? "1" : "0") + "\"" + radius + "/>\n";
   }
-  for (const auto& [a, b] : shape.edges)
-    out += "  <edge i=\"" + std::to_string(a) + "\" j=\"" + std::to_string(b) + "\"/>\n";
+  const std::string edge_radius =
+      settings.edge_radius ? " radius=\"" + to_text(*settings.edge_radius) + "\"" : std::string();
+  for (const auto& [a, b] : shape.edges) {
+    out += "  <edge i=\"" + std::to_string(a) + "\" j=\"" + std::to_string(b) + "\"" + edge_radius +
+           "/>\n";
+  }
   declare_elastic_forces(shape, particles.positions, material, 0,
                          [&](std::string_view tag, std::span<const DeclaredValue> values) {
                            out += "  <";

@@ -21,6 +21,7 @@ struct ElasticSceneSettings {
   double dt = 0.01;                 ///< <integrator dt> (s)
   std::optional<Eigen::Vector2d> gravity;  ///< <simplegravity fx fy> (m/s²) when given
   std::optional<double> radius;     ///< every particle's radius attribute when given
+  std::optional<double> edge_radius;  ///< every edge's radius attribute when given
 };
 
 /// The scene text: settings, particles (vertex v is particle v), edges, then the forces that

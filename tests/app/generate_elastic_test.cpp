@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "support/run_program.h"
@@ -55,8 +56,8 @@ const Body kBodies[] = {
      R"(shape="ring" segments="14" radius="0.7" stretch="200" bend="1" totalmass="1" vx="1" y="2")"},
     {"annulus",
      "ring --segments 12 --radius 1 --innerradius 0.6 --layers 2 --youngsmodulus 500 "
-     "--poissonratio 0.2 --m 0.05 --fix top --particleradius 0.03",
-     R"(shape="ring" segments="12" radius="1" innerradius="0.6" layers="2" youngsmodulus="500" poissonratio="0.2" m="0.05" fix="top" particleradius="0.03")"},
+     "--poissonratio 0.2 --m 0.05 --fix top --particleradius 0.03 --edgeradius 0.01",
+     R"(shape="ring" segments="12" radius="1" innerradius="0.6" layers="2" youngsmodulus="500" poissonratio="0.2" m="0.05" fix="top" particleradius="0.03" edgeradius="0.01")"},
     {"polygon",
      "polygon --points '0 0 3 0 3 1 1.5 0.4 0.8 2 0 1' --spacing 0.35 --youngsmodulus 800 "
      "--poissonratio 0.4 --stretch 20 --totalmass 1.5 --fix bottom",
@@ -146,6 +147,31 @@ TEST_F(GenerateElastic, RefusesBadRequestsWithAMessageAndNoFile) {
   refused("-o " + path("x.xml") + " --json " + path("x.json") + " rod --segments 3 --stretch 1 "
           "--m 1",
           "FOSSSim-generate: error: --json and --pins apply to meshes, not to elastic bodies");
+}
+
+TEST_F(GenerateElastic, FOSSSimRefusesAPolygonOverTheCornerLimitUntilItIsRaised) {
+  std::string points;
+  for (int k = 0; k < 12; ++k) {
+    const double a = 6.283185307179586 * k / 12;
+    points += (k ? " " : "") + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a));
+  }
+  folder_.write("polygon.xml", "<scene>\n<duration time=\"0.05\"/>\n"
+                               "<integrator type=\"implicit-euler\" dt=\"0.01\"/>\n"
+                               "<elasticbody shape=\"polygon\" points=\"" + points +
+                                   "\" youngsmodulus=\"10\" poissonratio=\"0.3\" m=\"1\"/>\n"
+                                   "</scene>\n");
+  const std::string run_it = kFosssim + " -s " + path("polygon.xml") + " -d 0 -q -o " +
+                             path("p.bin") + " --max-polygon-corners ";
+  const ProgramResult refused = run(run_it + "11");
+  EXPECT_EQ(refused.status, 2) << refused.output();
+  EXPECT_NE(refused.err.find("polygon.xml:4: error: <elasticbody> 0: attribute \"points\" holds "
+                             "12 corners, more than the limit of 11 corners (raise it with "
+                             "--max-polygon-corners N)"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_FALSE(folder_.exists("p.bin"));
+  const ProgramResult accepted = run(run_it + "12");
+  EXPECT_EQ(accepted.status, 0) << accepted.output();
 }
 
 }  // namespace
