@@ -136,6 +136,11 @@ class SceneParser {
         throw SceneError(file_, root.GetLineNum(), "<scene>",
                          "rigid bodies are planar: a rigid-body scene cannot be dim=\"3\"");
       }
+      if (const auto& bodies = all(std::string(kElasticBodyElement)); !bodies.empty()) {
+        throw SceneError(file_, bodies[0]->GetLineNum(), "<elasticbody>",
+                         "an elastic body is made of particles: a rigid-body scene cannot hold "
+                         "one");
+      }
       read_rigid_body_scene(elements_, scene_, file_, files_.limits());
       return std::move(scene_);
     }

@@ -202,6 +202,12 @@ TEST(ElasticBodyElement, IsRefusedInA3DSceneAndOverTheParticleLimit) {
   EXPECT_EQ(load_error(three_d, "bad.xml", files),
             "bad.xml:3: error: <elasticbody> 0: an elastic body is planar: it belongs to 2D "
             "scenes");
+  const std::string rigid =
+      "<scene>\n<simtype type=\"rigid-body\"/>\n"
+      "<elasticbody shape=\"rod\" segments=\"2\" stretch=\"1\" m=\"1\"/>\n</scene>\n";
+  EXPECT_EQ(load_error(rigid, "bad.xml", files),
+            "bad.xml:3: error: <elasticbody>: an elastic body is made of particles: a rigid-body "
+            "scene cannot hold one");
   Limits limits;
   limits.max_particles = 10;
   InputFiles small(limits);
