@@ -222,7 +222,7 @@ class DeclaredParameters final : public ForceParameters {
   std::string describe() const {
     std::string out;
     for (const DeclaredValue& v : values_) {
-      if (v.name[0] == 'i') out += (out.empty() ? "(" : ", ") + to_text(v.value);
+      if (v.is_index) out += (out.empty() ? "(" : ", ") + std::to_string(static_cast<int>(v.value));
     }
     return out + ")";
   }

@@ -66,9 +66,14 @@ std::string elastic_scene_text(const ElasticSceneSettings& settings, const Elast
                          [&](std::string_view tag, std::span<const DeclaredValue> values) {
                            out += "  <";
                            out += tag;
-                           for (const DeclaredValue& value : values)
-                             out += std::string(" ") + value.name + "=\"" + to_text(value.value) +
-                                    "\"";
+                           for (const DeclaredValue& value : values) {
+                             // An index as an integer: to_text would write 100000 as "1e+05".
+                             const std::string text =
+                                 value.is_index
+                                     ? std::to_string(static_cast<std::int64_t>(value.value))
+                                     : to_text(value.value);
+                             out += std::string(" ") + value.name + "=\"" + text + "\"";
+                           }
                            out += "/>\n";
                          });
   out += "</scene>\n";

@@ -47,17 +47,19 @@ void declare_elastic_forces(const ElasticShape& shape,
   if (material.stretch) {
     for (const auto& [a, b] : shape.edges) {
       const double l0 = (positions[a] - positions[b]).norm();
-      const std::array<DeclaredValue, 4> values = {
-          {{"i1", index(a)}, {"i2", index(b)}, {"alpha", *material.stretch}, {"l0", l0}}};
+      const std::array<DeclaredValue, 4> values = {{{"i1", index(a), true},
+                                                    {"i2", index(b), true},
+                                                    {"alpha", *material.stretch},
+                                                    {"l0", l0}}};
       declare("elasticbodyspringforce", values);
     }
   }
   if (material.bend) {
     for (const auto& [a, b, c] : shape.hinges) {
       const double theta0 = hinge_angle(positions[a], positions[b], positions[c]);
-      const std::array<DeclaredValue, 5> values = {{{"i1", index(a)},
-                                                    {"i2", index(b)},
-                                                    {"i3", index(c)},
+      const std::array<DeclaredValue, 5> values = {{{"i1", index(a), true},
+                                                    {"i2", index(b), true},
+                                                    {"i3", index(c), true},
                                                     {"alpha", *material.bend},
                                                     {"theta0", theta0}}};
       declare("elasticbodybendingforce", values);
@@ -65,9 +67,9 @@ void declare_elastic_forces(const ElasticShape& shape,
   }
   if (material.youngs_modulus && material.poisson_ratio) {
     for (const auto& [a, b, c] : shape.triangles) {
-      const std::array<DeclaredValue, 5> values = {{{"i1", index(a)},
-                                                    {"i2", index(b)},
-                                                    {"i3", index(c)},
+      const std::array<DeclaredValue, 5> values = {{{"i1", index(a), true},
+                                                    {"i2", index(b), true},
+                                                    {"i3", index(c), true},
                                                     {"youngsmodulus", *material.youngs_modulus},
                                                     {"poissonratio", *material.poisson_ratio}}};
       declare("elasticbodycstforce", values);

@@ -64,6 +64,7 @@ ElasticParticles make_elastic_particles(const ElasticShape& shape,
 struct DeclaredValue {
   const char* name;
   double value;
+  bool is_index = false;  ///< a particle index (an integer, written as one)
 };
 
 /// Receives one force declaration: its tag ("elasticbodycstforce") and its parameters.
