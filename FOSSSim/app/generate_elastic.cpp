@@ -75,10 +75,14 @@ const std::vector<ShapeCommand>& shape_commands() {
 std::string attribute_value(const std::string& text) {
   std::string out;
   for (const char c : text) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
+    if (c == '&')
+      out += "&amp;";
+    else if (c == '<')
+      out += "&lt;";
+    else if (c == '"')
+      out += "&quot;";
+    else
+      out += c;
   }
   return out;
 }
@@ -87,11 +91,12 @@ std::string attribute_value(const std::string& text) {
 
 void add_elastic_subcommands(CLI::App& app, ElasticSubcommands& elastic) {
   for (const ShapeCommand& shape : shape_commands()) {
-    CLI::App* command = app.add_subcommand(shape.name, std::string("elastic body: ") + shape.help +
-                                                           " (writes an XML scene)");
+    CLI::App* command = app.add_subcommand(
+        shape.name, std::string("elastic body: ") + shape.help + " (writes an XML scene)");
     for (const auto& [name, help] : shape.options)
       command->add_option(std::string("--") + name, help);
-    for (const auto& [name, help] : kBodyOptions) command->add_option(std::string("--") + name, help);
+    for (const auto& [name, help] : kBodyOptions)
+      command->add_option(std::string("--") + name, help);
     command->add_option("--duration", elastic.duration, "Scene duration (s)")
         ->check(decimal_number())
         ->capture_default_str();
@@ -109,8 +114,7 @@ void add_elastic_subcommands(CLI::App& app, ElasticSubcommands& elastic) {
 }
 
 std::optional<int> run_elastic_subcommand(const ElasticSubcommands& elastic,
-                                          const std::string& output,
-                                          std::int64_t max_particles) {
+                                          const std::string& output, std::int64_t max_particles) {
   const CLI::App* command = nullptr;
   for (const CLI::App* c : elastic.commands) {
     if (c->parsed()) command = c;
@@ -153,11 +157,10 @@ std::optional<int> run_elastic_subcommand(const ElasticSubcommands& elastic,
     if (!default_radius) settings.radius = read.body.radius;
     if (read.body.edge_radius != SceneModel::kDefaultEdgeRadius)
       settings.edge_radius = read.body.edge_radius;
-    write_elastic_scene(output, settings, read.body.shape, read.body.particles,
-                        read.body.material);
+    write_elastic_scene(output, settings, read.body.shape, read.body.particles, read.body.material);
     std::cout << "wrote " << output << ": " << read.body.shape.num_vertices() << " particles, "
-              << read.body.shape.triangles.size() << " triangles, "
-              << read.body.shape.hinges.size() << " hinges\n";
+              << read.body.shape.triangles.size() << " triangles, " << read.body.shape.hinges.size()
+              << " hinges\n";
   } catch (const SceneError& error) {  // already "command line:1: error: ..."
     std::cerr << "FOSSSim-generate: " << error.what() << "\n";
     return exit_status(error.kind());

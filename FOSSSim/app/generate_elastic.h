@@ -29,7 +29,6 @@ void add_elastic_subcommands(CLI::App& app, ElasticSubcommands& elastic);
 /// and returns the exit status (0 written, 2 bad input, 4 cannot write); otherwise nothing.
 /// `max_particles` bounds the body as --max-particles bounds a scene.
 std::optional<int> run_elastic_subcommand(const ElasticSubcommands& elastic,
-                                          const std::string& output,
-                                          std::int64_t max_particles);
+                                          const std::string& output, std::int64_t max_particles);
 
 }  // namespace fosssim

@@ -24,7 +24,8 @@ using tinyxml2::XMLElement;
 int integer_at_least(ElementReader& r, const char* name, int minimum) {
   const int value = r.integer(name);
   if (value < minimum)
-    r.fail(name, "must be at least " + std::to_string(minimum) + ", found " + std::to_string(value));
+    r.fail(name,
+           "must be at least " + std::to_string(minimum) + ", found " + std::to_string(value));
   return value;
 }
 
@@ -86,11 +87,11 @@ ElasticShape read_shape(ElementReader& r, const std::string& shape, const std::s
       const std::string pattern = present(r, "diagonals") ? r.text("diagonals") : "alternating";
       if (pattern != "alternating" && pattern != "parallel")
         r.fail("diagonals", "must be \"alternating\" or \"parallel\", found \"" + pattern + "\"");
-      return make_sheet(integer_at_least(r, "nx", 1), integer_at_least(r, "ny", 1),
-                        positive_or(r, "width", 1.0), positive_or(r, "height", 1.0),
-                        pattern == "parallel" ? SheetDiagonals::kParallel
-                                              : SheetDiagonals::kAlternating,
-                        max_vertices);
+      return make_sheet(
+          integer_at_least(r, "nx", 1), integer_at_least(r, "ny", 1), positive_or(r, "width", 1.0),
+          positive_or(r, "height", 1.0),
+          pattern == "parallel" ? SheetDiagonals::kParallel : SheetDiagonals::kAlternating,
+          max_vertices);
     }
     if (shape == "rod") {
       return make_rod(integer_at_least(r, "segments", 1), positive_or(r, "length", 1.0),
@@ -102,8 +103,8 @@ ElasticShape read_shape(ElementReader& r, const std::string& shape, const std::s
       if (!present(r, "innerradius")) return make_ring_rod(segments, radius, max_vertices);
       const double inner = r.positive("innerradius");
       if (!(inner < radius)) {
-        r.fail("innerradius", "must be less than radius (" + to_text(radius) + "), found " +
-                                  to_text(inner));
+        r.fail("innerradius",
+               "must be less than radius (" + to_text(radius) + "), found " + to_text(inner));
       }
       const int layers = present(r, "layers") ? integer_at_least(r, "layers", 1) : 1;
       return make_annulus(segments, layers, inner, radius, max_vertices);
@@ -124,8 +125,8 @@ ElasticShape read_shape(ElementReader& r, const std::string& shape, const std::s
   } catch (const Error& error) {
     r.fail(error.what());
   }
-  r.fail("shape", "names an unknown shape \"" + shape +
-                      "\" (expected sheet, rod, ring, polygon or obj)");
+  r.fail("shape",
+         "names an unknown shape \"" + shape + "\" (expected sheet, rod, ring, polygon or obj)");
 }
 
 /// The material, checked against the shape: triangles take youngsmodulus and poissonratio (and
@@ -135,15 +136,17 @@ ElasticMaterial read_material(ElementReader& r, const ElasticShape& shape) {
   if (present(r, "stretch")) material.stretch = r.non_negative("stretch");
   if (shape.is_rod()) {
     for (const char* name : {"youngsmodulus", "poissonratio"}) {
-      if (present(r, name)) r.fail(name, "applies to bodies of triangles, not to a rod or a ring rod");
+      if (present(r, name))
+        r.fail(name, "applies to bodies of triangles, not to a rod or a ring rod");
     }
     if (!material.stretch) r.fail("a rod needs stretch (alpha of the springs along it)");
     if (present(r, "bend")) material.bend = r.non_negative("bend");
     return material;
   }
   if (present(r, "bend")) {
-    r.fail("bend", "applies to rods and ring rods (a ring without innerradius), not to a body "
-                   "of triangles");
+    r.fail("bend",
+           "applies to rods and ring rods (a ring without innerradius), not to a body "
+           "of triangles");
   }
   material.youngs_modulus = r.number("youngsmodulus");
   material.poisson_ratio = r.number("poissonratio");
@@ -153,9 +156,10 @@ ElasticMaterial read_material(ElementReader& r, const ElasticShape& shape) {
 ElasticMass read_mass(ElementReader& r) {
   const bool per_particle = present(r, "m"), total = present(r, "totalmass");
   if (per_particle == total) {
-    r.fail(per_particle ? "give either m (every particle's mass) or totalmass (the body's), not both"
-                        : "the mass is missing: give m (every particle's mass) or totalmass "
-                          "(the body's, shared by area or length)");
+    r.fail(per_particle
+               ? "give either m (every particle's mass) or totalmass (the body's), not both"
+               : "the mass is missing: give m (every particle's mass) or totalmass "
+                 "(the body's, shared by area or length)");
   }
   if (per_particle) return {ElasticMass::kPerParticle, r.positive("m")};
   return {ElasticMass::kTotal, r.positive("totalmass")};
@@ -164,10 +168,14 @@ ElasticMass read_mass(ElementReader& r) {
 ElasticFixing read_fixing(ElementReader& r, const ElasticShape& shape) {
   ElasticFixing fixing;
   const std::string side = present(r, "fix") ? r.text("fix") : "none";
-  if (side == "left") fixing.side = ShapeSide::kLeft;
-  else if (side == "right") fixing.side = ShapeSide::kRight;
-  else if (side == "bottom") fixing.side = ShapeSide::kBottom;
-  else if (side == "top") fixing.side = ShapeSide::kTop;
+  if (side == "left")
+    fixing.side = ShapeSide::kLeft;
+  else if (side == "right")
+    fixing.side = ShapeSide::kRight;
+  else if (side == "bottom")
+    fixing.side = ShapeSide::kBottom;
+  else if (side == "top")
+    fixing.side = ShapeSide::kTop;
   else if (side != "none")
     r.fail("fix", "must be left, right, bottom, top or none, found \"" + side + "\"");
   if (present(r, "fixed")) {
@@ -310,8 +318,8 @@ void read_elastic_body(const XMLElement& e, int index, Scene& scene, const std::
     const int p = first + v;
     model.mass.segment<2>(2 * p).setConstant(particles.masses[v]);
     model.fixed[p] = particles.fixed[v] != 0;
-    scene.initial.v.segment<2>(2 * p) = model.fixed[p] ? Eigen::Vector2d::Zero().eval()
-                                                        : particles.velocity;
+    scene.initial.v.segment<2>(2 * p) =
+        model.fixed[p] ? Eigen::Vector2d::Zero().eval() : particles.velocity;
   }
   model.particle_radius.resize(total, body.radius);
   scene.appearance.particle_color.resize(total, Appearance::kDefaultParticleColor);
@@ -352,8 +360,8 @@ ElasticShape read_elastic_obj(const std::string& name, InputFiles& files,
   std::vector<Eigen::Vector2d> vertices;
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     if (mesh.vertices[v].z() != 0.0) {
-      fail(lines.vertices[v], "vertex " + std::to_string(v + 1) + " has z = " +
-                                  to_text(mesh.vertices[v].z()) +
+      fail(lines.vertices[v], "vertex " + std::to_string(v + 1) +
+                                  " has z = " + to_text(mesh.vertices[v].z()) +
                                   ": an elastic body is planar (z must be 0 or absent)");
     }
     vertices.push_back(mesh.vertices[v].head<2>());

@@ -69,7 +69,6 @@ ElasticShape read_elastic_obj(const std::string& path, InputFiles& files,
                               const std::string& context);
 
 ForcesByTag read_elastic_bodies(const tinyxml2::XMLElement& root, Scene& scene,
-                                const std::string& file, InputFiles& files,
-                                SceneErrorList& errors);
+                                const std::string& file, InputFiles& files, SceneErrorList& errors);
 
 }  // namespace fosssim

@@ -14,11 +14,20 @@ std::string escaped(std::string_view text) {
   std::string out;
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -27,8 +36,7 @@ std::string escaped(std::string_view text) {
 }  // namespace
 
 std::string elastic_scene_text(const ElasticSceneSettings& settings, const ElasticShape& shape,
-                               const ElasticParticles& particles,
-                               const ElasticMaterial& material) {
+                               const ElasticParticles& particles, const ElasticMaterial& material) {
   std::string out;
   if (!settings.comment.empty()) {
     std::string comment = settings.comment;
@@ -53,8 +61,8 @@ std::string elastic_scene_text(const ElasticSceneSettings& settings, const Elast
     const Eigen::Vector2d velocity = fixed ? Eigen::Vector2d::Zero() : particles.velocity;
     out += "  <particle m=\"" + to_text(particles.masses[v]) + "\" px=\"" +
            to_text(particles.positions[v].x()) + "\" py=\"" + to_text(particles.positions[v].y()) +
-           "\" vx=\"" + to_text(velocity.x()) + "\" vy=\"" + to_text(velocity.y()) +
-           "\" fixed=\"" + (fixed ? "1" : "0") + "\"" + radius + "/>\n";
+           "\" vx=\"" + to_text(velocity.x()) + "\" vy=\"" + to_text(velocity.y()) + "\" fixed=\"" +
+           (fixed ? "1" : "0") + "\"" + radius + "/>\n";
   }
   const std::string edge_radius =
       settings.edge_radius ? " radius=\"" + to_text(*settings.edge_radius) + "\"" : std::string();

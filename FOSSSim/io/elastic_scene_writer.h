@@ -3,10 +3,9 @@
 // <edge> per edge and one element per force, so that a student can read every number
 // (FOSSSim-generate's sheet, rod, ring, polygon and obj).
 
+#include <Eigen/Core>
 #include <optional>
 #include <string>
-
-#include <Eigen/Core>
 
 #include "mesh/elastic_body.h"
 
@@ -14,14 +13,14 @@ namespace fosssim {
 
 /// What the written scene holds besides the body.
 struct ElasticSceneSettings {
-  std::string description;          ///< <description text>, left out when empty
-  std::string comment;              ///< an XML comment at the top (how it was made)
-  double duration = 5.0;            ///< <duration time> (s)
+  std::string description;  ///< <description text>, left out when empty
+  std::string comment;      ///< an XML comment at the top (how it was made)
+  double duration = 5.0;    ///< <duration time> (s)
   std::string integrator = "implicit-euler";
-  double dt = 0.01;                 ///< <integrator dt> (s)
+  double dt = 0.01;                        ///< <integrator dt> (s)
   std::optional<Eigen::Vector2d> gravity;  ///< <simplegravity fx fy> (m/s²) when given
-  std::optional<double> radius;     ///< every particle's radius attribute when given
-  std::optional<double> edge_radius;  ///< every edge's radius attribute when given
+  std::optional<double> radius;            ///< every particle's radius attribute when given
+  std::optional<double> edge_radius;       ///< every edge's radius attribute when given
 };
 
 /// The scene text: settings, particles (vertex v is particle v), edges, then the forces that

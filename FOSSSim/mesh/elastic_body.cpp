@@ -16,8 +16,8 @@ double hinge_angle(const Eigen::Vector2d& x1, const Eigen::Vector2d& x2,
 }
 
 ElasticParticles make_elastic_particles(const ElasticShape& shape,
-                                        const ElasticPlacement& placement,
-                                        const ElasticMass& mass, const ElasticFixing& fixing) {
+                                        const ElasticPlacement& placement, const ElasticMass& mass,
+                                        const ElasticFixing& fixing) {
   ElasticParticles out;
   const int n = shape.num_vertices();
   out.positions = place_vertices(shape, placement.origin, placement.rotation_degrees);

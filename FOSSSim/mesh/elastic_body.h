@@ -57,8 +57,8 @@ struct ElasticParticles {
 /// The particles of `shape` placed, massed and fixed as asked. Throws Error (kBadInput) for a
 /// fixed vertex out of range, naming it and the body's vertex count.
 ElasticParticles make_elastic_particles(const ElasticShape& shape,
-                                        const ElasticPlacement& placement,
-                                        const ElasticMass& mass, const ElasticFixing& fixing);
+                                        const ElasticPlacement& placement, const ElasticMass& mass,
+                                        const ElasticFixing& fixing);
 
 /// One parameter of a force declaration, as the scene format names it ("i1", "alpha", ...).
 struct DeclaredValue {

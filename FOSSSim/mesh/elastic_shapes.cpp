@@ -275,12 +275,12 @@ ElasticShape make_polygon(const std::vector<Eigen::Vector2d>& given, double spac
     const double grid =
         (std::floor(size.x() / spacing) + 1.0) * (std::floor(size.y() / spacing) + 1.0);
     const double bound = n + total_cuts + grid;
-    check_vertex_count(bound < 9e18 ? static_cast<std::int64_t>(bound)
-                                    : std::numeric_limits<std::int64_t>::max(),
-                       max_vertices,
-                       "the polygon at spacing " + to_text(spacing) +
-                           " (its corners, the cuts of its sides and the grid over its box)",
-                       "may have");
+    check_vertex_count(
+        bound < 9e18 ? static_cast<std::int64_t>(bound) : std::numeric_limits<std::int64_t>::max(),
+        max_vertices,
+        "the polygon at spacing " + to_text(spacing) +
+            " (its corners, the cuts of its sides and the grid over its box)",
+        "may have");
     for (int k = 0; k < n; ++k) {
       const Eigen::Vector2d a = outline[k], b = outline[(k + 1) % n];
       cuts[k] = static_cast<int>(std::ceil((b - a).norm() / spacing)) - 1;

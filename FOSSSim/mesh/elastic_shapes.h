@@ -100,7 +100,6 @@ std::vector<int> select_side(const ElasticShape& shape, ShapeSide side);
 /// Moves the body from its own frame: x ← origin + R(rotation_degrees) x, R turning
 /// counter-clockwise.
 std::vector<Eigen::Vector2d> place_vertices(const ElasticShape& shape,
-                                            const Eigen::Vector2d& origin,
-                                            double rotation_degrees);
+                                            const Eigen::Vector2d& origin, double rotation_degrees);
 
 }  // namespace fosssim

@@ -48,11 +48,9 @@ const Body kBodies[] = {
      "sheet --nx 5 --ny 2 --width 2 --height 0.8 --youngsmodulus 2000 --poissonratio 0.3 "
      "--totalmass 2 --fix left --rotation 15 --x 0.5",
      R"(shape="sheet" nx="5" ny="2" width="2" height="0.8" youngsmodulus="2000" poissonratio="0.3" totalmass="2" fix="left" rotation="15" x="0.5")"},
-    {"rod",
-     "rod --segments 6 --length 1.5 --stretch 300 --bend 2 --m 0.1 --fixed 0,1",
+    {"rod", "rod --segments 6 --length 1.5 --stretch 300 --bend 2 --m 0.1 --fixed 0,1",
      R"(shape="rod" segments="6" length="1.5" stretch="300" bend="2" m="0.1" fixed="0,1")"},
-    {"ring",
-     "ring --segments 14 --radius 0.7 --stretch 200 --bend 1 --totalmass 1 --vx 1 --y 2",
+    {"ring", "ring --segments 14 --radius 0.7 --stretch 200 --bend 1 --totalmass 1 --vx 1 --y 2",
      R"(shape="ring" segments="14" radius="0.7" stretch="200" bend="1" totalmass="1" vx="1" y="2")"},
     {"annulus",
      "ring --segments 12 --radius 1 --innerradius 0.6 --layers 2 --youngsmodulus 500 "
@@ -62,21 +60,20 @@ const Body kBodies[] = {
      "polygon --points '0 0 3 0 3 1 1.5 0.4 0.8 2 0 1' --spacing 0.35 --youngsmodulus 800 "
      "--poissonratio 0.4 --stretch 20 --totalmass 1.5 --fix bottom",
      R"(shape="polygon" points="0 0 3 0 3 1 1.5 0.4 0.8 2 0 1" spacing="0.35" youngsmodulus="800" poissonratio="0.4" stretch="20" totalmass="1.5" fix="bottom")"},
-    {"obj",
-     "obj --file square.obj --youngsmodulus 100 --poissonratio 0 --totalmass 1 --fixed 0",
+    {"obj", "obj --file square.obj --youngsmodulus 100 --poissonratio 0 --totalmass 1 --fixed 0",
      R"(shape="obj" file="square.obj" youngsmodulus="100" poissonratio="0" totalmass="1" fixed="0")"},
 };
 
-constexpr const char* kSquare = "v 0 0\nv 1 0\nv 1 1\nv 0 1 0\nv 0.5 0.5\n"
-                                "f 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n";
+constexpr const char* kSquare =
+    "v 0 0\nv 1 0\nv 1 1\nv 0 1 0\nv 0.5 0.5\n"
+    "f 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n";
 
 class GenerateElasticBody : public GenerateElastic, public ::testing::WithParamInterface<Body> {};
 
 TEST_P(GenerateElasticBody, WritesASceneWithTheElementsTrajectoryBytesThatGradesItself) {
   folder_.write("square.obj", kSquare);
-  const ProgramResult made =
-      run(kGenerate + " -o " + path("generated.xml") + " " + GetParam().command +
-          " --gravity -9.81 --duration 0.3 --dt 0.01");
+  const ProgramResult made = run(kGenerate + " -o " + path("generated.xml") + " " +
+                                 GetParam().command + " --gravity -9.81 --duration 0.3 --dt 0.01");
   ASSERT_EQ(made.status, 0) << made.output();
   EXPECT_NE(made.out.find("wrote " + path("generated.xml") + ": "), std::string::npos);
   folder_.write("element.xml",
@@ -93,8 +90,8 @@ TEST_P(GenerateElasticBody, WritesASceneWithTheElementsTrajectoryBytesThatGrades
   const std::string after_comment = text.substr(text.find("-->"));
   EXPECT_EQ(after_comment.find("<elasticbody "), std::string::npos);  // no element to expand
   EXPECT_NE(text.find("<particle m="), std::string::npos);
-  const ProgramResult grade = run(kFosssim + " -s " + path("generated.xml") + " -d 0 -q -i " +
-                                  path("element.xml.bin"));
+  const ProgramResult grade =
+      run(kFosssim + " -s " + path("generated.xml") + " -d 0 -q -i " + path("element.xml.bin"));
   EXPECT_EQ(grade.status, 0) << grade.output();
   EXPECT_NE(grade.output().find("Overall success: Passed."), std::string::npos) << grade.output();
 }
@@ -103,9 +100,9 @@ INSTANTIATE_TEST_SUITE_P(Shapes, GenerateElasticBody, ::testing::ValuesIn(kBodie
                          [](const auto& info) { return std::string(info.param.name); });
 
 TEST_F(GenerateElastic, TheSceneIsOneElementPerForceWithRestValuesFromThePositions) {
-  const ProgramResult made =
-      run(kGenerate + " -o " + path("rod.xml") + " rod --segments 2 --length 2 --stretch 5 "
-                      "--bend 0.5 --m 1 --duration 1");
+  const ProgramResult made = run(kGenerate + " -o " + path("rod.xml") +
+                                 " rod --segments 2 --length 2 --stretch 5 "
+                                 "--bend 0.5 --m 1 --duration 1");
   ASSERT_EQ(made.status, 0) << made.output();
   EXPECT_EQ(folder_.read("rod.xml"),
             "<!-- Written by FOSSSim-generate rod from <elasticbody shape=\"rod\" segments=\"2\" "
@@ -136,16 +133,20 @@ TEST_F(GenerateElastic, RefusesBadRequestsWithAMessageAndNoFile) {
           "be at least 1, found 0");
   refused("-o " + path("x.obj") + " rod --segments 3 --stretch 1 --m 1",
           "FOSSSim-generate: error: an elastic body is written as an XML scene, but the output "
-          "is " + path("x.obj"));
-  refused("-o " + path("x.xml") + " --max-particles 1000 sheet --nx 2000 --ny 2000 "
-          "--youngsmodulus 1 --poissonratio 0 --m 1",
+          "is " +
+              path("x.obj"));
+  refused("-o " + path("x.xml") +
+              " --max-particles 1000 sheet --nx 2000 --ny 2000 "
+              "--youngsmodulus 1 --poissonratio 0 --m 1",
           "a sheet of 2000 × 2000 cells has 4004001 vertices, more than the limit of 1000 "
           "particles (raise it with --max-particles N)");
-  refused("-o " + path("x.xml") + " obj --file missing.obj --youngsmodulus 1 --poissonratio 0 "
-          "--m 1",
+  refused("-o " + path("x.xml") +
+              " obj --file missing.obj --youngsmodulus 1 --poissonratio 0 "
+              "--m 1",
           "missing.obj");
-  refused("-o " + path("x.xml") + " --json " + path("x.json") + " rod --segments 3 --stretch 1 "
-          "--m 1",
+  refused("-o " + path("x.xml") + " --json " + path("x.json") +
+              " rod --segments 3 --stretch 1 "
+              "--m 1",
           "FOSSSim-generate: error: --json and --pins apply to meshes, not to elastic bodies");
 }
 
@@ -155,11 +156,13 @@ TEST_F(GenerateElastic, FOSSSimRefusesAPolygonOverTheCornerLimitUntilItIsRaised)
     const double a = 6.283185307179586 * k / 12;
     points += (k ? " " : "") + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a));
   }
-  folder_.write("polygon.xml", "<scene>\n<duration time=\"0.05\"/>\n"
-                               "<integrator type=\"implicit-euler\" dt=\"0.01\"/>\n"
-                               "<elasticbody shape=\"polygon\" points=\"" + points +
-                                   "\" youngsmodulus=\"10\" poissonratio=\"0.3\" m=\"1\"/>\n"
-                                   "</scene>\n");
+  folder_.write("polygon.xml",
+                "<scene>\n<duration time=\"0.05\"/>\n"
+                "<integrator type=\"implicit-euler\" dt=\"0.01\"/>\n"
+                "<elasticbody shape=\"polygon\" points=\"" +
+                    points +
+                    "\" youngsmodulus=\"10\" poissonratio=\"0.3\" m=\"1\"/>\n"
+                    "</scene>\n");
   const std::string run_it = kFosssim + " -s " + path("polygon.xml") + " -d 0 -q -o " +
                              path("p.bin") + " --max-polygon-corners ";
   const ProgramResult refused = run(run_it + "11");

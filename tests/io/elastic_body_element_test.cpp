@@ -2,13 +2,14 @@
 // (zero elastic force to round-off, since rest shapes are the initial positions), where its
 // forces sum, every refusal with its full message, and OBJ meshes with their file and line.
 
+#include "io/elastic_body_element.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "core/force_evaluation.h"
 #include "core/force_set.h"
-#include "io/elastic_body_element.h"
 #include "io/scene_error.h"
 #include "io/scene_loader.h"
 #include "support/scratch_folder.h"
@@ -75,13 +76,14 @@ TEST(ElasticBodyElement, ARodHasSpringsAndHingesAndEveryParticleTheGivenMass) {
 }
 
 TEST(ElasticBodyElement, EveryShapeStartsAtRestWithZeroElasticForce) {
-  for (const char* element : {
-           R"(<elasticbody shape="sheet" nx="6" ny="3" width="2" height="1" youngsmodulus="1e4" poissonratio="0.45" stretch="50" m="1" rotation="33" x="0.3"/>)",
-           R"(<elasticbody shape="rod" segments="7" length="2" stretch="100" bend="3" m="1" rotation="-71"/>)",
-           R"(<elasticbody shape="ring" segments="17" radius="1.5" stretch="100" bend="3" m="1" rotation="10"/>)",
-           R"(<elasticbody shape="ring" segments="17" radius="1.5" innerradius="1" layers="2" youngsmodulus="1e4" poissonratio="0.3" m="1"/>)",
-           R"(<elasticbody shape="polygon" points="0 0 4 0 4 1 2 0.5 1 3 0 1" spacing="0.3" youngsmodulus="1e4" poissonratio="0" totalmass="3" rotation="200"/>)",
-       }) {
+  for (
+      const char* element : {
+          R"(<elasticbody shape="sheet" nx="6" ny="3" width="2" height="1" youngsmodulus="1e4" poissonratio="0.45" stretch="50" m="1" rotation="33" x="0.3"/>)",
+          R"(<elasticbody shape="rod" segments="7" length="2" stretch="100" bend="3" m="1" rotation="-71"/>)",
+          R"(<elasticbody shape="ring" segments="17" radius="1.5" stretch="100" bend="3" m="1" rotation="10"/>)",
+          R"(<elasticbody shape="ring" segments="17" radius="1.5" innerradius="1" layers="2" youngsmodulus="1e4" poissonratio="0.3" m="1"/>)",
+          R"(<elasticbody shape="polygon" points="0 0 4 0 4 1 2 0.5 1 3 0 1" spacing="0.3" youngsmodulus="1e4" poissonratio="0" totalmass="3" rotation="200"/>)",
+      }) {
     const Scene scene = load_body(element);
     SCOPED_TRACE(element);
     ASSERT_FALSE(scene.model.forces.empty());
@@ -99,12 +101,12 @@ TEST(ElasticBodyElement, RestIsTheInitialShapeSoAStretchedStartPullsBack) {
 }
 
 TEST(ElasticBodyElement, ItsForcesSumRightAfterTheScenesOwnOfTheSameKind) {
-  const Scene scene = load_body(
-      R"(<elasticbody shape="rod" segments="2" stretch="1" bend="1" m="1"/>)",
-      "<particle m=\"1\" px=\"5\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
-      "<particle m=\"1\" px=\"6\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
-      "<elasticbodyspringforce i1=\"0\" i2=\"1\" alpha=\"1\" l0=\"1\"/>\n"
-      "<simplegravity fx=\"0\" fy=\"-1\"/>\n");
+  const Scene scene =
+      load_body(R"(<elasticbody shape="rod" segments="2" stretch="1" bend="1" m="1"/>)",
+                "<particle m=\"1\" px=\"5\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
+                "<particle m=\"1\" px=\"6\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
+                "<elasticbodyspringforce i1=\"0\" i2=\"1\" alpha=\"1\" l0=\"1\"/>\n"
+                "<simplegravity fx=\"0\" fy=\"-1\"/>\n");
   std::vector<std::string> labels;
   for (const auto& force : scene.model.forces) labels.push_back(force->label());
   ASSERT_EQ(labels.size(), 5u);
@@ -155,13 +157,15 @@ const Refusal kRefusals[] = {
      "and 1 (the plane-stress energy divides by 1 - ν²), found 1"},
     {"NegativeStretch", R"(<elasticbody shape="rod" segments="2" stretch="-1" m="1"/>)",
      "bad.xml:3: error: <elasticbody> 0: attribute \"stretch\" must be non-negative, found -1"},
-    {"ZeroCells", R"(<elasticbody shape="sheet" nx="0" ny="1" youngsmodulus="1" poissonratio="0" m="1"/>)",
+    {"ZeroCells",
+     R"(<elasticbody shape="sheet" nx="0" ny="1" youngsmodulus="1" poissonratio="0" m="1"/>)",
      "bad.xml:3: error: <elasticbody> 0: attribute \"nx\" must be at least 1, found 0"},
     {"InnerRadiusTooLarge",
      R"(<elasticbody shape="ring" segments="8" radius="1" innerradius="1" youngsmodulus="1" poissonratio="0" m="1"/>)",
      "bad.xml:3: error: <elasticbody> 0: attribute \"innerradius\" must be less than radius (1), "
      "found 1"},
-    {"OddPoints", R"(<elasticbody shape="polygon" points="0 0 1 0 1" youngsmodulus="1" poissonratio="0" m="1"/>)",
+    {"OddPoints",
+     R"(<elasticbody shape="polygon" points="0 0 1 0 1" youngsmodulus="1" poissonratio="0" m="1"/>)",
      "bad.xml:3: error: <elasticbody> 0: attribute \"points\" must hold x y pairs, found 5 "
      "numbers"},
     {"CrossingPolygon",
@@ -271,15 +275,18 @@ TEST_F(ElasticBodyObj, RefusesBadFilesNamingTheFileAndLine) {
   const std::string context = " (the mesh of scene.xml:3)";
   EXPECT_EQ(error_of("v 0 0\nv 1 0 0.5\nv 1 1\nf 1 2 3\n"),
             "mesh.obj:2: error: vertex 2 has z = 0.5: an elastic body is planar (z must be 0 or "
-            "absent)" + context);
+            "absent)" +
+                context);
   EXPECT_EQ(error_of("v 0 0\nv 1 0\nv 1 1\nv 0 1\nf 1 2 3 4\n"),
             "mesh.obj:5: error: a face of 4 corners: an elastic body's mesh holds triangles "
-            "only" + context);
+            "only" +
+                context);
   EXPECT_EQ(error_of("v 0 0\nv 1 0\nv 1 1\nf 1 2 7\n"),
             "mesh.obj:4: error: vertex index 7 is past the last vertex (the file has 3)" + context);
   EXPECT_EQ(error_of("v 0 0\nv 1 0\nv 1 1\nf 1 2 3\nl 1 3\n"),
             "mesh.obj:5: error: a polyline or a face of 2 corners: an elastic body's mesh holds "
-            "triangles only" + context);
+            "triangles only" +
+                context);
   EXPECT_EQ(error_of("v 0 0\nv 1 0\nv 2 0\nf 1 2 3\n"),
             "mesh.obj:4: error: the triangle has zero area (its corners are collinear)" + context);
   EXPECT_EQ(error_of("v 0 0\nv 1 0\nv 1 1\nv 5 5\nf 1 2 3\n"),
@@ -299,8 +306,8 @@ TEST(ElasticBodyText, ReadsOneElementAsTheSceneReaderDoes) {
   EXPECT_EQ(*read.body.material.stretch, 3.0);
   EXPECT_NEAR(read.body.particles.masses[0], 0.5, 1e-15);
   EXPECT_EQ(thrown_by<SceneError>([&] {
-              read_elastic_body_text(R"(<elasticbody shape="ring" segments="2"/>)",
-                                     "command line", files);
+              read_elastic_body_text(R"(<elasticbody shape="ring" segments="2"/>)", "command line",
+                                     files);
             }).what(),
             std::string("command line:1: error: <elasticbody>: attribute \"segments\" must be at "
                         "least 3, found 2"));

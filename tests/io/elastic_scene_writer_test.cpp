@@ -2,6 +2,8 @@
 // back, it is the model the <elasticbody> element makes, bit for bit, even where numbers and
 // indices are large (100000 is written "100000", never "1e+05").
 
+#include "io/elastic_scene_writer.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -9,7 +11,6 @@
 #include "core/force_evaluation.h"
 #include "core/force_set.h"
 #include "io/elastic_body_element.h"
-#include "io/elastic_scene_writer.h"
 #include "io/scene_loader.h"
 
 namespace fosssim {

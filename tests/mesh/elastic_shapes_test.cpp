@@ -3,6 +3,8 @@
 // hinges at the rod's interior vertices, triangulations that cover the polygon exactly and are
 // (constrained) Delaunay, lumped masses that sum to the total, and the limits.
 
+#include "mesh/elastic_shapes.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,7 +15,6 @@
 
 #include "core/error.h"
 #include "mesh/elastic_body.h"
-#include "mesh/elastic_shapes.h"
 #include "support/thrown.h"
 
 namespace fosssim {
@@ -53,7 +54,8 @@ void expect_manifold(const ElasticShape& s) {
   for (const auto& t : s.triangles) {
     for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
   }
-  for (const auto& [edge, count] : directed) EXPECT_EQ(count, 1) << edge.first << "-" << edge.second;
+  for (const auto& [edge, count] : directed)
+    EXPECT_EQ(count, 1) << edge.first << "-" << edge.second;
 }
 
 int euler_characteristic(const ElasticShape& s) {
@@ -94,13 +96,15 @@ void expect_delaunay(const ElasticShape& s) {
     // Circumcentre of (a, b, c), then compare distances.
     const double D = 2.0 * orientation(a, b, c);
     const double ux = (a.squaredNorm() * (b.y() - c.y()) + b.squaredNorm() * (c.y() - a.y()) +
-                       c.squaredNorm() * (a.y() - b.y())) / D;
+                       c.squaredNorm() * (a.y() - b.y())) /
+                      D;
     const double uy = (a.squaredNorm() * (c.x() - b.x()) + b.squaredNorm() * (a.x() - c.x()) +
-                       c.squaredNorm() * (b.x() - a.x())) / D;
+                       c.squaredNorm() * (b.x() - a.x())) /
+                      D;
     const Eigen::Vector2d centre(ux, uy);
     const double r = (a - centre).norm();
-    EXPECT_GE((d - centre).norm(), r * (1.0 - 1e-9)) << "illegal edge " << side.first << "-"
-                                                     << side.second;
+    EXPECT_GE((d - centre).norm(), r * (1.0 - 1e-9))
+        << "illegal edge " << side.first << "-" << side.second;
   }
 }
 
@@ -190,8 +194,8 @@ void expect_good_polygon(const Points& outline, double spacing) {
 }
 
 const Points kArrow = {{0, 0}, {4, 0}, {4, 1}, {2, 0.5}, {1, 3}, {0, 1}};
-const Points kComb = {{0, 0}, {5, 0}, {5, 2}, {4, 2}, {4, 0.5}, {3, 0.5},
-                      {3, 2}, {2, 2}, {2, 0.5}, {1, 0.5}, {1, 2}, {0, 2}};
+const Points kComb = {{0, 0}, {5, 0}, {5, 2},   {4, 2},   {4, 0.5}, {3, 0.5},
+                      {3, 2}, {2, 2}, {2, 0.5}, {1, 0.5}, {1, 2},   {0, 2}};
 
 TEST(ElasticPolygon, TriangulatesConvexAndConcaveOutlinesWithAndWithoutInteriorPoints) {
   expect_good_polygon({{0, 0}, {1, 0}, {0, 1}}, 0.0);
@@ -243,7 +247,8 @@ TEST(ElasticPolygon, SpacingCutsSidesAndFillsTheInterior) {
   EXPECT_EQ(s.num_vertices(), 4 + 20 + 21);
   for (const auto& t : s.triangles) {
     for (int k = 0; k < 3; ++k)
-      EXPECT_LE((s.vertices[t[k]] - s.vertices[t[(k + 1) % 3]]).norm(), 0.25 * std::sqrt(2.0) + 1e-12);
+      EXPECT_LE((s.vertices[t[k]] - s.vertices[t[(k + 1) % 3]]).norm(),
+                0.25 * std::sqrt(2.0) + 1e-12);
   }
 }
 
@@ -269,7 +274,9 @@ TEST(ElasticShapes, AreRefusedBeforeGenerationOverTheParticleLimit) {
   EXPECT_EQ(thrown_message([] { make_rod(10, 1.0, 5); }),
             "a rod of 10 segments has 11 vertices, more than the limit of 5 particles (raise it "
             "with --max-particles N)");
-  EXPECT_EQ(thrown_message([] { make_polygon({{0, 0}, {1, 0}, {0, 1}}, 1e-4, 1000); }),
+  EXPECT_EQ(thrown_message([] {
+              make_polygon({{0, 0}, {1, 0}, {0, 1}}, 1e-4, 1000);
+            }),
             // 3 corners, 2 · 9999 + 14142 cuts, 10001² grid points.
             "the polygon at spacing 1e-04 (its corners, the cuts of its sides and the grid over "
             "its box) may have 100054144 vertices, more than the limit of 1000 particles (raise "
@@ -335,7 +342,8 @@ TEST(ElasticForces, DeclaresSpringsHingesAndTrianglesWithRestValuesFromThePositi
                            lines.push_back(line);
                          });
   ASSERT_EQ(lines.size(), 3u);
-  EXPECT_EQ(lines[0], "elasticbodyspringforce i1=10.000000 i2=11.000000 alpha=5.000000 l0=1.000000");
+  EXPECT_EQ(lines[0],
+            "elasticbodyspringforce i1=10.000000 i2=11.000000 alpha=5.000000 l0=1.000000");
   EXPECT_EQ(lines[2],
             "elasticbodybendingforce i1=10.000000 i2=11.000000 i3=12.000000 alpha=0.500000 "
             "theta0=0.000000");
