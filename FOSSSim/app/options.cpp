@@ -125,6 +125,12 @@ void add_limit_options(CLI::App& app, Options& options) {
       ->check(CLI::Range(std::int64_t{3}, std::int64_t{1} << 16))
       ->capture_default_str()
       ->group(group);
+  app.add_option("--max-polygon-corners", options.max_polygon_corners,
+                 "Refuse an <elasticbody shape=\"polygon\"> of more corners than this (its\n"
+                 "triangulation takes time quadratic in them)")
+      ->check(CLI::Range(std::int64_t{3}, std::int64_t{1} << 24))
+      ->capture_default_str()
+      ->group(group);
   app.add_option("--max-hybrid-passes", options.max_hybrid_passes,
                  "Make at most this many impulse passes a step of hybrid collision handling;\n"
                  "a larger maxiters is read as this many, with a warning")
@@ -316,6 +322,7 @@ Limits limits_of(const Options& options) {
   limits.max_face_corners = options.max_face_corners;
   limits.max_attributes = options.max_attributes;
   limits.max_hybrid_passes = options.max_hybrid_passes;
+  limits.max_polygon_corners = options.max_polygon_corners;
   return limits;
 }
 
@@ -447,7 +454,7 @@ void add_options(CLI::App& app, Options& options) {
        {"-d", "-p", "--threads", "--duration", "--dt", "--newton-max-iterations",
         "--newton-tolerance", "--movie-stride", "--fps", "--window-screenshot-step",
         "--max-steps", "--max-particles", "--max-file-size", "--max-face-corners",
-        "--max-attributes", "--max-hybrid-passes"}) {
+        "--max-attributes", "--max-hybrid-passes", "--max-polygon-corners"}) {
     app.get_option(name)->check(decimal_number());
   }
   for (const char* name : {"-s", "-i", "--residual-file", "--window-screenshot"}) {

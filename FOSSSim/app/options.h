@@ -56,6 +56,7 @@ struct Options {
   std::int64_t max_face_corners = Limits{}.max_face_corners;    ///< --max-face-corners
   std::int64_t max_attributes = Limits{}.max_attributes;        ///< --max-attributes
   std::int64_t max_hybrid_passes = Limits{}.max_hybrid_passes;  ///< --max-hybrid-passes
+  std::int64_t max_polygon_corners = Limits{}.max_polygon_corners;  ///< --max-polygon-corners
 };
 
 /// The limits the options set.
