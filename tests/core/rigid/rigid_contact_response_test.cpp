@@ -231,7 +231,7 @@ TEST(RigidContactResponse, FixedBodyVelocityEntersTheLcpButNotTheProjection) {
   Vector v = state.v;
   v[4] = -0.1;
   ContactReport report, vp_report;
-  const Error error = thrown_by([&] {
+  const Error error = thrown_by([&, &state = state] {
     apply_generalized_reflections(ContactSolver::kLcp, bodies, state.q, contacts, 50, v, report);
   });
   EXPECT_NE(std::string(error.what()).find("did not end after 50 reflections"), std::string::npos)
@@ -273,7 +273,7 @@ TEST(RigidContactResponse, AFreeBodyExactlyTouchingFailsClearly) {
   const auto contacts = detect_rigid_contacts(*model.rigid_bodies, state.q);
   Vector v = state.v;
   ContactReport report;
-  const Error error = thrown_by([&] {
+  const Error error = thrown_by([&, &model = model, &state = state] {
     apply_inelastic_response(ContactSolver::kVelocityProjection, *model.rigid_bodies, state.q,
                              contacts, v, report);
   });
