@@ -22,50 +22,50 @@ std::string trajectory_kept_note(const std::string& kept, const std::string& pat
          " was not written)";
 }
 
+/// What both trajectory outputs share: the file's writer, the frames written so far, and how a
+/// finished, described or abandoned run reports them. `Writer` has commit(), path() and
+/// abandon() like TrajectoryWriter.
+template <class Writer>
+class CountedTrajectoryOutput : public FrameOutput {
+ public:
+  void commit() override { writer_.commit(); }
+  std::string describe() const override {
+    return "the trajectory " + writer_.path() + " (" + std::to_string(frames_) + " frames)";
+  }
+  std::string abandon() override {
+    return trajectory_kept_note(writer_.abandon(), writer_.path(), frames_);
+  }
+
+ protected:
+  explicit CountedTrajectoryOutput(Writer writer) : writer_(std::move(writer)) {}
+  Writer writer_;
+  std::int64_t frames_ = 0;
+};
+
 /// A particle scene's trajectory: continuous-time and hybrid steps write their sync record,
 /// then their end-of-step record (docs/collisions.md).
-class TrajectoryOutput final : public FrameOutput {
+class TrajectoryOutput final : public CountedTrajectoryOutput<TrajectoryWriter> {
  public:
   TrajectoryOutput(TrajectoryWriter writer, TrajectoryLayout layout)
-      : writer_(std::move(writer)), layout_(layout) {}
+      : CountedTrajectoryOutput(std::move(writer)), layout_(layout) {}
   void write(Frame& frame) override {
     write_trajectory_state(writer_, layout_, frame.state(), frame.record());
     ++frames_;
   }
-  void commit() override { writer_.commit(); }
-  std::string describe() const override {
-    return "the trajectory " + writer_.path() + " (" + std::to_string(frames_) + " frames)";
-  }
-  std::string abandon() override {
-    return trajectory_kept_note(writer_.abandon(), writer_.path(), frames_);
-  }
 
  private:
-  TrajectoryWriter writer_;
   TrajectoryLayout layout_;
-  std::int64_t frames_ = 0;
 };
 
 /// A rigid-body scene's trajectory: the course's Theme 3 layout.
-class RigidTrajectoryOutput final : public FrameOutput {
+class RigidTrajectoryOutput final : public CountedTrajectoryOutput<RigidTrajectoryWriter> {
  public:
   RigidTrajectoryOutput(TrajectoryWriter writer, const SceneModel& model)
-      : writer_(std::move(writer), model) {}
+      : CountedTrajectoryOutput(RigidTrajectoryWriter(std::move(writer), model)) {}
   void write(Frame& frame) override {
     writer_.write(frame.state());
     ++frames_;
   }
-  void commit() override { writer_.commit(); }
-  std::string describe() const override {
-    return "the trajectory " + writer_.path() + " (" + std::to_string(frames_) + " frames)";
-  }
-  std::string abandon() override {
-    return trajectory_kept_note(writer_.abandon(), writer_.path(), frames_);
-  }
-
- private:
-  RigidTrajectoryWriter writer_;
-  std::int64_t frames_ = 0;
 };
 
 std::unique_ptr<FrameOutput> open_trajectory_output(const std::string& path,
