@@ -1,7 +1,10 @@
 # One scene's trajectory from the WebAssembly build (fosssim-web-run under Node) must have the
 # same SHA-256 as the native build's: the regression manifest's entry (-DMANIFEST=golden.tsv), or
 # the native program's own run (-DNATIVE=FOSSSim; ctest reports "skipped" when there is none);
-# with -DSIZE_ONLY=ON only its size (scenes that call libm's sin, cos or atan2; docs/web.md).
+# with -DSIZE_ONLY=ON only its size (scenes that call libm's sin, cos or atan2, rigid contact
+# without ODE; docs/web.md), and then, when -DGRADER names a native FOSSSim that exists, that
+# the native grader (-i, the course's criteria: every step retaken from the file's previous
+# state) passes it: the same physics to round-off.
 #   cmake -DNODE=node -DDRIVER=fosssim-web-run.js -DSOURCE_DIR=... -DSCENE=assets/... \
 #         -DWORK_DIR=... (-DMANIFEST=... | -DNATIVE=...) -P check_same_bytes.cmake
 
@@ -53,7 +56,18 @@ if(SIZE_ONLY)  # -DSIZE_ONLY=ON: the native size (frames and layout) is all that
     message(FATAL_ERROR "${SCENE}: the wasm trajectory has ${web_bytes} bytes, ${reference} "
                         "${native_bytes}; it is kept in ${web_output}")
   endif()
-  message(STATUS "${SCENE}: the size of ${reference} (${web_bytes} bytes; wasm run ${seconds} s)")
+  set(graded "")
+  if(DEFINED GRADER AND EXISTS ${GRADER})
+    execute_process(COMMAND ${GRADER} -s ${SOURCE_DIR}/${SCENE} -d 0 -q -i ${web_output}
+                    RESULT_VARIABLE status OUTPUT_VARIABLE report ERROR_VARIABLE errors)
+    if(NOT status EQUAL 0)
+      message(FATAL_ERROR "${SCENE}: the native grader ${GRADER} fails the wasm trajectory "
+                          "(exit ${status}):\n${report}${errors}")
+    endif()
+    set(graded "; the native grader passes it")
+  endif()
+  message(STATUS "${SCENE}: the size of ${reference} (${web_bytes} bytes; wasm run ${seconds} s)"
+                 "${graded}")
   return()
 endif()
 if(NOT web_digest STREQUAL native_digest OR NOT web_bytes EQUAL native_bytes)

@@ -1,6 +1,10 @@
-// The page: loads the scene in the text box into FOSSSim (fosssim.js, the WebAssembly build's
-// WebSession), runs, pauses, steps and resets it, and paints its drawing commands
-// (web/src/web_session.cpp) on the canvas as the native pictures paint the same Drawing.
+// The page: loads the scene in the text box (picked from the repository's suites, opened or
+// pasted, edited at will) into FOSSSim (fosssim.js, the WebAssembly build's WebSession), runs,
+// pauses, steps and resets it, paints its drawing commands (web/src/web_session.cpp) on the
+// canvas as the native pictures paint the same Drawing, lets the mouse drag particles, plots the
+// energy, downloads the trajectory (the -o file) and grades an uploaded one (the -i report).
+// With ?test=... it runs one of the browser tests of web/browser_test.py and writes the result
+// into <pre id="test-result"> (docs/web.md, "Tests in a real browser").
 "use strict";
 
 const kPendulum = `<scene>
@@ -93,37 +97,91 @@ function paint(context, values) {
   }
 }
 
+/// Plots the energies (kinetic, potential, total: one row of three per state) on `canvas`.
+function plotEnergy(canvas, rows) {
+  const context = canvas.getContext("2d");
+  const w = canvas.width, h = canvas.height, margin = 4;
+  context.fillStyle = "#fff";
+  context.fillRect(0, 0, w, h);
+  if (rows.length < 2) return;
+  let low = Infinity, high = -Infinity;
+  for (const row of rows) for (const e of row) { low = Math.min(low, e); high = Math.max(high, e); }
+  if (!(high > low)) { high = low + 1; low -= 1; }
+  const colors = ["#1f77b4", "#ff7f0e", "#222"];
+  for (let k = 0; k < 3; ++k) {
+    context.beginPath();
+    rows.forEach((row, i) => {
+      const x = margin + (w - 2 * margin) * i / (rows.length - 1);
+      const y = h - margin - (h - 2 * margin) * (row[k] - low) / (high - low);
+      if (i === 0) context.moveTo(x, y); else context.lineTo(x, y);
+    });
+    context.strokeStyle = colors[k];
+    context.lineWidth = 1.5;
+    context.stroke();
+  }
+}
+
+/// SHA-256 of bytes as lowercase hex, as the regression manifest records trajectories.
+async function sha256(bytes) {
+  const digest = new Uint8Array(await crypto.subtle.digest("SHA-256", bytes));
+  return Array.from(digest, (b) => b.toString(16).padStart(2, "0")).join("");
+}
+
+async function fetchText(url) {
+  const response = await fetch(url);
+  if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
+  return response.text();
+}
+
 FOSSSimModule().then((fosssim) => {
   const session = new fosssim.WebSession();
-  const canvas = document.getElementById("view");
+  const $ = (id) => document.getElementById(id);
+  const canvas = $("view");
   const context = canvas.getContext("2d");
-  const text = document.getElementById("scene-text");
-  const error = document.getElementById("error");
-  const warnings = document.getElementById("warnings");
-  const status = document.getElementById("status");
+  const text = $("scene-text");
+  const error = $("error");
+  const warnings = $("warnings");
+  const status = $("status");
+  const report = $("grade-report");
   let running = false;
   let name = "scene.xml";
+  let energies = [];
 
+  const vector = (v) => {
+    const values = new Array(v.size());
+    for (let i = 0; i < values.length; ++i) values[i] = v.get(i);
+    v.delete();
+    return values;
+  };
   const draw = () => {
-    const commands = session.draw();
-    const values = new Array(commands.size());
-    for (let i = 0; i < values.length; ++i) values[i] = commands.get(i);
-    commands.delete();
-    paint(context, values);
+    paint(context, vector(session.draw()));
     status.textContent = `t = ${session.time().toFixed(3)}, step ${session.steps()}`;
+    plotEnergy($("energy"), energies);
+  };
+  const recordEnergy = () => {
+    const e = vector(session.energy());
+    if (e.length === 3) energies.push(e);
   };
   const load = () => {
     running = false;
+    energies = [];
+    report.textContent = "";
     const problem = session.load(text.value, name, canvas.width, canvas.height);
     error.textContent = problem;
     warnings.textContent = problem ? "" : session.warnings();
+    recordEnergy();
     draw();
+    return problem;
   };
   const advance = (count) => {
-    const problem = session.step(count);
-    if (problem) {
-      error.textContent = problem;
-      running = false;
+    for (let k = 0; k < count && !session.finished(); ++k) {
+      const problem = session.step(1);
+      if (problem) {
+        error.textContent = problem;
+        running = false;
+        break;
+      }
+      recordEnergy();
     }
     draw();
   };
@@ -134,24 +192,158 @@ FOSSSimModule().then((fosssim) => {
     }
     requestAnimationFrame(frame);
   };
+  /// Loads a scene of the repository's suites (a path listed in scenes/index.json).
+  const pick = async (path) => {
+    name = path;
+    text.value = await fetchText(`scenes/${path}`);
+    return load();
+  };
+  /// The loaded scene's trajectory file (the bytes of FOSSSim -s SCENE -d 0 -o OUT), or null.
+  const trajectory = () => {
+    const bytes = session.trajectory();
+    if (bytes === null) error.textContent = session.lastError();
+    return bytes;
+  };
+  /// Grades an uploaded trajectory (a File or Blob) against the loaded scene: the file input's
+  /// handler, and what the grading test feeds its bytes through.
+  const grade = async (file) => {
+    const bytes = new Uint8Array(await file.arrayBuffer());
+    const outcome = session.grade(bytes, file.name || "trajectory.bin");
+    report.textContent = outcome.report + (outcome.problem ? outcome.problem + "\n" : "") +
+        (outcome.passed ? "verdict: passed" : "verdict: failed");
+    report.dataset.passed = outcome.passed ? "1" : "0";
+    return outcome;
+  };
 
-  document.getElementById("open").addEventListener("change", (event) => {
+  fetchText("scenes/index.json").then((index) => {
+    const picker = $("picker");
+    for (const path of JSON.parse(index)) picker.add(new Option(path, path));
+  }).catch((problem) => { warnings.textContent = `no scene index: ${problem.message}`; });
+  $("picker").addEventListener("change", (event) => {
+    if (event.target.value) pick(event.target.value).catch((p) => { error.textContent = p.message; });
+  });
+  $("open").addEventListener("change", (event) => {
     const file = event.target.files[0];
     if (!file) return;
     name = file.name;
     file.text().then((content) => { text.value = content; load(); });
   });
-  document.getElementById("load").addEventListener("click", load);
-  document.getElementById("run").addEventListener("click", () => { running = true; });
-  document.getElementById("pause").addEventListener("click", () => { running = false; });
-  document.getElementById("step").addEventListener("click", () => { running = false; advance(1); });
-  document.getElementById("reset").addEventListener("click", () => {
+  $("load").addEventListener("click", load);
+  $("run").addEventListener("click", () => { running = true; });
+  $("pause").addEventListener("click", () => { running = false; });
+  $("step").addEventListener("click", () => { running = false; advance(1); });
+  $("reset").addEventListener("click", () => {
     running = false;
     session.reset();
+    energies = [];
+    recordEnergy();
     draw();
   });
+  $("download").addEventListener("click", () => {
+    const bytes = trajectory();
+    if (bytes === null) return;
+    const link = document.createElement("a");
+    link.href = URL.createObjectURL(new Blob([bytes], { type: "application/octet-stream" }));
+    link.download = name.replace(/^.*\//, "").replace(/\.xml$/, "") + ".bin";
+    link.click();
+    URL.revokeObjectURL(link.href);
+  });
+  $("upload").addEventListener("change", (event) => {
+    const file = event.target.files[0];
+    if (file) grade(file);
+  });
+  // Dragging: the native window's ctrl + left drag, here any left drag on a particle.
+  const pixel = (event) => {
+    const box = canvas.getBoundingClientRect();
+    return [(event.clientX - box.left) * canvas.width / box.width,
+            (event.clientY - box.top) * canvas.height / box.height];
+  };
+  canvas.addEventListener("mousedown", (event) => {
+    if (event.button === 0 && session.press(...pixel(event))) draw();
+  });
+  canvas.addEventListener("mousemove", (event) => { session.move(...pixel(event)); });
+  window.addEventListener("mouseup", () => { session.release(); });
+
   text.value = kPendulum;
   load();
-  window.fosssimReady = true;  // for the browser tests
   requestAnimationFrame(frame);
+  const params = new URLSearchParams(location.search);
+  if (params.has("test")) {
+    runTest(params, { session, pick, trajectory, grade, advance, draw, load, text, error, canvas })
+      .catch((problem) => `test failed: ${problem.message}`)
+      .then((result) => {
+        const out = $("test-result");
+        out.textContent = result;
+        out.dataset.done = "1";
+      });
+  } else {
+    // ?scene=PATH[&steps=K]: open a scene of the suites (a link to share), K steps taken.
+    if (params.has("scene")) {
+      const path = params.get("scene");
+      pick(path).then(() => {
+        $("picker").value = path;
+        advance(Number(params.get("steps") || 0));
+      }).catch((problem) => { error.textContent = problem.message; });
+    }
+    if ("serviceWorker" in navigator) navigator.serviceWorker.register("service-worker.js");
+  }
+  window.fosssimReady = true;
 });
+
+/// The browser tests' page side (web/browser_test.py reads #test-result from the dumped DOM).
+///   ?test=digests&scenes=a.xml,b.xml   one line per scene: path, bytes, SHA-256 of its trajectory
+///   ?test=error&name=N&scene=TEXT       the error text of loading TEXT named N, as the page shows it
+///   ?test=grade&scene=P&upload=URL      the report of grading the file at URL against scene P
+///   ?test=picture&scene=P&steps=K       K steps, then only the canvas is shown (a screenshot)
+///   ?test=timing&url=U                  the page's load time and the time per step of scene U
+async function runTest(params, page) {
+  const test = params.get("test");
+  if (test === "digests") {
+    const lines = [];
+    for (const path of params.get("scenes").split(",")) {
+      const problem = await page.pick(path);
+      if (problem) { lines.push(`${path}\tERROR\t${problem}`); continue; }
+      const bytes = page.trajectory();
+      if (bytes === null) { lines.push(`${path}\tERROR\t${page.session.lastError()}`); continue; }
+      lines.push(`${path}\t${bytes.length}\t${await sha256(bytes)}`);
+    }
+    return lines.join("\n");
+  }
+  if (test === "error") {
+    page.text.value = params.get("scene");
+    page.load();
+    return page.error.textContent;
+  }
+  if (test === "grade") {
+    const problem = await page.pick(params.get("scene"));
+    if (problem) return problem;
+    const response = await fetch(params.get("upload"));
+    const file = new File([await response.blob()], params.get("upload").replace(/^.*\//, ""));
+    await page.grade(file);  // the file input's own handler
+    return document.getElementById("grade-report").textContent;
+  }
+  if (test === "picture") {
+    const problem = await page.pick(params.get("scene"));
+    if (problem) return problem;
+    page.advance(Number(params.get("steps") || 0));
+    document.body.classList.add("picture-only");
+    return `t=${page.session.time()}`;
+  }
+  if (test === "timing") {
+    // Not a test: the figures of docs/web.md, "Speed" (browser_test.py timing).
+    const ready = performance.now();  // milliseconds since the navigation started
+    page.text.value = await fetchText(params.get("url"));
+    const problem = page.load();
+    if (problem) return problem;
+    const start = performance.now();
+    let steps = 0;
+    while (!page.session.finished()) {
+      const failure = page.session.step(1);
+      if (failure) return failure;
+      ++steps;
+    }
+    const elapsed = performance.now() - start;
+    return `load_ms\t${ready.toFixed(0)}\nsteps\t${steps}\nms_per_step\t${(elapsed / steps).toFixed(3)}`;
+  }
+  throw new Error(`unknown test ${test}`);
+}

@@ -11,14 +11,10 @@
 
 #include "core/error.h"
 #include "core/limits.h"
-#include "core/step/simulation.h"
 #include "core/step_error.h"
 #include "io/input_files.h"
-#include "io/rigid_trajectory.h"
 #include "io/scene_loader.h"
-#include "io/trajectory_file.h"
-#include "io/trajectory_steps.h"
-#include "scripting/step_hooks.h"
+#include "scene_trajectory.h"
 
 namespace fosssim {
 namespace {
@@ -28,27 +24,8 @@ int run(const std::string& scene_path, const std::string& output) {
   const Scene scene = load_scene_file(scene_path, files);
   check_step_count(scene.model, files.limits());
   for (const std::string& warning : scene.warnings) std::cerr << warning << "\n";
-  Simulation simulation(scene.model, scene.initial, scripted_additions(scene));
-  TrajectoryWriter writer = TrajectoryWriter::open(output);
-  if (scene.model.rigid_bodies) {
-    RigidTrajectoryWriter rigid(std::move(writer), scene.model);
-    rigid.write(simulation.state());
-    while (!simulation.finished()) {
-      simulation.step();
-      rigid.write(simulation.state());
-    }
-    rigid.commit();
-  } else {
-    const TrajectoryLayout layout = trajectory_layout(scene.model);
-    write_trajectory_state(writer, layout, simulation.state(), nullptr);
-    while (!simulation.finished()) {
-      simulation.step();
-      write_trajectory_state(writer, layout, simulation.state(), &simulation.last_record());
-    }
-    writer.commit();
-  }
-  std::cout << "Simulation complete at time " << simulation.state().time << ". Exiting."
-            << std::endl;
+  const double end = write_scene_trajectory(scene, output);
+  std::cout << "Simulation complete at time " << end << ". Exiting." << std::endl;
   return 0;
 }
 

@@ -4,20 +4,33 @@
 // page's canvas (web/page/fosssim-page.js paints them).
 
 #include <emscripten/bind.h>
+#include <emscripten/val.h>
 
+#include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
+#include "core/analysis/energy.h"
 #include "core/error.h"
 #include "core/limits.h"
 #include "core/step/simulation.h"
+#include "grading/grader.h"
+#include "grading/rigid_grader.h"
+#include "grading/step_grader.h"
 #include "io/scene_loader.h"
+#include "io/trajectory_file.h"
 #include "render/drawing.h"
 #include "render/scene_view.h"
+#include "scene_trajectory.h"
 #include "scripting/step_hooks.h"
+#include "viewer/particle_grab.h"
 
 namespace fosssim {
 namespace {
@@ -87,12 +100,29 @@ class Commands {
 
 }  // namespace
 
+/// Bytes of a file of Emscripten's in-memory file system, which the page's trajectories pass
+/// through: FOSSSim's writers and readers work on files, as natively.
+std::string read_memory_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+/// The result of grading an uploaded trajectory: what `FOSSSim -s SCENE -i FILE` prints on its
+/// standard output (the report) and standard error (the failure's description or the error),
+/// and whether it passed (exit status 0).
+struct GradeOutcome {
+  std::string report;
+  std::string problem;
+  bool passed = false;
+};
+
 /// One loaded scene and its run. load() returns the error text (file:line: error: ...) or "".
 class WebSession {
  public:
   std::string load(const std::string& text, const std::string& name, int width, int height) {
-    simulation_.reset();
     view_.reset();
+    simulation_.reset();
+    grab_.reset();
     scene_.reset();
     try {
       Scene scene = load_scene_text(text, name);
@@ -110,8 +140,13 @@ class WebSession {
 
   void reset() {
     if (!scene_) return;
-    simulation_ = std::make_unique<Simulation>(scene_->model, scene_->initial,
-                                               scripted_additions(*scene_));
+    view_.reset();
+    simulation_.reset();
+    grab_ = std::make_unique<ParticleGrab>(*scene_);
+    StepAdditions additions = scripted_additions(*scene_);
+    additions.interaction_forces.push_back(&grab_->force());
+    simulation_ =
+        std::make_unique<Simulation>(scene_->model, scene_->initial, std::move(additions));
     view_ = std::make_unique<SceneView>(*scene_, simulation_->state(), width_, height_);
   }
 
@@ -140,11 +175,101 @@ class WebSession {
     return all;
   }
 
+  /// Kinetic, potential and total energy of the current state (core/analysis/energy.h), as the
+  /// native energy plot computes them; empty without a scene.
+  std::vector<double> energy() const {
+    if (!simulation_) return {};
+    const EnergyReport e = compute_energies(scene_->model, simulation_->state());
+    return {e.kinetic, e.potential, e.total()};
+  }
+
+  /// Mouse dragging, as the native window's: press grabs the free particle under pixel (x, y)
+  /// (returns false when there is none), move pulls it toward the cursor, release lets go.
+  bool press(double x, double y) {
+    return view_ && grab_->press(*view_, simulation_->state(), x, y);
+  }
+  void move(double x, double y) {
+    if (view_ && grab_->active()) grab_->move(*view_, x, y);
+  }
+  void release() {
+    if (grab_) grab_->release();
+  }
+
+  /// The loaded scene's whole run from its initial state as the bytes of its trajectory file
+  /// (a Uint8Array), exactly what `FOSSSim -s SCENE -d 0 -o OUT` writes (scene_trajectory.h),
+  /// or null with the error in last_error(). The interactive run is not touched.
+  emscripten::val trajectory() {
+    const std::string bytes = trajectory_bytes();
+    if (!error_.empty()) return emscripten::val::null();
+    // A copy: the view into the wasm memory is gone when `bytes` is.
+    return emscripten::val::global("Uint8Array")
+        .new_(emscripten::typed_memory_view(bytes.size(),
+                                            reinterpret_cast<const unsigned char*>(bytes.data())));
+  }
+  std::string trajectory_bytes() {
+    error_.clear();
+    if (!scene_) {
+      error_ = "no scene is loaded";
+      return {};
+    }
+    const std::string path = "/tmp/fosssim-trajectory.bin";
+    try {
+      write_scene_trajectory(*scene_, path);
+    } catch (const std::exception& error) {
+      error_ = scene_->source + ": " + error.what();
+      return {};
+    }
+    std::string bytes = read_memory_file(path);
+    std::remove(path.c_str());
+    return bytes;
+  }
+  std::string last_error() const { return error_; }
+
+  /// Grades the trajectory `bytes` (an uploaded file called `name`) against the loaded scene
+  /// with the course's criteria, through the code `FOSSSim -s SCENE -i FILE` runs
+  /// (app/run_grading.cpp): the same report, failure description and verdict.
+  GradeOutcome grade(const std::string& bytes, const std::string& name) {
+    GradeOutcome out;
+    if (!scene_) {
+      out.problem = "no scene is loaded";
+      return out;
+    }
+    const std::string path = "/tmp/fosssim-upload.bin";
+    {
+      std::ofstream file(path, std::ios::binary | std::ios::trunc);
+      file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    }
+    std::ostringstream report;
+    try {
+      if (scene_->model.rigid_bodies) {
+        const RigidGradeReport rigid = grade_rigid_trajectory(*scene_, path);
+        print_rigid_grade_report(report, rigid);
+        out.passed = rigid.passed();
+      } else {
+        TrajectoryReader file = open_trajectory(path, scene_->model);
+        StepGrader grader = StepGrader::open(*scene_, file, std::nullopt, Cancellation());
+        while (grader.grade_next_step()) {
+        }
+        const GradeReport& result = grader.report();
+        print_grade_report(report, result);
+        out.passed = result.passed();
+        if (!out.passed) out.problem = describe_failure(result, scene_->model.dim);
+      }
+    } catch (const std::exception& error) {
+      out.problem = name + ": " + error.what();
+    }
+    std::remove(path.c_str());
+    out.report = report.str();
+    return out;
+  }
+
   /// The drawing of the current state, as commands (see Command).
   std::vector<double> draw() const {
     Commands commands;
     if (!view_) return commands.take();
-    const Drawing d = view_->compose(simulation_->state());
+    Overlay overlay;
+    overlay.drag = grab_->guide();
+    const Drawing d = view_->compose(simulation_->state(), overlay);
     commands.background(d.background);
     for (const Region& r : d.regions) commands.add(r);
     for (const Polyline& p : d.paths) commands.add(p);
@@ -158,13 +283,19 @@ class WebSession {
 
  private:
   std::unique_ptr<Scene> scene_;
+  std::unique_ptr<ParticleGrab> grab_;  // before the simulation, which holds its spring
   std::unique_ptr<Simulation> simulation_;
   std::unique_ptr<SceneView> view_;
+  std::string error_;
   int width_ = 640, height_ = 480;
 };
 
 EMSCRIPTEN_BINDINGS(fosssim) {
   emscripten::register_vector<double>("VectorDouble");
+  emscripten::value_object<GradeOutcome>("GradeOutcome")
+      .field("report", &GradeOutcome::report)
+      .field("problem", &GradeOutcome::problem)
+      .field("passed", &GradeOutcome::passed);
   emscripten::class_<WebSession>("WebSession")
       .constructor<>()
       .function("load", &WebSession::load)
@@ -174,6 +305,13 @@ EMSCRIPTEN_BINDINGS(fosssim) {
       .function("time", &WebSession::time)
       .function("steps", &WebSession::steps)
       .function("warnings", &WebSession::warnings)
+      .function("energy", &WebSession::energy)
+      .function("press", &WebSession::press)
+      .function("move", &WebSession::move)
+      .function("release", &WebSession::release)
+      .function("trajectory", &WebSession::trajectory)
+      .function("lastError", &WebSession::last_error)
+      .function("grade", &WebSession::grade)
       .function("draw", &WebSession::draw);
 }
 
