@@ -22,11 +22,11 @@ PACKAGES="cmake ninja-build g++ pkg-config
   libcairo2-dev libssl-dev freeglut3-dev ffmpeg xvfb xauth
   clang libclang-rt-14-dev llvm
   bubblewrap parallel"
-# --web: also what the WebAssembly build needs (cmake --workflow --preset web; docs/web.md):
-# Emscripten's em++ and Debian's header-only fast_float (std::from_chars for doubles).
-if [ "${1:-}" = "--web" ]; then
-  PACKAGES="$PACKAGES emscripten libfast-float-dev"
-fi
+# What the WebAssembly build and its tests need (cmake --workflow --preset web; docs/web.md):
+# Emscripten's em++, Debian's header-only fast_float (std::from_chars for doubles) and
+# chromium (the page's tests in a headless browser). The test workflow builds and tests the web
+# preset too (ci-web), so they are installed without a flag; --web is kept as a synonym.
+PACKAGES="$PACKAGES emscripten libfast-float-dev chromium"
 
 missing=""
 for package in $PACKAGES; do
