@@ -318,7 +318,7 @@ def main():
     parser.add_argument("--manifest")
     parser.add_argument("--native")
     parser.add_argument("--work")
-    args = parser.parse_args()
+    args = parser.parse_intermixed_args()
     if shutil.which(args.browser) is None:
         fail(f"no browser {args.browser}; tools/install-deps.sh --web installs Debian's chromium")
     {"digests": test_digests, "error": test_error, "grade": test_grade,

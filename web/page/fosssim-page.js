@@ -209,7 +209,9 @@ FOSSSimModule().then((fosssim) => {
   const grade = async (file) => {
     const bytes = new Uint8Array(await file.arrayBuffer());
     const outcome = session.grade(bytes, file.name || "trajectory.bin");
-    report.textContent = outcome.report + (outcome.problem ? outcome.problem + "\n" : "") +
+    const problem = outcome.problem && !outcome.problem.endsWith("\n") ? outcome.problem + "\n"
+                                                                       : outcome.problem;
+    report.textContent = outcome.report + problem +
         (outcome.passed ? "verdict: passed" : "verdict: failed");
     report.dataset.passed = outcome.passed ? "1" : "0";
     return outcome;
