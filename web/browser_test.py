@@ -54,6 +54,14 @@ class Handler(http.server.SimpleHTTPRequestHandler):
             return os.path.join(self.fixtures, os.path.basename(route))
         return super().translate_path(path)
 
+    def do_POST(self):
+        """The timing page posts its figures here (virtual time would stop its clock)."""
+        body = self.rfile.read(int(self.headers["Content-Length"])).decode()
+        self.send_response(204)
+        self.end_headers()
+        self.server.posted = body
+        self.server.arrived.set()
+
     def log_message(self, *args):
         pass
 
@@ -63,6 +71,8 @@ class Server:
         handler = type("TestHandler", (Handler,), {"fixtures": fixtures})
         self.httpd = http.server.ThreadingHTTPServer(
             ("127.0.0.1", 0), functools.partial(handler, directory=page))
+        self.httpd.arrived = threading.Event()
+        self.httpd.posted = None
         self.thread = threading.Thread(target=self.httpd.serve_forever, daemon=True)
 
     def __enter__(self):
@@ -74,15 +84,18 @@ class Server:
         self.httpd.server_close()
 
 
-def run_browser(browser, url, extra, seconds=BROWSER_SECONDS):
-    """Chromium's standard output for `url` (the DOM with --dump-dom)."""
+def run_browser(browser, url, extra, seconds=BROWSER_SECONDS, real_time=False):
+    """Chromium's standard output for `url` (the DOM with --dump-dom). With real_time, the
+    page's clock is the wall clock and Chromium stops after `seconds` - 20 s instead of when
+    virtual time runs out (virtual time stands still while a script runs)."""
     with tempfile.TemporaryDirectory(prefix="fosssim-chromium-") as profile:
         command = ["timeout", "-k", "10", str(seconds), browser, "--headless", "--no-sandbox",
                    "--disable-gpu", "--hide-scrollbars", "--no-first-run",
                    f"--user-data-dir={profile}",
                    # Chromium dumps the DOM or takes the screenshot once this much virtual time
                    # has passed with nothing left to load: the page's work runs before that.
-                   "--virtual-time-budget=600000", *extra, url]
+                   f"--timeout={1000 * (seconds - 20)}" if real_time
+                   else "--virtual-time-budget=600000", *extra, url]
         done = subprocess.run(command, capture_output=True, text=True)
         if done.returncode != 0:
             raise SystemExit(f"FAILED: {' '.join(command)} exited {done.returncode}:\n"
@@ -90,9 +103,9 @@ def run_browser(browser, url, extra, seconds=BROWSER_SECONDS):
         return done.stdout
 
 
-def page_result(browser, url):
+def page_result(browser, url, **options):
     """The text the page wrote into #test-result, or a failure when it never finished."""
-    dom = run_browser(browser, url, ["--dump-dom"])
+    dom = run_browser(browser, url, ["--dump-dom"], **options)
     found = re.search(r'<pre id="test-result"( data-done="1")?>(.*?)</pre>', dom, re.S)
     if not found:
         raise SystemExit(f"FAILED: no #test-result in the page's DOM:\n{dom[:2000]}")
@@ -292,8 +305,20 @@ def test_timing(args, browser):
     """Prints the page's load time and a scene's time per step, in the browser and natively."""
     scene = os.path.abspath(args.items[0])
     query = urllib.parse.urlencode({"test": "timing", "url": "fixtures/" + os.path.basename(scene)})
-    with Server(args.page, fixtures=os.path.dirname(scene)) as base:
-        text = page_result(browser, f"{base}index.html?{query}")
+    server = Server(args.page, fixtures=os.path.dirname(scene))
+    with server as base, tempfile.TemporaryDirectory(prefix="fosssim-chromium-") as profile:
+        # Real time: no --virtual-time-budget (its clock stands still while a script runs);
+        # the page posts its figures and Chromium is stopped then.
+        browser_run = subprocess.Popen(
+            ["timeout", "-k", "10", "300", browser, "--headless", "--no-sandbox", "--disable-gpu",
+             "--no-first-run", f"--user-data-dir={profile}", f"{base}index.html?{query}"],
+            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        arrived = server.httpd.arrived.wait(280)
+        browser_run.terminate()
+        browser_run.wait()
+    if not arrived:
+        fail("the timing page posted nothing")
+    text = server.httpd.posted
     figures = dict(line.split("\t") for line in text.splitlines())
     print(f"page load (navigation start to FOSSSim ready): {figures['load_ms']} ms")
     print(f"browser: {figures['steps']} steps, {figures['ms_per_step']} ms per step")
