@@ -46,7 +46,9 @@ TEST(ContactRegistry, EveryEntryHasASummaryAFactoryAndDocumentedOptions) {
     const bool acts = method->make_stage != nullptr || method->make_force != nullptr;
     EXPECT_EQ(acts, method != &no_contact_method());
     // A method that records collisions or polynomials needs a stage to record them.
-    if (method->records != StepRecordLayout::kFrames) EXPECT_NE(method->make_stage, nullptr);
+    if (method->records != StepRecordLayout::kFrames) {
+      EXPECT_NE(method->make_stage, nullptr);
+    }
     // It handles some body kind in some dimension, and says why it refuses the others.
     const ContactScope& scope = method->scope;
     EXPECT_TRUE(scope.particles || scope.planar_rigid_bodies);
