@@ -452,6 +452,154 @@ def hair_strand():
 
 
 
+class RigidSceneWriter:
+    """Theme 3 scenes: rigid bodies from vertices (point masses), hulls as repeated p
+    attributes, clockwise, as the course's files write them."""
+
+    def __init__(self):
+        self.vertices = []
+        self.bodies = []
+        self.extra = []
+
+    def body(self, points, vel=(0, 0), omega=0.0, r=0.1, fixed=False, mass=1.0, color=None):
+        indices = []
+        for x, y in points:
+            indices.append(len(self.vertices))
+            self.vertices.append(f'<rigidbodyvertex x="{fmt(x)}" y="{fmt(y)}" m="{fmt(mass)}"/>')
+        hull = " ".join(f'p="{i}"' for i in indices)
+        fixed_attribute = ' fixed="1"' if fixed else ""
+        self.bodies.append(f'<rigidbody {hull} vx="{fmt(vel[0])}" vy="{fmt(vel[1])}" '
+                           f'omega="{fmt(omega)}" r="{fmt(r)}"{fixed_attribute}/>')
+        index = len(self.bodies) - 1
+        if color is not None:
+            self.extra.append(f'<rigidbodycolor body="{index}" r="{fmt(color[0])}" g="{fmt(color[1])}" '
+                              f'b="{fmt(color[2])}"/>')
+        return index
+
+    def add(self, line):
+        self.extra.append(line)
+
+    def save(self, name, header):
+        lines = ["<!-- Written by Creative/generate_scenes.py; see Creative/README.md -->", "<scene>",
+                 '  <simtype type="rigid-body"/>'] + ["  " + h for h in header]
+        lines += ["  " + v for v in self.vertices] + ["  " + b for b in self.bodies]
+        lines += ["  " + e for e in self.extra] + ["</scene>", ""]
+        with open(os.path.join(HERE, name), "w") as f:
+            f.write("\n".join(lines))
+        print(f"{name}: {len(self.bodies)} rigid bodies, {len(self.vertices)} vertices")
+
+
+def box(x0, y0, x1, y1):
+    """The corners of an axis-aligned box, clockwise."""
+    return [(x0, y1), (x1, y1), (x1, y0), (x0, y0)]
+
+
+def rigid_tower():
+    s = RigidSceneWriter()
+    s.body(box(-8, -1, 8, 0), r=0.15, fixed=True, color=(0.45, 0.42, 0.4))
+    # A tower of ten blocks, alternately wide and tall, 0.2 apart (within the radii: resting).
+    y = 0.25
+    for k in range(10):
+        w, h = (1.6, 0.5) if k % 2 == 0 else (1.2, 0.7)
+        s.body(box(2 - w / 2, y, 2 + w / 2, y + h), color=rgb(0.05 + 0.06 * k, 0.6, 0.9))
+        y += h + 0.2
+    # A heavy octagon thrown at the tower's upper half.
+    octagon = [(-5 + 0.6 * math.cos(-2 * math.pi * k / 8), 5 + 0.6 * math.sin(-2 * math.pi * k / 8))
+               for k in range(8)]
+    s.body(octagon, vel=(7, 1.5), omega=-2, mass=3, color=(0.2, 0.25, 0.3))
+    s.add('<rigidbodygravityforce fx="0" fy="-9.81"/>')
+    s.add('<rigidbodycollisionhandling detection="all-pairs" response="velocity-projection"/>')
+    s.save("rigid_tower.xml", [
+        '<description text="A heavy octagon knocks over a tower of ten blocks (rigid bodies, velocity projection)"/>',
+        '<duration time="4.0"/>',
+        '<rigidbodyintegrator type="symplectic-euler" dt="0.004"/>',
+        '<maxsimfreq max="250"/>',
+        '<backgroundcolor r="0.96" g="0.95" b="0.92"/>',
+        '<viewport cx="1.5" cy="3.5" size="7.5"/>',
+    ])
+
+
+def rigid_planks():
+    s = RigidSceneWriter()
+    s.body(box(2.3, -2.5, 2.9, 4), r=0.1, fixed=True, color=(0.45, 0.42, 0.4))
+    # Five planks hung from world points by stiff springs at their top ends, released at
+    # different angles; they swing into the wall and into each other.
+    for k in range(5):
+        hx, hy = -2.2 + 1.0 * k, 3.0
+        angle = math.radians(-80 + 8 * k)  # from the vertical, to the left
+        length, width = 2.4 - 0.15 * k, 0.25
+        c, si = math.cos(angle), math.sin(angle)
+        # the plank hangs from (hx, hy) along direction (sin a, -cos a)
+        ux, uy = si, -c
+        px, py = -uy, ux  # across the plank
+        corners = [(hx + px * width / 2, hy + py * width / 2),
+                   (hx - px * width / 2, hy - py * width / 2),
+                   (hx - px * width / 2 + ux * length, hy - py * width / 2 + uy * length),
+                   (hx + px * width / 2 + ux * length, hy + py * width / 2 + uy * length)]
+        area = sum(corners[i][0] * corners[(i + 1) % 4][1] - corners[(i + 1) % 4][0] * corners[i][1]
+                   for i in range(4))
+        if area > 0:
+            corners.reverse()  # clockwise
+        body = s.body(corners, r=0.06, color=rgb(0.55 + 0.07 * k, 0.55, 0.85))
+        # attachment: the top end's middle, in body space (relative to the centre of mass,
+        # which for four equal masses is the plank's middle)
+        s.add(f'<rigidbodyspringforce i="{body}" pix="{fmt(-ux * length / 2)}" piy="{fmt(-uy * length / 2)}" '
+              f'j="-1" pjx="{fmt(hx)}" pjy="{fmt(hy)}" k="400" l0="0"/>')
+        s.add(f'<rigidbodyspringcolor spring="{k}" r="0.3" g="0.3" b="0.3"/>')
+    s.add('<rigidbodygravityforce fx="0" fy="-9.81"/>')
+    s.add('<rigidbodycollisionhandling detection="all-pairs" response="velocity-projection"/>')
+    s.save("rigid_planks.xml", [
+        '<description text="Five planks hung by springs swing into a wall and into each other (rigid bodies, velocity projection)"/>',
+        '<duration time="6.0"/>',
+        '<rigidbodyintegrator type="symplectic-euler" dt="0.002"/>',
+        '<maxsimfreq max="500"/>',
+        '<backgroundcolor r="0.96" g="0.95" b="0.92"/>',
+        '<viewport cx="0.5" cy="1" size="7"/>',
+    ])
+
+
+def soft_drape():
+    """Elastic bodies written as one element each (<elasticbody>, docs/scene-format.md): a soft
+    sheet of 20 x 3 cells falls across a peg (a fixed particle) and drapes over it, an annulus
+    tyre rolls down a ramp and bounces along the floor, and a star (a polygon triangulated at a
+    spacing of 5 cm) drops onto the floor beside a wall. Penalty contact keeps every particle
+    out of the half-planes and off the peg; symplectic Euler with small steps, as in
+    soft_bodies."""
+    s = SceneWriter()
+    s.particle((0.0, 0.2), (0, 0), 1.0, fixed=True, radius=0.07, color=(0.3, 0.3, 0.35))
+    s.add('<elasticbody shape="sheet" nx="20" ny="3" width="1.2" height="0.12" x="-0.6" '
+          'y="0.45" youngsmodulus="120" poissonratio="0.3" totalmass="1" '
+          'particleradius="0.004" edgeradius="0.002"/>')
+    s.add('<elasticbody shape="ring" segments="24" radius="0.18" innerradius="0.12" '
+          'x="-1.2" y="1.0" vx="0.5" youngsmodulus="1600" poissonratio="0.35" totalmass="0.6" '
+          'particleradius="0.004" edgeradius="0.002"/>')
+    star = []
+    for k in range(10):
+        a = math.pi / 2 + k * math.pi / 5
+        r = 0.2 if k % 2 == 0 else 0.09
+        star += [r * math.cos(a), r * math.sin(a)]
+    s.add('<elasticbody shape="polygon" points="' + " ".join(fmt(x) for x in star) + '" '
+          'spacing="0.05" x="0.95" y="0.9" rotation="12" youngsmodulus="1500" poissonratio="0.3" '
+          'totalmass="0.5" particleradius="0.004" edgeradius="0.002"/>')
+    s.add('<simplegravity fx="0" fy="-9.81"/>')
+    s.add('<dragdamping b="0.002"/>')
+    planes = ((0, -0.2, 0, 1),                                   # floor
+              (-1.5, 0.3, math.sin(0.5), math.cos(0.5)),         # ramp on the left
+              (1.4, 0, -1, 0))                                   # wall on the right
+    for px, py, nx, ny in planes:
+        s.add(f'<halfplane px="{fmt(px)}" py="{fmt(py)}" nx="{fmt(nx)}" ny="{fmt(ny)}"/>')
+    for h in range(len(planes)):
+        s.add(f'<halfplanecolor i="{h}" r="0.55" g="0.5" b="0.45"/>')
+    s.add('<collision type="penalty" k="3000" thickness="0.01"/>')
+    s.save("soft_drape.xml", [
+        '<description text="Elastic bodies from one element each: a sheet drapes over a peg, a tyre bounces down a ramp, a star drops (penalty contact, symplectic Euler)"/>',
+        '<duration time="4.0"/>',
+        '<integrator type="symplectic-euler" dt="0.0005"/>',
+        '<maxsimfreq max="2000"/>',
+        '<viewport cx="0" cy="0.45" size="1.4"/>',
+    ])
+
+
 if __name__ == "__main__":
     vortex_spiral()
     fountain()
@@ -462,3 +610,6 @@ if __name__ == "__main__":
     cloth_on_sphere()
     soft_bodies()
     hair_strand()
+    rigid_tower()
+    rigid_planks()
+    soft_drape()

@@ -6,14 +6,17 @@
 // stay about constant when the cost grows linearly), with all pairs beside it where it takes
 // seconds. Every baseline runs in this process; times are this thread's CPU time, steadier than
 // wall time on a shared machine.
-// Usage: bench_broad_phase [--quick | --balls N]
-//   --quick stops the scaling at 10^5 balls; --balls N times only the grid on N balls (to profile)
+// Usage: bench_broad_phase [--quick | --balls N] [--stats-json DIR]
+//   --quick stops the scaling at 10^5 balls; --balls N times only the grid on N balls (to profile);
+//   --stats-json DIR writes the run summary of each contest scene's grid run (docs/command-line.md,
+//   'Run summaries') as DIR/<scene>.stats.json
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -22,7 +25,9 @@
 #include "core/collisions/candidate_pairs.h"
 #include "core/scene.h"
 #include "core/step/step_pipeline.h"
+#include "io/output_file.h"
 #include "io/scene_loader.h"
+#include "outputs/run_summary.h"
 
 namespace {
 
@@ -83,14 +88,26 @@ struct Run {
   State end;
 };
 
-/// `steps` steps of `scene` with pairs found as `detection` says.
-Run run(Scene& scene, PairDetection detection, int steps) {
+/// `steps` steps of `scene` with pairs found as `detection` says, fed to `summary` if given
+/// (outside the time measured: a summary computes every state's energy).
+Run run(Scene& scene, PairDetection detection, int steps, RunSummary* summary = nullptr) {
   scene.model.collisions.detection = detection;
   StepPipeline pipeline(scene.model);
   State state = scene.initial;
-  const double start = thread_cpu_milliseconds();
-  for (int k = 0; k < steps; ++k) pipeline.step(state);
-  return {(thread_cpu_milliseconds() - start) / steps, std::move(state)};
+  if (summary == nullptr) {
+    const double start = thread_cpu_milliseconds();
+    for (int k = 0; k < steps; ++k) pipeline.step(state);
+    return {(thread_cpu_milliseconds() - start) / steps, std::move(state)};
+  }
+  summary->add(state, nullptr, &pipeline.integrator());
+  double milliseconds = 0.0;
+  for (int k = 0; k < steps; ++k) {
+    const double start = thread_cpu_milliseconds();
+    pipeline.step(state);
+    milliseconds += thread_cpu_milliseconds() - start;
+    summary->add(state, &pipeline.last_record(), &pipeline.integrator());
+  }
+  return {milliseconds / steps, std::move(state)};
 }
 
 double largest_difference(const State& a, const State& b) {
@@ -108,7 +125,7 @@ double candidates_per_particle(Scene& scene) {
   return static_cast<double>(count) / scene.model.num_particles();
 }
 
-void contest_scenes() {
+void contest_scenes(const std::string& stats_folder) {
   std::printf(
       "Contest-size scenes of assets/t2m3: the grid against all pairs (all pairs takes 2 "
       "steps)\n\n");
@@ -119,7 +136,10 @@ void contest_scenes() {
   for (const char* name : {"timing_balls_15000_contest", "timing_ribbon_pile_15000_contest"}) {
     Scene scene =
         load_scene_file(std::string(FOSSSIM_SOURCE_DIR) + "/assets/t2m3/" + name + ".xml");
-    const Run grid = run(scene, PairDetection::kContest, 20);
+    std::optional<RunSummary> summary;
+    if (!stats_folder.empty()) summary.emplace(scene);
+    const Run grid = run(scene, PairDetection::kContest, 20, summary ? &*summary : nullptr);
+    if (summary) write_output_file(stats_folder + "/" + name + ".stats.json", summary->json());
     const Run grid_two = run(scene, PairDetection::kContest, 2);
     const Run all = run(scene, PairDetection::kAllPairs, 2);
     std::printf("| %s | %d | %zu | %.2f | %.2f | %.0f | %.0f | %.1e |\n", name,
@@ -161,13 +181,17 @@ void scaling(bool quick) {
 
 int main(int argc, char** argv) {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  std::string stats_folder;
+  for (int k = 1; k + 1 < argc; ++k) {
+    if (std::strcmp(argv[k], "--stats-json") == 0) stats_folder = argv[k + 1];
+  }
   if (argc > 2 && std::strcmp(argv[1], "--balls") == 0) {  // one size, grid only, to profile
     Scene scene = contest_balls(std::atoi(argv[2]), 7);
     std::printf("%.2f ms/step\n", run(scene, PairDetection::kContest, 20).ms_per_step);
     return 0;
   }
   std::printf("Broad phase benchmark (load average %s)\n\n", load_average().c_str());
-  contest_scenes();
+  contest_scenes(stats_folder);
   scaling(quick);
   return 0;
 }

@@ -31,3 +31,14 @@ if(NOT TARGET SuiteSparse::CHOLMOD)
                         INTERFACE_LINK_LIBRARIES
                         "${DMUMPS_LIBRARY};${SMUMPS_LIBRARY};${MUMPS_COMMON_LIBRARY};${MUMPS_MPISEQ_LIBRARY}")
 endif()
+
+if(NOT TARGET ODE::lcp)
+  # ODE's LCP solver (Dantzig's method), as Debian packages it with DART
+  # (libdart-external-odelcpsolver-dev): rigid-body contact (FOSSSim/core/rigid/contact_lcp.h).
+  # libode-dev does not export its LCP solver.
+  find_path(ODE_LCP_INCLUDE_DIR dart/external/odelcpsolver/lcp.h REQUIRED)
+  find_library(ODE_LCP_LIBRARY dart-external-odelcpsolver REQUIRED)
+  add_library(ODE::lcp UNKNOWN IMPORTED)
+  set_target_properties(ODE::lcp PROPERTIES IMPORTED_LOCATION ${ODE_LCP_LIBRARY}
+                        INTERFACE_INCLUDE_DIRECTORIES ${ODE_LCP_INCLUDE_DIR})
+endif()

@@ -13,7 +13,8 @@
 set(FOSSSIM_LIBRARY_FOLDERS
   fosssim_core=core fosssim_mesh=mesh fosssim_io=io fosssim_grading=grading
   fosssim_scripting=scripting fosssim_render=render fosssim_pictures=pictures
-  fosssim_viewer_logic=viewer fosssim_viewer=viewer fosssim_cli=cli fosssim_oracle=oracle)
+  fosssim_viewer_logic=viewer fosssim_viewer=viewer fosssim_cli=cli fosssim_oracle=oracle
+  fosssim_outputs=outputs)
 
 function(fosssim_check_includes target)
   cmake_parse_arguments(PARSE_ARGV 1 arg "PRIMARY" "FOLDER;DIR" "")

@@ -83,8 +83,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     check_step_count(scene.model, limits_of(options));
     check_outputs_spare_inputs(options, scene);
     check_outputs_distinct(options);
-    for (const std::string* name : {&options.output, &options.energy_csv, &options.energy_plot,
-                                    &options.movie, &options.residual_file}) {
+    std::vector<std::string> names = {options.residual_file};
+    for (const OutputRequest& request : output_requests(options)) {
+      if (request.format->target == OutputTarget::kFile) names.push_back(request.destination);
+    }
+    for (const std::string* name = names.data(); name != names.data() + names.size(); ++name) {
       const std::filesystem::path path(*name);
       bool inside = path.is_relative();
       for (const auto& part : path) inside = inside && part != "..";

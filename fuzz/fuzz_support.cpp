@@ -16,6 +16,7 @@ constexpr int kMaxIterations = 20;
 Limits fuzz_limits() {
   Limits limits;
   limits.max_particles = 300;
+  limits.max_polygon_corners = 300;  // an <elasticbody> polygon's work is quadratic in them
   limits.max_file_bytes = std::int64_t{1} << 20;
   return limits;
 }

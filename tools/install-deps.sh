@@ -4,6 +4,7 @@
 set -eu
 
 # libmumps-seq-dev: the symmetric indefinite factorization of step matrices (sequential MUMPS).
+# libdart-external-odelcpsolver-dev: ODE's LCP solver (rigid-body contact, core/rigid/contact_lcp.h).
 # pybind11-dev and python3-dev build the Python module (python/); NumPy and SciPy are what it
 # returns, pytest runs its tests, matplotlib draws the examples' plots (examples/python/).
 # bubblewrap confines the candidates fosssim-oracle grades; parallel (GNU parallel) runs the
@@ -13,7 +14,7 @@ set -eu
 # of sanitizer reports) build and run the fuzz targets of fuzz/.
 PACKAGES="cmake ninja-build g++ pkg-config
   libeigen3-dev libtinyxml2-dev libcli11-dev nlohmann-json3-dev libsuitesparse-dev libopenblas-dev
-  libmumps-seq-dev
+  libmumps-seq-dev libdart-external-odelcpsolver-dev
   libgtest-dev libbenchmark-dev python3
   pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib dpkg-dev
   libcairo2-dev libssl-dev freeglut3-dev ffmpeg xvfb xauth

@@ -1,14 +1,17 @@
 // FOSSSim-generate: writes procedural meshes (mesh/generators.h) as OBJ or MEDIT files, and
 // optionally a JSON scene of the fast mass-springs format around an OBJ, so that demos and
-// benchmarks need no outside data. Exit status: 0 written, 2 bad command line, 4 I/O error.
+// benchmarks need no outside data; and elastic bodies (sheet, rod, ring, polygon, obj) as plain
+// XML scenes (app/generate_elastic.h). Exit status: 0 written, 2 bad command line, 4 I/O error.
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <vector>
 
+#include "app/generate_elastic.h"
 #include "cli/exit_codes.h"
 #include "cli/parse_command_line.h"
 #include "core/limits.h"
@@ -96,7 +99,8 @@ int main(int argc, char** argv) {
   GenerateOptions o;
   CLI::App app{
       "Writes a procedural mass-spring mesh: cloth, chain, net and skirt as OBJ,\n"
-      "tetbox and tetball as MEDIT .mesh (docs/scenes-3d.md).",
+      "tetbox and tetball as MEDIT .mesh (docs/scenes-3d.md); or an elastic body\n"
+      "(sheet, rod, ring, polygon, obj) as an XML scene (docs/scene-format.md).",
       "FOSSSim-generate"};
   app.require_subcommand(1);
   app.add_option("-o,--output", o.output, "Mesh file to write (.obj or .mesh)")->required();
@@ -160,7 +164,17 @@ int main(int argc, char** argv) {
       }
     }
   }
+  ElasticSubcommands elastic;
+  add_elastic_subcommands(app, elastic);
   if (auto status = parse_command_line(app, argc, argv)) return *status;
+  if (std::any_of(elastic.commands.begin(), elastic.commands.end(),
+                  [](const CLI::App* command) { return command->parsed(); }) &&
+      (!o.json.empty() || !o.pins.empty())) {
+    std::cerr << "FOSSSim-generate: error: --json and --pins apply to meshes, not to elastic "
+                 "bodies\n";
+    return kExitBadInput;
+  }
+  if (auto status = run_elastic_subcommand(elastic, o.output, o.max_vertices)) return *status;
   if (!(o.k >= 0.0 && o.k <= kMaxStiffness)) {
     std::cerr << "FOSSSim-generate: error: --k must be between 0 and " << to_text(kMaxStiffness)
               << " N/m, found " << to_text(o.k) << "\n";

@@ -1,5 +1,6 @@
 #include "app/options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -10,28 +11,43 @@
 #include "core/error.h"
 #include "core/integrators/integrator_registry.h"
 #include "core/text.h"
+#include "outputs/trajectory_output.h"
 
 namespace fosssim {
 
 namespace {
 
+/// Declares the option of every output format of `group` (outputs/output_registry.h): its
+/// destination, and the course's 0|1 switch (-g) of a format that has one.
+void add_output_options(CLI::App& app, Options& options, std::string_view group) {
+  for (const OutputFormat* format : output_formats()) {
+    if (format->group != group) continue;
+    // CLI11 hides the options of the group "": the main options keep its default group.
+    const auto place = [group](CLI::Option* option) {
+      if (!group.empty()) option->group(std::string(group));
+    };
+    if (!format->switch_flags.empty()) {
+      place(app.add_option(std::string(format->switch_flags), options.outputs.switched(*format),
+                           std::string(format->switch_help))
+                ->check(CLI::IsMember({0, 1}))
+                ->check(decimal_number()));
+    }
+    CLI::Option* option = app.add_option(std::string(format->flags),
+                                         options.outputs.destination(*format),
+                                         std::string(format->help))
+                              ->type_name(std::string(format->value_name))
+                              ->check(nonempty_name());
+    place(option);
+    if (!format->default_destination.empty()) option->capture_default_str();
+  }
+}
+
+/// The --help group of the picture options, and of the output formats that name it.
+constexpr std::string_view kPictureGroup = "Pictures (docs/viewing.md)";
+
 void add_picture_options(CLI::App& app, Options& options) {
-  const char* group = "Pictures (docs/viewing.md)";
-  app.add_option("-g,--png", options.png,
-                 "1: write a PNG of every state into the PNG folder (frame_00000.png is the\n"
-                 "initial state, frame_00001.png the state after step 1, ...)")
-      ->check(CLI::IsMember({0, 1}))
-      ->group(group);
-  app.add_option("--png-dir", options.png_directory, "The PNG folder of -g 1")
-      ->capture_default_str()
-      ->group(group);
-  app.add_option("-m,--svg", options.svg_directory,
-                 "Write an SVG of every state into this folder (frame_00000.svg, ...)")
-      ->group(group);
-  app.add_option("--movie", options.movie,
-                 "Render the run headless into this MP4 movie (H.264) with the ffmpeg program;\n"
-                 "needs no display. Implies -d 0")
-      ->group(group);
+  const std::string group(kPictureGroup);
+  add_output_options(app, options, group);
   app.add_option("--movie-stride", options.movie_stride,
                  "A movie frame every N steps (frames 0, N, 2N, ...); default: the stride that\n"
                  "plays the run at about real time at --fps")
@@ -68,12 +84,6 @@ void add_picture_options(CLI::App& app, Options& options) {
                  "The strain (default 0.1) or energy density (default: each picture's largest)\n"
                  "drawn in full colour by --color-by")
       ->check(CLI::PositiveNumber)
-      ->group(group);
-  app.add_option("--energy-plot", options.energy_plot,
-                 "Plot kinetic, potential and total energy over the run into this PNG (or .svg)")
-      ->group(group);
-  app.add_option("--energy-csv", options.energy_csv,
-                 "Write time, kinetic, potential and total energy of every state as CSV")
       ->group(group);
   app.add_option("--window-screenshot", options.window_screenshot,
                  "Testing aid: run the window to --window-screenshot-step, save its framebuffer\n"
@@ -116,6 +126,12 @@ void add_limit_options(CLI::App& app, Options& options) {
       ->check(CLI::Range(std::int64_t{3}, std::int64_t{1} << 16))
       ->capture_default_str()
       ->group(group);
+  app.add_option("--max-polygon-corners", options.max_polygon_corners,
+                 "Refuse an <elasticbody shape=\"polygon\"> of more corners than this (its\n"
+                 "triangulation takes time quadratic in them)")
+      ->check(CLI::Range(std::int64_t{3}, std::int64_t{1} << 24))
+      ->capture_default_str()
+      ->group(group);
   app.add_option("--max-hybrid-passes", options.max_hybrid_passes,
                  "Make at most this many impulse passes a step of hybrid collision handling;\n"
                  "a larger maxiters is read as this many, with a warning")
@@ -126,6 +142,16 @@ void add_limit_options(CLI::App& app, Options& options) {
 
 /// Throws Error (kBadInput) with a message.
 [[noreturn]] void fail(const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); }
+
+/// "-g, -m and --movie".
+std::string join_names(const std::vector<std::string_view>& names) {
+  std::string out;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    if (k > 0) out += k + 1 == names.size() ? " and " : ", ";
+    out += names[k];
+  }
+  return out;
+}
 
 /// Parses "WxH" into width and height (each 16..8192).
 void parse_size(const std::string& text, int& width, int& height) {
@@ -275,20 +301,29 @@ std::string contact_help() {
 
 void check_picture_options(Options& options) {
   parse_size(options.size, options.width, options.height);
-  const bool pictures = options.png == 1 || !options.svg_directory.empty() ||
-                        !options.movie.empty() || !options.energy_plot.empty() ||
-                        !options.energy_csv.empty();
-  if (pictures && !options.input.empty()) {
-    fail(
-        "-g, -m, --movie, --energy-plot and --energy-csv picture a run; they cannot be "
-        "combined with grading (-i)");
-  }
-  if (!options.movie.empty()) {
-    check_movie_settings(options.movie, movie_settings(options));
-    if (options.display_given && options.display == 1) {
-      fail("--movie renders headless; leave out -d 1 (the window cannot record movies)");
+  const OutputSettings settings = output_settings(options);
+  // The options of the outputs that cannot go with -i; the parser itself refuses -o with -i.
+  std::vector<std::string_view> run_only;
+  for (const OutputFormat* format : output_formats()) {
+    if (!format->needs.with_grading && format != &kTrajectoryOutput) {
+      run_only.push_back(format->request_name());
     }
-    options.display = 0;
+  }
+  for (const OutputRequest& request : output_requests(options)) {
+    const OutputFormat& format = *request.format;
+    if (!format.needs.with_grading && !options.input.empty()) {
+      fail(join_names(run_only) + " describe a run; they cannot be combined with grading (-i)");
+    }
+  }
+  for (const OutputRequest& request : output_requests(options)) {
+    const OutputFormat& format = *request.format;
+    if (format.check != nullptr) format.check(request.destination, settings);
+    if (!format.needs.window) {
+      if (options.display_given && options.display == 1) {
+        fail(std::string(format.option_name()) + " " + std::string(format.headless_reason));
+      }
+      options.display = 0;
+    }
   }
   if (!options.window_screenshot.empty() && options.display == 0) {
     fail("--window-screenshot needs the window (-d 1)");
@@ -303,7 +338,35 @@ Limits limits_of(const Options& options) {
   limits.max_face_corners = options.max_face_corners;
   limits.max_attributes = options.max_attributes;
   limits.max_hybrid_passes = options.max_hybrid_passes;
+  limits.max_polygon_corners = options.max_polygon_corners;
   return limits;
+}
+
+OutputSettings output_settings(const Options& options) {
+  OutputSettings settings;
+  settings.movie = movie_settings(options);
+  settings.movie_stride = options.movie_stride;
+  return settings;
+}
+
+std::vector<OutputRequest> output_requests(const Options& options) {
+  return options.outputs.requests();
+}
+
+bool asks_for_pictures(const Options& options) {
+  for (const OutputRequest& request : output_requests(options)) {
+    if (request.format->needs.pictures) return true;
+  }
+  return false;
+}
+
+ElementColors element_colors(const Options& options) {
+  ElementColors colors;
+  colors.by = options.color_by == "strain"   ? ElementColoring::kStrain
+              : options.color_by == "energy" ? ElementColoring::kEnergy
+                                             : ElementColoring::kPlain;
+  colors.scale = options.color_scale;
+  return colors;
 }
 
 MovieSettings movie_settings(const Options& options) {
@@ -329,10 +392,8 @@ void add_options(CLI::App& app, Options& options) {
   app.add_option("-p,--paused", options.paused, "1: start the window paused; 0: start running")
       ->check(CLI::IsMember({0, 1}))
       ->capture_default_str();
-  auto* output = app.add_option(
-      "-o,--output", options.output,
-      "Write the trajectory here (frames of positions then velocities, little-endian doubles).\n"
-      "It appears only when the run completes; a failed run leaves FILE.incomplete");
+  add_output_options(app, options, "");
+  auto* output = app.get_option("-o");
   auto* input = app.add_option(
       "-i,--input", options.input,
       "Grading mode: replay this trajectory step by step against the scene's integrator,\n"
@@ -396,17 +457,23 @@ void add_options(CLI::App& app, Options& options) {
           "SECONDS"))
       ->default_str("10");
   add_picture_options(app, options);
+  // The outputs of groups of their own, each group once, in registry order.
+  std::vector<std::string_view> groups = {"", kPictureGroup};
+  for (const OutputFormat* format : output_formats()) {
+    if (std::find(groups.begin(), groups.end(), format->group) != groups.end()) continue;
+    groups.push_back(format->group);
+    add_output_options(app, options, format->group);
+  }
   add_limit_options(app, options);
   // Numbers read as the scene readers read them (no "0x10"), and no empty file names.
   for (const char* name :
        {"-d", "-p", "--threads", "--duration", "--dt", "--newton-max-iterations",
-        "--newton-tolerance", "-g", "--movie-stride", "--fps", "--window-screenshot-step",
+        "--newton-tolerance", "--movie-stride", "--fps", "--window-screenshot-step",
         "--max-steps", "--max-particles", "--max-file-size", "--max-face-corners",
-        "--max-attributes", "--max-hybrid-passes"}) {
+        "--max-attributes", "--max-hybrid-passes", "--max-polygon-corners"}) {
     app.get_option(name)->check(decimal_number());
   }
-  for (const char* name : {"-s", "-o", "-i", "--residual-file", "--png-dir", "-m", "--movie",
-                           "--energy-plot", "--energy-csv", "--window-screenshot"}) {
+  for (const char* name : {"-s", "-i", "--residual-file", "--window-screenshot"}) {
     app.get_option(name)->check(nonempty_name());
   }
   app.set_version_flag("--version", "FOSSSim 0.1.0");

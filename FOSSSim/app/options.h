@@ -9,7 +9,9 @@
 
 #include "core/limits.h"
 #include "core/scene.h"
+#include "outputs/output_registry.h"
 #include "pictures/movie_writer.h"
+#include "render/drawing.h"
 
 namespace fosssim {
 
@@ -17,8 +19,10 @@ struct Options {
   std::string scene;               ///< -s
   int display = 1;                 ///< -d 0|1
   int paused = 1;                  ///< -p 0|1
-  std::string output;              ///< -o trajectory to write
   std::string input;               ///< -i trajectory to grade
+  /// The outputs of the output registry (-o, -g, -m, --movie, ...): one option each, declared
+  /// from the registry (outputs/output_registry.h).
+  OutputChoices outputs;
   std::optional<double> duration;  ///< --duration override, seconds
   std::optional<double> dt;        ///< --dt override, seconds
   /// --integrator-option NAME=VALUE, in order; --newton-max-iterations N and
@@ -32,16 +36,10 @@ struct Options {
   double progress_every = 10.0;   ///< --progress-every SECONDS between progress lines
 
   // Pictures (docs/viewing.md).
-  int png = 0;  ///< -g 0|1: one PNG per state into png_directory
-  std::string png_directory = "pngs";
-  std::string svg_directory;        ///< -m DIR: one SVG per state
-  std::string movie;                ///< --movie FILE.mp4 (headless)
   std::optional<int> movie_stride;  ///< every how many steps a movie frame; default ~real time
   double fps = 30.0;                ///< movie frames per second
   std::string size = "512x512";     ///< --size WxH of the window, pictures and movie
   int width = 512, height = 512;    ///< parsed from size by check_picture_options
-  std::string energy_plot;          ///< --energy-plot FILE.png|FILE.svg
-  std::string energy_csv;           ///< --energy-csv FILE.csv
   std::string view;                 ///< --view YAW,PITCH[,DISTANCE] of 3D scenes
   bool orthographic = false;        ///< --orthographic: parallel projection of 3D scenes
   std::string frame = "run";        ///< --frame run|first: what the pictures' camera fits
@@ -58,6 +56,7 @@ struct Options {
   std::int64_t max_face_corners = Limits{}.max_face_corners;    ///< --max-face-corners
   std::int64_t max_attributes = Limits{}.max_attributes;        ///< --max-attributes
   std::int64_t max_hybrid_passes = Limits{}.max_hybrid_passes;  ///< --max-hybrid-passes
+  std::int64_t max_polygon_corners = Limits{}.max_polygon_corners;  ///< --max-polygon-corners
 };
 
 /// The limits the options set.
@@ -66,12 +65,25 @@ Limits limits_of(const Options& options);
 /// Declares every option on `app`, writing into `options`.
 void add_options(CLI::App& app, Options& options);
 
-/// Checks the picture options against each other and the mode, parses --size, and makes
-/// --movie run headless when -d was not given. Throws Error (kBadInput) for a bad combination.
+/// Checks the picture and output options against each other and the mode (each output
+/// format's own check, outputs/output_format.h), parses --size, and makes an output the window
+/// cannot write (--movie) run headless when -d was not given. Throws Error (kBadInput) for a bad combination.
 void check_picture_options(Options& options);
 
 /// The movie settings of --size and --fps.
 MovieSettings movie_settings(const Options& options);
+
+/// The settings the outputs read: --size, --fps, --movie-stride.
+OutputSettings output_settings(const Options& options);
+
+/// The outputs the options ask for, in registry order.
+std::vector<OutputRequest> output_requests(const Options& options);
+
+/// True when the options ask for an output that draws states (-g, -m, --movie).
+bool asks_for_pictures(const Options& options);
+
+/// The colouring of elastic bodies that --color-by and --color-scale ask for.
+ElementColors element_colors(const Options& options);
 
 /// Refuses, with an Error (kBadInput) naming the option and the input, every output of the
 /// options that would replace or overwrite an input of the run: the scene file, its mesh files

@@ -115,18 +115,21 @@ void check_outputs_distinct(const Options& options) {
     std::string option, path;
   };
   std::vector<Output> outputs;
-  const auto add = [&outputs](const char* option, const std::string& path) {
-    if (!path.empty()) outputs.push_back({option, path});
+  const auto add = [&outputs](std::string_view option, const std::string& path) {
+    if (!path.empty()) outputs.push_back({std::string(option), path});
   };
-  add("-o", options.output);
+  const std::vector<OutputRequest> requests = output_requests(options);
+  for (const OutputRequest& request : requests) {
+    if (request.format->target == OutputTarget::kFile)
+      add(request.format->option_name(), request.destination);
+  }
   if (!options.input.empty()) add("--residual-file", options.residual_file);
-  add("--energy-plot", options.energy_plot);
-  add("--energy-csv", options.energy_csv);
-  add("--movie", options.movie);
   if (options.display == 1) add("--window-screenshot", options.window_screenshot);
   const std::size_t files = outputs.size();
-  if (options.png == 1) add("--png-dir", options.png_directory);
-  add("-m", options.svg_directory);
+  for (const OutputRequest& request : requests) {
+    if (request.format->target == OutputTarget::kFolder)
+      add(request.format->option_name(), request.destination);
+  }
   for (std::size_t a = 0; a < files; ++a) {
     // Writing twice to /dev/null (or a terminal) loses nothing.
     if (is_character_device(outputs[a].path)) continue;
@@ -150,14 +153,17 @@ void check_outputs_distinct(const Options& options) {
 void check_outputs_spare_inputs(const Options& options, const Scene& scene) {
   const std::vector<Input> inputs = inputs_of(options, scene);
   if (inputs.empty()) return;
-  check_file("-o", options.output, inputs);
+  for (const OutputRequest& request : output_requests(options)) {
+    const OutputFormat& format = *request.format;
+    const std::string option(format.request_name());
+    if (format.target == OutputTarget::kFile) {
+      check_file(option, request.destination, inputs);
+    } else {
+      check_folder(option, request.destination, format.picture_extension, inputs);
+    }
+  }
   if (!options.input.empty()) check_file("--residual-file", options.residual_file, inputs);
-  check_file("--energy-plot", options.energy_plot, inputs);
-  check_file("--energy-csv", options.energy_csv, inputs);
-  check_file("--movie", options.movie, inputs);
   check_file("--window-screenshot", options.window_screenshot, inputs);
-  if (options.png == 1) check_folder("-g", options.png_directory, "png", inputs);
-  if (!options.svg_directory.empty()) check_folder("-m", options.svg_directory, "svg", inputs);
 }
 
 }  // namespace fosssim

@@ -3,13 +3,13 @@
 #include <optional>
 
 #include "app/commands.h"
-#include "app/frame_outputs.h"
 #include "app/interrupt.h"
 #include "app/progress_bar.h"
 #include "cli/exit_codes.h"
 #include "core/step/cancellation.h"
 #include "core/step/simulation.h"
 #include "core/step_error.h"
+#include "outputs/frame_outputs.h"
 #include "render/camera.h"
 #include "render/scene_view.h"
 #include "scripting/step_hooks.h"
@@ -34,9 +34,7 @@ std::string kept_note(FrameOutputs& outputs) {
 /// True when the run writes pictures or a movie and the scene leaves their camera to the
 /// particles' positions (no 2D <viewport>; no <camera3d> or --view fixing target and distance).
 bool pictures_frame_positions(const Scene& scene, const Options& options) {
-  const bool pictures =
-      options.png == 1 || !options.svg_directory.empty() || !options.movie.empty();
-  if (!pictures || options.frame != "run") return false;
+  if (!asks_for_pictures(options) || options.frame != "run") return false;
   const Appearance& look = scene.appearance;
   if (scene.model.dim == 3 && look.camera3d) {
     return !(look.camera3d->target && look.camera3d->distance);
@@ -74,7 +72,8 @@ Vector whole_run_corners(const Scene& scene, const Options& options) {
 }  // namespace
 
 int run_headless(const Scene& scene, const Options& options) {
-  FrameOutputs outputs = FrameOutputs::open(scene, options);
+  FrameOutputs outputs =
+      FrameOutputs::open(scene, output_requests(options), output_settings(options));
   try {
     std::optional<Vector> frame;
     if (pictures_frame_positions(scene, options)) frame = whole_run_corners(scene, options);
@@ -86,7 +85,7 @@ int run_headless(const Scene& scene, const Options& options) {
                          choose_progress_style(options.progress, options.quiet),
                          options.progress_every);
     try {
-      outputs.write(simulation.state(), view);
+      outputs.write(simulation.state(), view, nullptr, &simulation.integrator());
       const auto interrupted = [&] {
         progress.finish();
         std::cerr << "FOSSSim: interrupted by signal " << interrupt_signal() << " ("
@@ -102,7 +101,8 @@ int run_headless(const Scene& scene, const Options& options) {
           return interrupted();  // within the step: the frames so far are kept
         }
         view.record(simulation.state());
-        outputs.write(simulation.state(), view, &simulation.last_record());
+        outputs.write(simulation.state(), view, &simulation.last_record(),
+                      &simulation.integrator());
         progress.update(simulation.state().step);
       }
       progress.finish();

@@ -4,11 +4,11 @@
 #include <iostream>
 
 #include "app/commands.h"
-#include "app/frame_outputs.h"
 #include "app/interrupt.h"
 #include "app/progress_bar.h"
 #include "cli/exit_codes.h"
 #include "io/trajectory_file.h"
+#include "outputs/frame_outputs.h"
 #include "viewer/stepper.h"
 #include "viewer/window.h"
 
@@ -30,7 +30,8 @@ WindowSettings window_settings(const Scene& scene, const Options& options) {
 /// Runs the scene in the window, feeding the outputs of -o, -g, -m and --energy-*; the mouse
 /// can pull particles with the drag spring of ParticleGrab, an interaction force of the run.
 int run_simulation_window(const Scene& scene, const Options& options) {
-  FrameOutputs outputs = FrameOutputs::open(scene, options);
+  FrameOutputs outputs =
+      FrameOutputs::open(scene, output_requests(options), output_settings(options));
   ParticleGrab grab(scene);
   SimulationStepper stepper(scene, {&grab.force()}, Cancellation(&interrupt_requested));
   SceneView view(scene, stepper.state(), options.width, options.height);
@@ -52,11 +53,14 @@ int run_simulation_window(const Scene& scene, const Options& options) {
       status = exit_status(error.kind());
     }
   };
-  guarded([&] { outputs.write(stepper.state(), view); });
+  guarded([&] { outputs.write(stepper.state(), view, nullptr, &stepper.simulation().integrator()); });
 
   WindowEvents events;
   events.stepped = [&](const State& state, const SceneView& v) {
-    guarded([&] { outputs.write(state, v, &stepper.simulation().last_record()); });
+    guarded([&] {
+      outputs.write(state, v, &stepper.simulation().last_record(),
+                    &stepper.simulation().integrator());
+    });
   };
   events.finished = [&] {
     guarded([&] {

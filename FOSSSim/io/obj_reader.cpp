@@ -21,8 +21,9 @@ struct PendingElement {
 
 class ObjParser {
  public:
-  ObjParser(const std::string& name, std::int64_t max_face_corners)
-      : name_(name), max_face_corners_(max_face_corners) {}
+  ObjParser(const std::string& name, std::int64_t max_face_corners, bool planar = false,
+            ObjLines* lines = nullptr)
+      : name_(name), max_face_corners_(max_face_corners), planar_(planar), lines_(lines) {}
 
   Mesh parse(std::string_view text) {
     int line = 0;
@@ -63,11 +64,11 @@ class ObjParser {
 
   void read_vertex(const std::vector<std::string_view>& words, int line) {
     const std::size_t count = words.size() - 1;
-    if (count != 3 && count != 4 && count != 6) {
+    if (count != 3 && count != 4 && count != 6 && !(planar_ && count == 2)) {
       fail(line, "a vertex needs 3 coordinates (\"v x y z\"), found " + std::to_string(count) +
                      " numbers");
     }
-    Eigen::Vector3d x;
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
     for (std::size_t k = 1; k < words.size(); ++k) {
       double value = 0.0;
       if (!parse_finite(words[k], value)) {
@@ -79,6 +80,7 @@ class ObjParser {
       }
     }
     mesh_.vertices.push_back(x);
+    if (lines_) lines_->vertices.push_back(line);
   }
 
   void read_element(const std::vector<std::string_view>& words, int line, bool polyline) {
@@ -155,6 +157,7 @@ class ObjParser {
                                  " in a row, a spring of zero length");
         }
         mesh_.segments.push_back({element.corners[k], element.corners[k + 1]});
+        if (lines_) lines_->segments.push_back(element.line);
       }
       return;
     }
@@ -166,13 +169,17 @@ class ObjParser {
     }
     if (element.corners.size() == 2) {
       mesh_.segments.push_back({element.corners[0], element.corners[1]});
+      if (lines_) lines_->segments.push_back(element.line);
     } else {
       mesh_.faces.push_back(element.corners);
+      if (lines_) lines_->faces.push_back(element.line);
     }
   }
 
   const std::string& name_;
   std::int64_t max_face_corners_;
+  bool planar_;
+  ObjLines* lines_;
   Mesh mesh_;
   std::vector<PendingElement> pending_;
 };
@@ -181,6 +188,11 @@ class ObjParser {
 
 Mesh read_obj_text(std::string_view text, const std::string& name, std::int64_t max_face_corners) {
   return ObjParser(name, max_face_corners).parse(text);
+}
+
+Mesh read_obj_text(std::string_view text, const std::string& name, std::int64_t max_face_corners,
+                   bool planar, ObjLines* lines) {
+  return ObjParser(name, max_face_corners, planar, lines).parse(text);
 }
 
 Mesh read_obj_file(const std::string& path) {

@@ -3,6 +3,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/limits.h"
 #include "io/scene_error.h"
@@ -29,5 +30,18 @@ Mesh read_obj_file(const std::string& path);
 /// Limits::max_face_corners, --max-face-corners).
 Mesh read_obj_text(std::string_view text, const std::string& name,
                    std::int64_t max_face_corners = Limits{}.max_face_corners);
+
+/// The 1-based line of each vertex, face (Mesh::faces) and segment (Mesh::segments) of an OBJ
+/// text, for readers that check more than read_obj_text does.
+struct ObjLines {
+  std::vector<int> vertices;
+  std::vector<int> faces;
+  std::vector<int> segments;
+};
+
+/// As above; with `planar`, a vertex may also be "v x y" (z = 0), and `lines`, when not null,
+/// receives where each element was written.
+Mesh read_obj_text(std::string_view text, const std::string& name, std::int64_t max_face_corners,
+                   bool planar, ObjLines* lines);
 
 }  // namespace fosssim

@@ -8,6 +8,7 @@
 #include "core/force_registry.h"
 #include "core/integrators/integrator_registry.h"
 #include "core/rigid/rigid_bodies.h"
+#include "core/rigid/rigid_contact_method.h"
 #include "io/element_reader.h"
 #include "io/scene_error.h"
 
@@ -101,11 +102,6 @@ class RigidBodySceneReader {
         scene_.warnings.push_back(
             warning_at(*e, "ignored: a particle force in a rigid-body scene"));
       }
-    }
-    if (const auto& contact = all(groups_, "rigidbodycollisionhandling"); !contact.empty()) {
-      throw SceneError(file_, contact[0]->GetLineNum(), "<rigidbodycollisionhandling>",
-                       "contact between rigid bodies is not implemented yet (Theme 3 milestone "
-                       "2); remove the element to run the bodies without contact");
     }
   }
 
@@ -267,7 +263,66 @@ class RigidBodySceneReader {
       keep_warnings(r);
     }
     if (n == 0) scene_.warnings.push_back(file_ + ": warning: the scene has no rigid bodies");
+    bodies->contact = read_contact(*bodies);
     model.rigid_bodies = std::move(bodies);
+  }
+
+  /// <rigidbodycollisionhandling detection="all-pairs" response="..."/>, with the course's
+  /// messages; FOSSSim's own optional maxreflections="..." (generalized reflections' limit).
+  RigidContactSettings read_contact(const RigidBodies& bodies) {
+    RigidContactSettings settings;
+    const XMLElement* e = first("rigidbodycollisionhandling", false);
+    if (e == nullptr) return settings;
+    ElementReader r = reader(*e, -1);
+    if (!r.has("detection")) {
+      r.fail("No rigidbodycollisionhandling 'detection' attribute specified. Exiting.");
+    }
+    const std::string detection = r.text("detection");
+    if (detection != "all-pairs") {
+      r.fail("Invalid rigidbodycollisionhandling 'detection' attribute specified. Valid option "
+             "is all-pairs. Exiting. (found \"" + detection + "\")");
+    }
+    if (!r.has("response")) {
+      r.fail("No rigidbodycollisionhandling 'response' attribute specified. Exiting.");
+    }
+    const std::string response = r.text("response");
+    settings.method = find_rigid_contact_method(response);
+    if (settings.method == nullptr) {
+      r.fail("Invalid rigidbodycollisionhandling 'response' attribute specified. Valid options "
+             "are lcp and velocity-projection. Exiting. (found \"" + response +
+             "\"; gr-lcp and gr-velocity-projection are valid too)");
+    }
+    if (r.has("maxreflections")) {
+      const int limit = r.integer("maxreflections");
+      if (limit < 1) r.fail("maxreflections", "must be at least 1, found " + std::to_string(limit));
+      settings.max_reflections = limit;
+    }
+    if (r.has("maxgroupcontacts")) {
+      const int limit = r.integer("maxgroupcontacts");
+      if (limit < 1) {
+        r.fail("maxgroupcontacts", "must be at least 1, found " + std::to_string(limit));
+      }
+      settings.max_group_contacts = limit;
+    }
+    for (int b = 0; b < bodies.size(); ++b) {
+      const RigidBody& body = bodies.bodies[b];
+      if (!body.fixed || (body.reported_velocity == Vec2::Zero() && body.reported_omega == 0.0)) {
+        continue;
+      }
+      r.warn("fixed body " + std::to_string(b) + " declares a velocity: " +
+             (settings.method->solver == ContactSolver::kLcp
+                  ? "the LCP counts it in contacts' normal velocities (velocity projection "
+                    "ignores it)"
+                  : "velocity projection ignores it (the LCP would count it)") +
+             (settings.method->generalized_reflections &&
+                      settings.method->solver == ContactSolver::kLcp
+                  ? "; with gr-lcp a body resting on it never stops reflecting (the course's "
+                    "program loops forever, FOSSSim stops at maxreflections)"
+                  : ""));
+      break;
+    }
+    keep_warnings(r);
+    return settings;
   }
 
   static double signed_area(const std::vector<Vec2>& points) {

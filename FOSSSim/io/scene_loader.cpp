@@ -12,6 +12,7 @@
 #include "core/force_registry.h"
 #include "core/integrators/integrator_registry.h"
 #include "io/collision_elements.h"
+#include "io/elastic_body_element.h"
 #include "io/element_reader.h"
 #include "io/json_scene_reader.h"
 #include "io/mesh_elements.h"
@@ -39,7 +40,7 @@ bool is_known_element(std::string_view name) {
     if (name == known) return true;
   }
   return find_force_kind(name) != nullptr || is_mesh_element(name) || is_collision_element(name) ||
-         is_rigid_body_element(name);
+         is_rigid_body_element(name) || name == kElasticBodyElement;
 }
 
 /// " (did you mean <springforce>?)" for an unknown element name within two edits of a known
@@ -50,6 +51,7 @@ std::string element_suggestion(std::string_view unknown) {
   for (std::string_view name : mesh_element_names()) names.push_back(name);
   for (std::string_view name : collision_element_names()) names.push_back(name);
   for (std::string_view name : rigid_body_element_names()) names.push_back(name);
+  names.push_back(kElasticBodyElement);
   for (std::string_view name : names) {
     if (looks_like_misspelling(unknown, name)) {
       return " (did you mean <" + std::string(name) + ">?)";
@@ -134,6 +136,11 @@ class SceneParser {
         throw SceneError(file_, root.GetLineNum(), "<scene>",
                          "rigid bodies are planar: a rigid-body scene cannot be dim=\"3\"");
       }
+      if (const auto& bodies = all(std::string(kElasticBodyElement)); !bodies.empty()) {
+        throw SceneError(file_, bodies[0]->GetLineNum(), "<elasticbody>",
+                         "an elastic body is made of particles: a rigid-body scene cannot hold "
+                         "one");
+      }
       read_rigid_body_scene(elements_, scene_, file_, files_.limits());
       return std::move(scene_);
     }
@@ -148,6 +155,7 @@ class SceneParser {
     read_particles();
     read_edges();
     mesh_forces_ = read_mesh_elements(root, scene_, file_, files_, errors_);
+    elastic_forces_ = read_elastic_bodies(root, scene_, file_, files_, errors_);
     read_collision_elements(root, scene_, file_, files_.limits(), errors_);
     read_forces();
     read_appearance();
@@ -383,6 +391,10 @@ class SceneParser {
       if (kind.tag == "springforce") {  // mesh springs sum right after the <springforce> group
         for (auto& force : mesh_forces_) scene_.model.forces.push_back(std::move(force));
       }
+      // An <elasticbody>'s forces sum right after the scene's own elements of their kind.
+      if (const auto body = elastic_forces_.find(kind.tag); body != elastic_forces_.end()) {
+        for (auto& force : body->second) scene_.model.forces.push_back(std::move(force));
+      }
     }
   }
 
@@ -425,6 +437,7 @@ class SceneParser {
   Scene scene_;
   ElementGroups elements_;
   std::vector<std::unique_ptr<Force>> mesh_forces_;
+  ForcesByTag elastic_forces_;
   SceneErrorList errors_;
   BrokenElements broken_;
 };

@@ -8,6 +8,7 @@
 
 #include "core/forces/rigid_body_spring_force.h"
 #include "core/rigid/rigid_bodies.h"
+#include "core/rigid/rigid_contact_detection.h"
 
 namespace fosssim {
 
@@ -79,6 +80,29 @@ void add_half_planes(const Scene& scene, const PixelMapping& mapping, Drawing& d
 /// Rigid bodies (docs/rigid-bodies.md): each hull filled in its body's colour, its edges as
 /// capsules of the body's radius (the shape contact sees), and the springs as thin capsules in
 /// their colours.
+/// The contacts rigid-body contact sees in `state` (a scene with <rigidbodycollisionhandling>):
+/// each contact's point on both bodies as a dot of kContactDotRadius pixels, and its normal,
+/// from body i0 towards body i1, as a line of kContactNormalLength pixels from between them.
+void add_rigid_contacts(const RigidBodies& bodies, const State& state, const PixelMapping& mapping,
+                        Drawing& drawing) {
+  constexpr Color kContactColor{0.75, 0.05, 0.1};
+  constexpr double kContactDotRadius = 2.0, kContactNormalLength = 10.0;
+  for (const RigidContact& c : detect_rigid_contacts(bodies, state.q)) {
+    if (!has_finite_normal(c)) continue;
+    const Vec2 q0 = rotate(body_angle(state.q, c.i0), c.arm0) + body_center(state.q, c.i0);
+    const Vec2 q1 = rotate(body_angle(state.q, c.i1), c.arm1) + body_center(state.q, c.i1);
+    const Point2 a = mapping.to_pixel(q0.x(), q0.y()), b = mapping.to_pixel(q1.x(), q1.y());
+    drawing.particles.push_back({a, kContactDotRadius, kContactColor});
+    drawing.particles.push_back({b, kContactDotRadius, kContactColor});
+    const Vec2 mid = 0.5 * (q0 + q1);
+    const Point2 m = mapping.to_pixel(mid.x(), mid.y());
+    // Pixels grow downwards: the world's normal (x, y) is (x, −y) on the picture.
+    const Point2 tip{m.x + kContactNormalLength * c.normal.x(),
+                     m.y - kContactNormalLength * c.normal.y()};
+    drawing.edges.push_back({m, tip, 0.5 * kContactDotRadius, kContactColor});
+  }
+}
+
 void add_rigid_bodies(const Scene& scene, const State& state, const PixelMapping& mapping,
                       Drawing& drawing) {
   const RigidBodies& bodies = *scene.model.rigid_bodies;
@@ -112,6 +136,7 @@ void add_rigid_bodies(const Scene& scene, const State& state, const PixelMapping
                              SceneModel::kDefaultEdgeRadius * ppu, color});
     ++spring;
   }
+  if (bodies.contact.method != nullptr) add_rigid_contacts(bodies, state, mapping, drawing);
 }
 
 /// Hinges are drawn as capsules of this radius (pixels), their middle particle as a disc of

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/sanitizers.h"
 #include "scene_result.h"
 
 namespace fosssim {
@@ -37,7 +38,7 @@ class WorkFolder {
 /// Address space each process of a candidate may map (RLIMIT_AS), by default: 4 GiB. An
 /// oracle built with AddressSanitizer sets no such limit by default, because the sanitizer
 /// builds it grades (CI's sanitizer preset) reserve terabytes of address space.
-#if defined(__SANITIZE_ADDRESS__)
+#if FOSSSIM_ADDRESS_SANITIZER
 constexpr std::int64_t kDefaultCandidateMemoryBytes = -1;
 #else
 constexpr std::int64_t kDefaultCandidateMemoryBytes = std::int64_t(4) << 30;

@@ -1,5 +1,6 @@
 #include "scene_grading.h"
 
+#include <array>
 #include <chrono>
 #include <sstream>
 #include <stdexcept>
@@ -7,8 +8,10 @@
 #include "core/limits.h"
 #include "core/text.h"
 #include "diagnosis.h"
+#include "grading/rigid_grader.h"
 #include "grading/step_grader.h"
 #include "io/input_files.h"
+#include "io/rigid_trajectory.h"
 #include "io/scene_loader.h"
 #include "printable_text.h"
 #include "seconds_since.h"
@@ -73,15 +76,107 @@ std::optional<std::string> replay_checking_frames(StepGrader& grader, Trajectory
   return find_non_finite(file, dim, grader.file_state().step + 1);
 }
 
+/// Where a Theme 3 trajectory first holds a NaN or infinite value, as "frame 12, body 1:
+/// state (X_x X_y θ V_x V_y ω) (nan, 0, 0, 0, 0, 0)"; nothing when every value is finite.
+std::optional<std::string> rigid_non_finite(const SceneModel& model, const std::string& path) {
+  const int bodies = model.num_particles();
+  RigidTrajectoryReader file = RigidTrajectoryReader::open(path, bodies, model.num_steps());
+  for (std::int64_t k = 0; k <= model.num_steps(); ++k) {
+    const RigidFrame frame = file.read_frame(k);
+    for (int b = 0; b < bodies; ++b) {
+      if (!frame.state.segment<6>(6 * b).allFinite()) {
+        return "frame " + std::to_string(k) + ", body " + std::to_string(b) +
+               ": state (X_x, X_y, theta, V_x, V_y, omega) " + vector_text(frame.state, 6 * b, 6);
+      }
+    }
+    if (!frame.start.allFinite()) return "frame 0: the start block (M, X(0), I)";
+    if (!frame.quantities.allFinite()) {
+      return "frame " + std::to_string(k) + ": the quantities (P, L, T, U)";
+    }
+  }
+  return std::nullopt;
+}
+
+/// One line naming what a graded Theme 3 trajectory misses: "Maximum X Residual 1e-07 (limit
+/// 1e-08), P computation incorrect (first in frame 3, body 0); first step over the limits 17".
+std::string rigid_failure_reason(const RigidGradeReport& report) {
+  static constexpr const char* kResiduals[] = {"X", "Theta", "V", "Omega"};
+  static constexpr const char* kQuantities[] = {"M", "X(0)", "I", "P", "L_cm",
+                                                "L_spin", "T_cm", "T_spin", "U"};
+  std::string reason;
+  const auto add = [&reason](const std::string& part) {
+    reason += (reason.empty() ? "" : ", ") + part;
+  };
+  for (int r = 0; r < 4; ++r) {
+    if (!report.accumulated_passed(r)) {
+      add(std::string("Accumulated ") + kResiduals[r] + " Residual " +
+          to_text(report.accumulated[r]) + " (limit " +
+          to_text(report.criteria.accumulated_limit) + ")");
+    }
+  }
+  for (int r = 0; r < 4; ++r) {
+    if (!report.maximum_passed(r)) {
+      add(std::string("Maximum ") + kResiduals[r] + " Residual " + to_text(report.maximum[r]) +
+          " (limit " + to_text(report.criteria.maximum_limit) + ")");
+    }
+  }
+  for (int q = 0; q < kRigidQuantityCount; ++q) {
+    if (report.quantity_correct[q]) continue;
+    std::string part = std::string(kQuantities[q]) + " computation incorrect";
+    for (const QuantityMismatch& m : report.mismatches) {
+      if (m.quantity != q) continue;
+      part += " (first in frame " + std::to_string(m.frame) +
+              (m.body >= 0 ? ", body " + std::to_string(m.body) : std::string()) + ")";
+      break;
+    }
+    add(part);
+  }
+  if (report.first_failing_step > 0) {
+    reason += "; first step over the limits " + std::to_string(report.first_failing_step);
+  }
+  return reason;
+}
+
+/// Grades the checked Theme 3 trajectory of a run with the course's rigid-body criteria
+/// (grading/rigid_grader.h), as FOSSSim -i does; fills verdict, residuals and explanation. The
+/// residuals are the four figures of the course's residual file: accumulated X + θ and V + ω,
+/// maximum X + θ and V + ω. Rigid grading keeps no per-step history.
+void grade_rigid_file(const Scene& scene, const std::string& path, SceneResult& result) {
+  std::optional<RigidGradeReport> report;
+  try {
+    if (auto bad = rigid_non_finite(scene.model, path)) {
+      result.verdict = Verdict::kGarbage;
+      result.reason = "the trajectory holds a non-finite value: " + *bad;
+      return;
+    }
+    report = grade_rigid_trajectory(scene, path);
+  } catch (const Error& error) {
+    result.verdict = Verdict::kShort;
+    result.reason = error.what();
+    return;
+  }
+  const auto sum = [](const std::array<double, 4>& r, int a, int b) { return r[a] + r[b]; };
+  result.residuals = Residuals{sum(report->accumulated, kResidualX, kResidualTheta),
+                               sum(report->accumulated, kResidualV, kResidualOmega),
+                               sum(report->maximum, kResidualX, kResidualTheta),
+                               sum(report->maximum, kResidualV, kResidualOmega)};
+  result.verdict = report->passed() ? Verdict::kPassed : Verdict::kFailed;
+  if (!report->passed()) {
+    result.reason = rigid_failure_reason(*report);
+    std::ostringstream details;
+    print_rigid_grade_report(details, *report);
+    result.details = details.str();
+  }
+}
+
 /// Grades the checked trajectory of a run, each step's residuals into `history`; fills verdict,
-/// residuals and explanation. Returns the report when the trajectory could be graded.
+/// residuals and explanation. Returns the report when the trajectory could be graded (a
+/// particle scene's; Theme 3 scenes are graded by grade_rigid_file, without one).
 std::optional<GradeReport> grade_file(const Scene& scene, const std::string& path,
                                       ResidualHistory& history, SceneResult& result) {
   const int dim = scene.model.dim;
-  if (scene.model.rigid_bodies) {  // FOSSSim -i grades these (grading/rigid_grader.h)
-    result.verdict = Verdict::kCannotRun;
-    result.reason = "the oracle does not grade rigid-body (Theme 3) scenes yet; grade them with "
-                    "FOSSSim -i";
+  if (scene.model.rigid_bodies) {
+    grade_rigid_file(scene, path, result);
     return std::nullopt;
   }
   std::optional<TrajectoryReader> file;

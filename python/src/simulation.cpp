@@ -18,6 +18,7 @@
 #include "grading/step_grader.h"
 #include "io/trajectory_file.h"
 #include "io/trajectory_steps.h"
+#include "outputs/run_summary.h"
 #include "pictures/cairo_painter.h"
 #include "render/scene_view.h"
 #include "scripting/step_hooks.h"
@@ -109,7 +110,9 @@ class PySimulation {
         state_(scene_->initial),
         q_(state_.q),
         v_(state_.v),
-        view_(*scene_, state_, 512, 512) {}
+        view_(*scene_, state_, 512, 512) {
+    restart_summary();
+  }
 
   const Scene& scene() const { return *scene_; }
   const std::shared_ptr<PyScene>& scene_object() const { return owner_; }
@@ -132,6 +135,7 @@ class PySimulation {
             pipeline_.step(state_, &record_);
             ++taken;
             view_.record(state_);
+            summary_->add(state_, &record_, &pipeline_.integrator());
             if (writer != nullptr) write_trajectory_state(**writer, layout, state_, &record_);
             if (std::chrono::steady_clock::now() >= deadline) break;
           }
@@ -152,7 +156,14 @@ class PySimulation {
       state_.step = *step;
     }
     record_.clear();
+    restart_summary();
     publish();
+  }
+
+  /// The run summary (outputs/run_summary.h) since the simulation was made or its state last
+  /// set, as Python objects: json.loads of what FOSSSim --stats-json writes.
+  py::object stats() const {
+    return py::module_::import("json").attr("loads")(summary_->json());
   }
 
   Image render(int width, int height) {
@@ -177,6 +188,12 @@ class PySimulation {
   std::vector<std::string> notes() const { return pipeline_.integrator().notes(); }
 
  private:
+  /// Starts the summary afresh at the current state.
+  void restart_summary() {
+    summary_.emplace(*scene_);
+    summary_->add(state_, nullptr, &pipeline_.integrator());
+  }
+
   /// Copies the state into the buffers Python's views read. The state's own vectors may be
   /// replaced by a step (collision passes swap buffers), so Python never sees them directly.
   void publish() {
@@ -191,6 +208,7 @@ class PySimulation {
   Vector q_, v_;  // same size as state_'s, never reallocated
   StepRecord record_;
   SceneView view_;
+  std::optional<RunSummary> summary_;
   std::atomic<bool> busy_{false};
 };
 
@@ -404,6 +422,10 @@ void add_simulation_bindings(py::module_& module) {
             return out;
           },
           "The collisions the last step handled, in the order found (a new list).")
+      .def("stats", &PySimulation::stats,
+           "The run's summary as a dict, the same as FOSSSim --stats-json writes "
+           "(docs/command-line.md, 'Run summaries'): steps, solver statistics, collisions per "
+           "step, energy drift and timings, since the simulation was made or set_state.")
       .def_property_readonly("notes", &PySimulation::notes,
                              "What the integrator has to say about the run so far.")
       .def(

@@ -27,6 +27,7 @@
 
 #include "core/integrators/integrator_registry.h"
 #include "support/run_program.h"
+#include "core/sanitizers.h"
 
 namespace fosssim {
 namespace {
@@ -305,7 +306,7 @@ TEST_F(LimitsAndFailures, TheResidualFileAgreesWithTheReportForAnAllZeroTrajecto
 // MB for a cloth that needs about 3 GB) reach main's handler: one message, exit status 2, and
 // the run's output kept as .incomplete, never left as .partial or under its own name.
 TEST_F(LimitsAndFailures, RunningOutOfMemoryIsAMessageAndStatus2WithNoPartialFileLeft) {
-#if defined(__SANITIZE_ADDRESS__)
+#if FOSSSIM_ADDRESS_SANITIZER
   GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit allows";
 #endif
   write("big.xml", R"(<scene dim="3"><duration time="0.05"/>

@@ -224,8 +224,8 @@ TEST(IntegratorOptions, AreValidatedAndWarnedAboutForOtherMethods) {
        "\"exact\" or \"projected\""},
   };
   for (const auto& [element, problem] : bad) {
-    const SceneError scene_error =
-        thrown_by<SceneError>([&] { load_scene_text(base(element), "opts.xml"); });
+    const SceneError scene_error = thrown_by<SceneError>(
+        [&, &element = element] { load_scene_text(base(element), "opts.xml"); });
     EXPECT_EQ(scene_error.line(), 3);
     EXPECT_NE(scene_error.problem().find(problem), std::string::npos) << scene_error.what();
   }

@@ -18,6 +18,7 @@
 #include "batch.h"
 #include "scene_grading.h"
 #include "test_support.h"
+#include "core/sanitizers.h"
 
 namespace fosssim {
 namespace {
@@ -199,7 +200,7 @@ TEST(Sandbox, TooManyProcessesStopTheCandidate) {
 }
 
 TEST(Sandbox, MemoryLimitStopsALargeAllocation) {
-#if defined(__SANITIZE_ADDRESS__)
+#if FOSSSIM_ADDRESS_SANITIZER
   GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit allows";
 #endif
   TemporaryFolder work;

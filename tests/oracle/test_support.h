@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 #include <tinyxml2.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cctype>
@@ -51,8 +52,21 @@ inline std::vector<std::string> allow_read_arguments() {
   return arguments;
 }
 
+/// The bytes of a /proc file, empty if it cannot be read. Read with read(2): a process that
+/// ends while its file is read makes read fail with ESRCH, which libstdc++'s filebuf turns
+/// into an exception.
+inline std::string read_proc_file(const std::filesystem::path& path) {
+  std::string bytes;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return bytes;
+  char buffer[4096];
+  for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) > 0;) bytes.append(buffer, n);
+  ::close(fd);
+  return bytes;
+}
+
 /// The live processes of the machine (zombies left out) that have `argument` among their
-/// arguments, as read from /proc.
+/// arguments, as read from /proc. Processes may end while the listing is read.
 inline std::vector<int> processes_with_argument(const std::string& argument) {
   std::vector<int> found;
   std::error_code error;
@@ -60,13 +74,10 @@ inline std::vector<int> processes_with_argument(const std::string& argument) {
        it.increment(error)) {
     const std::string name = it->path().filename().string();
     if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-    std::ifstream cmdline(it->path() / "cmdline", std::ios::binary);
-    const std::string arguments((std::istreambuf_iterator<char>(cmdline)),
-                                std::istreambuf_iterator<char>());
-    if (arguments.find(std::string(1, '\0') + argument + '\0') == std::string::npos) continue;
-    std::ifstream stat(it->path() / "stat");
-    std::string line;
-    std::getline(stat, line);
+    const std::string arguments = '\0' + read_proc_file(it->path() / "cmdline");
+    if (arguments.find('\0' + argument + '\0') == std::string::npos) continue;
+    const std::string stat = read_proc_file(it->path() / "stat");
+    const std::string line = stat.substr(0, stat.find('\n'));
     const std::size_t close = line.rfind(')');
     if (close != std::string::npos && close + 2 < line.size() && line[close + 2] == 'Z') continue;
     found.push_back(std::stoi(name));

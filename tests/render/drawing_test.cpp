@@ -260,5 +260,46 @@ TEST(ComposeDrawing, RigidBodiesAreFilledHullsAndSpringsAreLines) {
   EXPECT_TRUE(d.particles.empty());
 }
 
+// Contact (a scene with <rigidbodycollisionhandling>): each contact's two points as small dark
+// red dots and its normal as a short line from between them, pointing from body i0 to i1.
+TEST(ComposeDrawing, RigidBodyContactsAreDotsWithNormals) {
+  const std::string text = R"(<scene>
+  <simtype type="rigid-body"/>
+  <duration time="1"/>
+  <rigidbodyintegrator type="explicit-euler" dt="0.1"/>
+  <rigidbodyvertex x="-3" y="0" m="1"/>
+  <rigidbodyvertex x="3" y="0" m="1"/>
+  <rigidbodyvertex x="3" y="-1" m="1"/>
+  <rigidbodyvertex x="-3" y="-1" m="1"/>
+  <rigidbodyvertex x="-1" y="2.15" m="1"/>
+  <rigidbodyvertex x="1" y="2.15" m="1"/>
+  <rigidbodyvertex x="1" y="0.15" m="1"/>
+  <rigidbodyvertex x="-1" y="0.15" m="1"/>
+  <rigidbody p="0" p="1" p="2" p="3" vx="0" vy="0" omega="0" r="0.1" fixed="1"/>
+  <rigidbody p="4" p="5" p="6" p="7" vx="0" vy="0" omega="0" r="0.1"/>
+  <!--contact-->
+</scene>)";
+  const auto drawing_of = [&](const std::string& handling) {
+    std::string scene_text = text;
+    scene_text.replace(scene_text.find("<!--contact-->"), 14, handling);
+    const Scene scene = load_scene_text(scene_text, "contact.xml");
+    const PathHistory paths(scene);
+    return compose_drawing(scene, scene.initial, paths, Camera{0.0, 0.0, 4.0}, 512, 512);
+  };
+  EXPECT_TRUE(drawing_of("").particles.empty());
+  const Drawing d =
+      drawing_of(R"(<rigidbodycollisionhandling detection="all-pairs" response="lcp"/>)");
+  // Two contacts (the box's bottom corners, 0.15 above the floor): two dots and a normal each.
+  ASSERT_EQ(d.particles.size(), 4u);
+  ASSERT_EQ(d.edges.size(), 8u + 2u);  // the hulls' edges, then the normals
+  // The box's bottom-right corner (1, 0.15): the dot on the floor at (1, 0.1) (64 pixels per
+  // unit), the normal pointing up (from the floor, body 0, to the box) on the picture.
+  EXPECT_NEAR(d.particles[2].center.x, 256 + 64 * 1.0, 1e-9);
+  EXPECT_NEAR(d.particles[2].center.y, 256 - 64 * 0.1, 1e-9);
+  const Capsule& normal = d.edges[9];
+  EXPECT_NEAR(normal.a.x, normal.b.x, 1e-9);
+  EXPECT_LT(normal.b.y, normal.a.y);
+}
+
 }  // namespace
 }  // namespace fosssim::testing

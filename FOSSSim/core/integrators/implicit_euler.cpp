@@ -85,6 +85,15 @@ void ImplicitEuler::advance(State& state) {
   state.v += dv;
 }
 
+SolverReport ImplicitEuler::solver_report() const {
+  SolverReport report;
+  report.iterations_of = "newton";
+  report.last_step_iterations = last_iterations_;
+  report.line_search_steps = line_search_steps_;
+  if (solver_ && !course_) report.linear_solves = solver_->statistics();  // else the course's LU
+  return report;
+}
+
 std::vector<std::string> ImplicitEuler::notes() const {
   if (line_search_steps_ == 0) return {};
   return {"implicit Euler: plain Newton did not converge on " + std::to_string(line_search_steps_) +

@@ -43,6 +43,7 @@ class ImplicitEuler final : public Integrator {
   /// Number of steps so far that plain Newton could not solve and the line search did.
   std::int64_t line_search_steps() const { return line_search_steps_; }
   std::vector<std::string> notes() const override;
+  SolverReport solver_report() const override;
   /// The linear solver and what it did so far.
   const StepSolver& solver() const { return *solver_; }
 

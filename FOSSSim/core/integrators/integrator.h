@@ -8,6 +8,7 @@
 
 #include "core/force_set.h"
 #include "core/integrators/integrator_method.h"
+#include "core/integrators/solver_report.h"
 #include "core/scene_model.h"
 #include "core/state.h"
 #include "core/step/cancellation.h"
@@ -45,6 +46,9 @@ class Integrator {
   /// Things the user should know about the run so far (for example, fallbacks taken), one
   /// sentence each; empty when there is nothing to say.
   virtual std::vector<std::string> notes() const { return {}; }
+
+  /// What its solvers did: the last step's iterations and the totals so far (solver_report.h).
+  virtual SolverReport solver_report() const { return {}; }
 
   /// What the iterations of step() ask once per iteration (core/step/cancellation.h); by
   /// default nothing cancels.

@@ -21,6 +21,11 @@ class LinearizedImplicitEuler final : public Integrator {
 
   /// The linear solver and what it did so far.
   const StepSolver& solver() const { return *solver_; }
+  SolverReport solver_report() const override {
+    // The course's dense LU (small 2D systems) keeps no statistics.
+    return {.linear_solves =
+                solver_ && !course_ ? std::optional(solver_->statistics()) : std::nullopt};
+  }
 
  protected:
   void prepare() override;

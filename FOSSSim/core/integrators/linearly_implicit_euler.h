@@ -35,6 +35,9 @@ class LinearlyImplicitEuler final : public Integrator {
   Factorization last_factorization() const { return solver_->last_factorization(); }
   /// The linear solver and what it did so far.
   const StepSolver& solver() const { return *solver_; }
+  SolverReport solver_report() const override {
+    return {.linear_solves = solver_ ? std::optional(solver_->statistics()) : std::nullopt};
+  }
 
  protected:
   void prepare() override;

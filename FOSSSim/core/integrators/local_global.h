@@ -113,6 +113,11 @@ class LocalGlobal final : public Integrator {
   double last_change() const { return last_change_; }
   /// How many times Q has been factored (once in precompute, plus anchor and contact changes).
   int factorizations() const { return factorizations_; }
+  SolverReport solver_report() const override {
+    return {.iterations_of = "local-global",
+            .last_step_iterations = last_iterations_,
+            .factorizations = factorizations_};
+  }
   /// The obstacle contacts of the last step (particle-obstacle pairs in Q).
   int last_contacts() const { return static_cast<int>(contacts_.size()); }
   /// The factorization in use.

@@ -65,6 +65,11 @@ class Newton final : public Integrator {
   int last_iterations() const { return last_iterations_; }
   /// The linear solver and what it did so far.
   const StepSolver& solver() const { return *solver_; }
+  SolverReport solver_report() const override {
+    return {.iterations_of = "newton",
+            .last_step_iterations = last_iterations_,
+            .linear_solves = solver_ ? std::optional(solver_->statistics()) : std::nullopt};
+  }
 
  protected:
   void prepare() override;

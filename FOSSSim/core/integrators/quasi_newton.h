@@ -45,6 +45,11 @@ class QuasiNewton final : public Integrator {
   int last_iterations() const { return last_iterations_; }
   /// How many times Q has been factored (once in precompute, plus anchor changes).
   int factorizations() const { return factorizations_; }
+  SolverReport solver_report() const override {
+    return {.iterations_of = "quasi-newton",
+            .last_step_iterations = last_iterations_,
+            .factorizations = factorizations_};
+  }
 
  protected:
   void prepare() override;

@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "core/rigid/rigid_contact_settings.h"
 #include "core/types.h"
 
 namespace fosssim {
@@ -55,6 +56,8 @@ struct RigidBody {
 /// The bodies of a scene, numbered in file order (body b is coordinates 3b..3b+2).
 struct RigidBodies {
   std::vector<RigidBody> bodies;
+  /// Contact between the bodies (milestone 2), none by default.
+  RigidContactSettings contact;
   int size() const { return static_cast<int>(bodies.size()); }
 };
 

@@ -91,7 +91,7 @@ Problem oscillator() {
       A * std::cos(omega * kEndTime) * e1 + (B / omega) * std::sin(omega * kEndTime) * e2;
   exact.v << Vector::Zero(D),
       -A * omega * std::sin(omega * kEndTime) * e1 + B * std::cos(omega * kEndTime) * e2;
-  const auto scene = [=](std::string_view kind, double h) {
+  const auto scene = [=, e1 = e1, e2 = e2](std::string_view kind, double h) {
     TestScene s(D, kind, h);
     s.add_particle(1.0, Vector::Zero(D), Vector::Zero(D), /*fixed=*/true);
     s.add_particle(m, A * e1, B * e2);
@@ -152,7 +152,7 @@ Problem circular_orbit() {
   exact.v.resize(2 * D);
   exact.q << Vector::Zero(D), r * (std::cos(angle) * e1 + std::sin(angle) * e2);
   exact.v << Vector::Zero(D), r * omega * (-std::sin(angle) * e1 + std::cos(angle) * e2);
-  const auto scene = [=](std::string_view kind, double h) {
+  const auto scene = [=, e1 = e1, e2 = e2](std::string_view kind, double h) {
     TestScene s(D, kind, h);
     s.add_particle(sun, Vector::Zero(D), Vector::Zero(D), /*fixed=*/true);
     s.add_particle(0.01, r * e1, r * omega * e2);

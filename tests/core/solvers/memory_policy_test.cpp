@@ -8,6 +8,7 @@
 // use first.)
 
 #include "core/solvers/memory_policy.h"
+#include "core/sanitizers.h"
 
 #include <gtest/gtest.h>
 
@@ -22,17 +23,7 @@ namespace fosssim::testing {
 namespace {
 
 /// AddressSanitizer replaces malloc: glibc's options and counts mean nothing under it.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kMallocIsGlibcs = false;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kMallocIsGlibcs = false;
-#else
-constexpr bool kMallocIsGlibcs = true;
-#endif
-#else
-constexpr bool kMallocIsGlibcs = true;
-#endif
+constexpr bool kMallocIsGlibcs = !FOSSSIM_ADDRESS_SANITIZER;
 
 #if defined(__GLIBC__)
 void* volatile kept = nullptr;  // volatile: the allocations below may not be elided

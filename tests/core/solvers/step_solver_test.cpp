@@ -204,7 +204,10 @@ TEST(StepSolver, SparseDirectPathFactorsSymmetricMatricesByLdltDefiniteOrNot) {
     }
     const Vector b = Random(162).uniform_vector(120, -1.0, 1.0);
     StepSolver solver(true, SolverChoice::kSparseDirect);
-    expect_solves(A, solver.solve(A, b), b);
+    // The factor is single precision and GMRES stops at the promised residual, so the distance
+    // to dense LU's answer is bounded by the conditioning, not by a fixed 1e-10 (which the
+    // compressed chain met under gcc and missed by a third under clang: 1.03e-10 vs 7.8e-11).
+    expect_meets_residual_promise(A, solver.solve(A, b), b);
     EXPECT_EQ(solver.last_factorization(), Factorization::kMumps);
     EXPECT_EQ(solver.statistics().ldlt_factorizations, 1);
   }

@@ -1,0 +1,162 @@
+// fosssim-oracle on Theme 3 (rigid-body) scenes: run the candidate, grade its file with the
+// rigid-body grader of FOSSSim -i, and report it like any other scene (docs/grading.md). A
+// correct candidate passes with zero residuals; a perturbed state, a NaN, a short file and a
+// hanging candidate get their verdicts with reasons; the command writes JUnit for the suite.
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <limits>
+
+#include "batch.h"
+#include "grading/rigid_grader.h"
+#include "io/scene_loader.h"
+#include "scene_grading.h"
+#include "test_support.h"
+
+namespace fosssim {
+namespace {
+
+using testing::TemporaryFolder;
+
+const std::string kRigidScene = testing::kData + "/rigid/square_triangle_springs.xml";
+constexpr int kBodies = 2;
+constexpr int kSteps = 40;
+
+SceneEntry rigid_scene() { return {"rigid/square_triangle_springs.xml", kRigidScene, false}; }
+
+GradingOptions options_for(const std::string& candidate, const TemporaryFolder& work) {
+  GradingOptions options;
+  options.run.candidate = candidate;
+  options.run.timeout_seconds = 30.0;
+  options.run.readable = testing::sandbox_readable();
+  options.run.readable.push_back(work.path());  // the prepared files of file_copying_candidate
+  options.work_dir = work.path();
+  return options;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+/// The byte offset of body b's state component c (X_x X_y θ V_x V_y ω) in frame k of a Theme 3
+/// file (io/rigid_trajectory.h): frame 0 is 6B + 4B + 6B + 1 doubles, later frames 6B + 6B + 1.
+std::size_t state_offset(int k, int b, int c) {
+  const int frame0 = 16 * kBodies + 1, frame = 12 * kBodies + 1;
+  const int doubles = k == 0 ? 0 : frame0 + frame * (k - 1);
+  return 8 * static_cast<std::size_t>(doubles + 6 * b + c);
+}
+
+/// Grades the rigid scene with file_copying_candidate.sh writing `bytes`.
+SceneResult grade_copied(const std::string& bytes, const TemporaryFolder& work) {
+  const std::string file = work / "prepared.bin";
+  testing::write_bytes(file, bytes);
+  testing::set_env("ORACLE_TEST_TRAJECTORY", file);
+  testing::set_env("ORACLE_TEST_EXIT", "0");
+  testing::set_env("ORACLE_TEST_STDERR", "");
+  return grade_scene(rigid_scene(),
+                     options_for(testing::candidate("file_copying_candidate.sh"), work));
+}
+
+void add_to_double(std::string& bytes, std::size_t offset, double delta) {
+  double value = 0.0;
+  std::memcpy(&value, bytes.data() + offset, sizeof value);
+  value += delta;
+  std::memcpy(bytes.data() + offset, &value, sizeof value);
+}
+
+TEST(RigidGrading, FossSimPassesWithZeroResiduals) {
+  TemporaryFolder work;
+  const SceneResult r = grade_scene(rigid_scene(), options_for(testing::kFossSim, work));
+  EXPECT_EQ(r.verdict, Verdict::kPassed) << r.reason << "\n" << r.details;
+  ASSERT_TRUE(r.residuals);
+  EXPECT_EQ(r.residuals->accumulated_position, 0.0);  // same code, same bits
+  EXPECT_EQ(r.residuals->accumulated_velocity, 0.0);
+  EXPECT_EQ(r.residuals->max_position, 0.0);
+  EXPECT_EQ(r.residuals->max_velocity, 0.0);
+  EXPECT_EQ(r.integrator, "symplectic-euler");
+  EXPECT_EQ(r.steps, kSteps);
+  EXPECT_EQ(r.particles, kBodies);
+}
+
+// The oracle's verdict and residuals are those of FOSSSim -i's rigid grader on the same file.
+TEST(RigidGrading, APerturbedAngleFailsAtThatStepAsFossSimGradesIt) {
+  TemporaryFolder work;
+  std::string bytes = testing::fosssim_trajectory(kRigidScene, work);
+  ASSERT_EQ(bytes.size(), 8u * (4 * kBodies + (kSteps + 1) * (12 * kBodies + 1)));
+  add_to_double(bytes, state_offset(17, 1, 2), 1e-7);  // frame 17, body 1, θ
+  const SceneResult r = grade_copied(bytes, work);
+  EXPECT_EQ(r.verdict, Verdict::kFailed);
+  EXPECT_TRUE(contains(r.reason, "Maximum Theta Residual")) << r.reason;
+  EXPECT_TRUE(contains(r.reason, "(limit 1e-08)")) << r.reason;
+  EXPECT_TRUE(contains(r.reason, "first step over the limits 17")) << r.reason;
+  EXPECT_TRUE(contains(r.details, "Overall success: Failed.")) << r.details;
+  ASSERT_TRUE(r.residuals);
+  // What FOSSSim -i reports for the same file: the course's residual-file sums.
+  testing::write_bytes(work / "perturbed.bin", bytes);
+  const RigidGradeReport direct =
+      grade_rigid_trajectory(load_scene_file(kRigidScene), work / "perturbed.bin");
+  EXPECT_FALSE(direct.passed());
+  EXPECT_EQ(r.residuals->max_position,
+            direct.maximum[kResidualX] + direct.maximum[kResidualTheta]);
+  EXPECT_EQ(r.residuals->accumulated_velocity,
+            direct.accumulated[kResidualV] + direct.accumulated[kResidualOmega]);
+  EXPECT_GE(r.residuals->max_position, 1e-7 * (1 - 1e-6));
+}
+
+TEST(RigidGrading, APerturbationBelowTheLimitPasses) {
+  TemporaryFolder work;
+  std::string bytes = testing::fosssim_trajectory(kRigidScene, work);
+  add_to_double(bytes, state_offset(17, 0, 0), 1e-12);  // frame 17, body 0, X_x
+  const SceneResult r = grade_copied(bytes, work);
+  EXPECT_EQ(r.verdict, Verdict::kPassed) << r.reason;
+  ASSERT_TRUE(r.residuals);
+  EXPECT_GT(r.residuals->max_position, 0.0);
+  EXPECT_LT(r.residuals->max_position, 1e-8);
+}
+
+TEST(RigidGrading, NanIsGarbageNamingFrameAndBody) {
+  TemporaryFolder work;
+  std::string bytes = testing::fosssim_trajectory(kRigidScene, work);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::memcpy(bytes.data() + state_offset(9, 1, 5), &nan, sizeof nan);  // frame 9, body 1, ω
+  const SceneResult r = grade_copied(bytes, work);
+  EXPECT_EQ(r.verdict, Verdict::kGarbage);
+  EXPECT_TRUE(contains(r.reason, "frame 9, body 1: state")) << r.reason;
+  EXPECT_TRUE(contains(r.reason, "nan")) << r.reason;
+}
+
+TEST(RigidGrading, ShortAndOversizedFilesAreRefusedBeforeGrading) {
+  TemporaryFolder work;
+  const std::string good = testing::fosssim_trajectory(kRigidScene, work);
+  EXPECT_EQ(grade_copied(good.substr(0, good.size() - 8), work).verdict, Verdict::kShort);
+  EXPECT_EQ(grade_copied(good + good.substr(0, 8), work).verdict, Verdict::kOversized);
+}
+
+TEST(RigidGrading, AHangingCandidateTimesOut) {
+  TemporaryFolder work;
+  GradingOptions options = options_for(testing::candidate("hanging_candidate.sh"), work);
+  options.run.timeout_seconds = 0.5;
+  const SceneResult r = grade_scene(rigid_scene(), options);
+  EXPECT_EQ(r.verdict, Verdict::kTimedOut);
+  EXPECT_LT(r.run_seconds, 5.0);
+}
+
+TEST(RigidGrading, TheCommandGradesATheme3SuiteIntoJUnit) {
+  TemporaryFolder work;
+  const std::string junit = work / "junit.xml";
+  std::vector<std::string> argv = {testing::kOracle, "grade", "--candidate", testing::kFossSim,
+                                   "-q", "--junit", junit, "--work-dir", work.path(),
+                                   testing::kData + "/rigid"};
+  for (const std::string& argument : testing::allow_read_arguments()) argv.push_back(argument);
+  const ChildOutcome outcome = testing::run_program(argv);
+  EXPECT_EQ(outcome.exit_status, 0) << outcome.stderr_tail;
+  const std::string xml = testing::read_bytes(junit);
+  EXPECT_TRUE(contains(xml, "name=\"square_triangle_springs.xml\"")) << xml;
+  EXPECT_TRUE(contains(xml, "failures=\"0\"")) << xml;
+  EXPECT_FALSE(contains(xml, "<failure")) << xml;
+  EXPECT_FALSE(contains(xml, "<error")) << xml;
+}
+
+}  // namespace
+}  // namespace fosssim
