@@ -285,10 +285,12 @@ std::string integrator_help() {
 /// The contact methods and their options, for the end of --help.
 std::string contact_help() {
   std::string out =
-      "Contact methods (<collision type=\"...\">) and their options (attributes of\n"
-      "<collision>; docs/collisions.md):\n";
+      "Contact methods and their options: particle scenes name one with <collision\n"
+      "type=\"...\"> (options are attributes of <collision>; docs/collisions.md), rigid-body\n"
+      "scenes with <rigidbodycollisionhandling response=\"...\"> (docs/rigid-bodies.md):\n";
   for (const ContactMethod* method : contact_methods()) {
     out += "  " + std::string(method->name) + "\n      " + std::string(method->summary) + "\n";
+    if (!method->scope.particles) out += "      (planar rigid bodies)\n";
     for (const OptionSpec& spec : method->options) {
       out += "      " + std::string(spec.name) + " = " + spec.describe_values() + " (default " +
              spec.default_text() + ")\n          " + std::string(spec.help) + "\n";

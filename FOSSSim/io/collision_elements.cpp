@@ -109,6 +109,7 @@ class CollisionReader {
                std::to_string(collisions[0]->GetLineNum()) + ", applies)");
       r.text_or_empty("type");  // its attributes are not reported one by one
       for (const ContactMethod* method : contact_methods()) {
+        if (!method->scope.particles) continue;
         for (const OptionSpec& option : method->options) {
           r.text_or_empty(std::string(option.name).c_str());
         }
@@ -204,11 +205,15 @@ class CollisionReader {
     const std::string type = r.text("type");
     const ContactMethod* method = find_contact_method(type);
     if (method == nullptr) {
-      const std::string_view meant = suggest_contact_method(type);
+      const std::string_view meant = suggest_contact_method(type, BodyKind::kParticles);
       r.fail("type", "names an unknown collision handling " + quote(type.c_str()) + " (" +
                          (meant.empty() ? "" : "did you mean \"" + std::string(meant) + "\"? ") +
-                         "expected one of " + describe_contact_method_names() +
+                         "expected one of " +
+                         describe_contact_method_names(BodyKind::kParticles) +
                          "; exact spelling, lower case)");
+    }
+    if (!method->scope.handles(BodyKind::kParticles)) {  // before its options: none are ours
+      r.fail("type", contact_method_refusal(*method, scene_.model));
     }
     s.use(*method);
     CollisionAttributes attributes(r, *method);

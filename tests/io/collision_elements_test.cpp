@@ -184,6 +184,13 @@ const Case kCases[] = {
      "c.xml:4: error: <collision>: attribute \"type\" names an unknown collision handling "
      "\"hybird\" (did you mean \"hybrid\"? expected one of none, simple, penalty, "
      "continuous-time, hybrid; exact spelling, lower case)"},
+    {"CollisionTypeOfRigidBodies", "<collision type=\"gr-lcp\" maxreflections=\"0\"/>\n",
+     "c.xml:4: error: <collision>: attribute \"type\" \"gr-lcp\" does not handle particles (it "
+     "is a method of rigid bodies, named by <rigidbodycollisionhandling response=\"...\">)"},
+    {"CollisionTypeMisspeltOnlyAmongParticleMethods", "<collision type=\"lcpp\"/>\n",
+     "c.xml:4: error: <collision>: attribute \"type\" names an unknown collision handling "
+     "\"lcpp\" (expected one of none, simple, penalty, continuous-time, hybrid; exact "
+     "spelling, lower case)"},
     {"CorNotANumber", "<collision type=\"simple\" COR=\"bouncy\"/>\n",
      "c.xml:4: error: <collision>: attribute \"COR\" must be a finite number, found \"bouncy\""},
     {"StiffnessNotANumber", "<collision type=\"penalty\" k=\"stiff\"/>\n",

@@ -81,9 +81,11 @@ constexpr OptionSpec max_iterations(double default_value) {
 }
 }  // namespace particle_contact_options
 
-/// The <collision> element: the method and its settings, with the course's defaults.
+/// How a scene handles contact: the method (a particle scene's <collision>, a rigid-body scene's
+/// <rigidbodycollisionhandling>) and its settings, with the course's defaults.
 struct CollisionSettings {
-  /// The method (an entry of core/collisions/contact_registry.h); "none" without <collision>.
+  /// The method (an entry of core/collisions/contact_registry.h); "none" without <collision>
+  /// (<rigidbodycollisionhandling>).
   const ContactMethod* method = &no_contact_method();
   /// The values of method->options as the scene gave them, defaults for the others: where a
   /// method whose settings are not among the fields below reads them.

@@ -12,6 +12,7 @@ namespace fosssim {
 
 class Force;
 class StepStage;
+struct RigidResponse;  // core/rigid/rigid_contact_stage.h
 struct SceneModel;
 
 /// The kinds of bodies a scene holds (docs/architecture.md, "A new kind of body").
@@ -22,15 +23,19 @@ enum class BodyKind {
 
 /// The kind of body a model holds.
 BodyKind body_kind(const SceneModel& model);
+/// The dimension of the space a model's bodies move in: model.dim for particles, 2 for planar
+/// rigid bodies (whose model.dim counts their three coordinates X, Y, θ).
+int body_dimension(const SceneModel& model);
 
-/// Which body kinds and dimensions a method handles. A scene whose model it does not handle is
-/// refused when it is read, with `restriction` as the reason.
+/// Which body kinds and dimensions a method handles: particles in 2D, particles in 3D, planar
+/// rigid bodies (2D). A scene that names a method for bodies it does not handle is refused when
+/// it is read, with `restriction` as the reason.
 struct ContactScope {
   bool particles = true;             ///< particle scenes
   bool planar_rigid_bodies = false;  ///< planar rigid-body scenes (always 2D)
   bool runs_2d = true;
   bool runs_3d = true;
-  /// Why a body kind or dimension is refused: "its rigid impact zones rotate in the plane".
+  /// Why a dimension is refused: "its rigid impact zones rotate in the plane".
   std::string_view restriction;
 
   bool handles(BodyKind kind) const {
@@ -41,6 +46,14 @@ struct ContactScope {
 
 /// The scope of a particle method that runs in both dimensions.
 inline constexpr ContactScope kParticlesIn2DAnd3D{};
+/// The scope of a method of planar rigid bodies (<rigidbodycollisionhandling>).
+inline constexpr ContactScope kPlanarRigidBodies{
+    .particles = false,
+    .planar_rigid_bodies = true,
+    .runs_2d = true,
+    .runs_3d = false,
+    .restriction = "rigid bodies are planar",
+};
 
 /// Which parts of a step's StepRecord (core/step/step_record.h) a method fills, and so what a
 /// particle trajectory file holds after each frame (docs/collisions.md, "Trajectory files"; the
@@ -55,13 +68,15 @@ enum class StepRecordLayout {
   kCollisionsAndPolynomials,
 };
 
-/// One entry of the contact registry (contact_registry.h): how a scene handles contact, the
-/// `type` of its <collision> element. Each method's file pair defines its entry (a method
-/// without code of its own, "none", is defined in the registry); the registry lists them. The
-/// loader, --help, the step pipeline (through ForceSet and make_contact_stage), the trajectory
-/// writer and the tests read the entries; nothing else names a method.
+/// One entry of the contact registry (contact_registry.h): how a scene handles contact, for
+/// every kind of body: the `type` of a particle scene's <collision> element, the `response` of a
+/// rigid-body scene's <rigidbodycollisionhandling>. Each method's file pair defines its entry
+/// (a method without code of its own, "none", is defined in the registry; the four rigid-body
+/// responses, which share one stage, are defined beside it); the registry lists them. The
+/// loaders, --help, Python, the step pipeline (through ForceSet and make_contact_stage), the
+/// trajectory writer and the tests read the entries; nothing else names a method.
 struct ContactMethod {
-  std::string_view name;     ///< the type string of <collision type="...">
+  std::string_view name;     ///< the type (particles) or response (rigid bodies) string
   std::string_view summary;  ///< one line for --help and messages
   /// The method's settings, attributes of <collision>, read in this order (an attribute of
   /// <collision> that is no option of its method is reported as unknown). The particle methods'
@@ -69,6 +84,8 @@ struct ContactMethod {
   /// penalty-jacobian, maxiters); every method's values are in CollisionSettings::options.
   std::span<const OptionSpec> options = {};
   ContactScope scope;  ///< by default, particles in 2D and 3D
+  /// What a particle trajectory records after each frame. A rigid-body method records nothing
+  /// (kFrames): the Theme 3 trajectory's layout is the body kind's (io/rigid_trajectory.h).
   StepRecordLayout records = StepRecordLayout::kFrames;
   /// The response stage run after the integrator in every step (core/step/step_pipeline.h), or
   /// null for a method without one. It reads everything it needs from `model`: the settings in
@@ -78,6 +95,9 @@ struct ContactMethod {
   /// The contact force every integrator sums after the model's forces (core/force_set.h), or
   /// null for a method without one. `model` outlives the force.
   std::unique_ptr<Force> (*make_force)(const SceneModel& model) = nullptr;
+  /// A planar rigid-body method's response (the inelastic problem it solves, whether it
+  /// reflects), which its stage runs and the loader's warnings describe; null for the others.
+  const RigidResponse* rigid_response = nullptr;
 };
 
 }  // namespace fosssim

@@ -8,6 +8,7 @@
 #include "core/collisions/penalty_force.h"
 #include "core/collisions/simple_collisions.h"
 #include "core/misspelling.h"
+#include "core/rigid/rigid_contact_stage.h"
 #include "core/scene_model.h"
 #include "core/step/step_stage.h"
 
@@ -29,12 +30,18 @@ constexpr ContactMethod kNoContactMethod{
     .scope = kParticlesIn2DAnd3D,
 };
 
-/// Theme 2's five methods, in the order of the course's handout; the merger of other body
-/// kinds adds theirs after them.
+/// Every method, one line each: Theme 2's five particle methods in the order of the course's
+/// handout, then Theme 3's four rigid-body responses in the order of docs/rigid-bodies.md.
 constexpr std::array kMethods = {
-    &kNoContactMethod,      &kSimpleContactMethod,
-    &kPenaltyContactMethod, &kContinuousTimeContactMethod,
+    &kNoContactMethod,
+    &kSimpleContactMethod,
+    &kPenaltyContactMethod,
+    &kContinuousTimeContactMethod,
     &kHybridContactMethod,
+    &kLcpContactMethod,
+    &kVelocityProjectionContactMethod,
+    &kGrLcpContactMethod,
+    &kGrVelocityProjectionContactMethod,
 };
 
 std::string dimension_text(const ContactScope& scope) {
@@ -43,11 +50,23 @@ std::string dimension_text(const ContactScope& scope) {
   return "for no dimension";
 }
 
+std::string_view kind_name(BodyKind kind) {
+  return kind == BodyKind::kParticles ? "particles" : "rigid bodies";
+}
+
+/// Where a scene names a method for bodies of `kind`.
+std::string_view naming_element(BodyKind kind) {
+  return kind == BodyKind::kParticles ? "<collision type=\"...\">"
+                                      : "<rigidbodycollisionhandling response=\"...\">";
+}
+
 }  // namespace
 
 BodyKind body_kind(const SceneModel& model) {
   return model.rigid_bodies ? BodyKind::kPlanarRigidBodies : BodyKind::kParticles;
 }
+
+int body_dimension(const SceneModel& model) { return model.rigid_bodies ? 2 : model.dim; }
 
 std::span<const ContactMethod* const> contact_methods() { return kMethods; }
 
@@ -65,33 +84,37 @@ const ContactMethod& contact_method(std::string_view name) {
 
 const ContactMethod& no_contact_method() { return kNoContactMethod; }
 
-std::string describe_contact_method_names() {
+std::string describe_contact_method_names(BodyKind kind) {
   std::string out;
   for (const ContactMethod* method : kMethods) {
+    if (!method->scope.handles(kind)) continue;
     if (!out.empty()) out += ", ";
     out += method->name;
   }
   return out;
 }
 
-std::string_view suggest_contact_method(std::string_view unknown) {
+std::string_view suggest_contact_method(std::string_view unknown, BodyKind kind) {
   for (const ContactMethod* method : kMethods) {
-    if (looks_like_misspelling(unknown, method->name)) return method->name;
+    if (method->scope.handles(kind) && looks_like_misspelling(unknown, method->name)) return method->name;
   }
   return {};
 }
 
 std::string contact_method_refusal(const ContactMethod& method, const SceneModel& model) {
   const ContactScope& scope = method.scope;
-  std::string problem;
-  if (!scope.handles(body_kind(model))) {
-    problem = "\"" + std::string(method.name) + "\" does not handle " +
-              (body_kind(model) == BodyKind::kParticles ? "particles" : "rigid bodies");
-  } else if (!scope.handles_dim(model.dim)) {
-    problem = "\"" + std::string(method.name) + "\" is " + dimension_text(scope);
-  } else {
-    return "";
+  const std::string name = "\"" + std::string(method.name) + "\"";
+  const BodyKind kind = body_kind(model);
+  if (!scope.handles(kind)) {
+    // A method handles one kind of body, named by that kind's element.
+    const BodyKind other =
+        kind == BodyKind::kParticles ? BodyKind::kPlanarRigidBodies : BodyKind::kParticles;
+    return name + " does not handle " + std::string(kind_name(kind)) + " (it is a method of " +
+           std::string(kind_name(other)) + ", named by " + std::string(naming_element(other)) +
+           ")";
   }
+  if (scope.handles_dim(body_dimension(model))) return "";
+  std::string problem = name + " is " + dimension_text(scope);
   if (!scope.restriction.empty()) problem += " (" + std::string(scope.restriction) + ")";
   return problem;
 }

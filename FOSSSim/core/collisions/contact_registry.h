@@ -23,19 +23,21 @@ const ContactMethod& contact_method(std::string_view name);
 /// The method of a model without a <collision> element: "none".
 const ContactMethod& no_contact_method();
 
-/// "none, simple, penalty, continuous-time, hybrid": every type string, for messages.
-std::string describe_contact_method_names();
+/// The names of the methods that handle bodies of `kind` (in some dimension), in registry order,
+/// for messages: "none, simple, penalty, continuous-time, hybrid" for particles.
+std::string describe_contact_method_names(BodyKind kind);
 
-/// The registered name that `unknown` probably misspells (core/misspelling.h), the first in
-/// registry order, or empty: "hybird" gives "hybrid".
-std::string_view suggest_contact_method(std::string_view unknown);
+/// The name of a method for bodies of `kind` that `unknown` probably misspells
+/// (core/misspelling.h), the first in registry order, or empty: "hybird" gives "hybrid".
+std::string_view suggest_contact_method(std::string_view unknown, BodyKind kind);
 
-/// Why `method` cannot handle the bodies of `model` (its body kind and dimension), or empty when
-/// it can: "\"hybrid\" is 2D only (its rigid impact zones rotate in the plane)".
+/// Why `method` cannot handle the bodies of `model` (their kind and dimension), or empty when
+/// it can: "\"hybrid\" is 2D only (its rigid impact zones rotate in the plane)", "\"lcp\" does
+/// not handle particles (...)".
 std::string contact_method_refusal(const ContactMethod& method, const SceneModel& model);
 
-/// The response stage of model.collisions' method, or null when it has none. `model` must
-/// outlive it.
+/// The response stage of model.collisions' method, or null when it has none (particle and
+/// rigid-body scenes alike). `model` must outlive it.
 std::unique_ptr<StepStage> make_contact_stage(const SceneModel& model);
 
 }  // namespace fosssim

@@ -9,9 +9,12 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/force_set.h"
+#include "core/rigid/rigid_contact_stage.h"
 #include "core/step/step_pipeline.h"
+#include "core/rigid_test_models.h"
 #include "support/scene_builder.h"
 
 namespace fosssim {
@@ -33,7 +36,10 @@ TEST(ContactRegistry, NamesAreUniqueAndFoundByName) {
 }
 
 TEST(ContactRegistry, TheCourseMethodsAreRegisteredInTheCourseOrder) {
-  EXPECT_EQ(describe_contact_method_names(), "none, simple, penalty, continuous-time, hybrid");
+  EXPECT_EQ(describe_contact_method_names(BodyKind::kParticles),
+            "none, simple, penalty, continuous-time, hybrid");
+  EXPECT_EQ(describe_contact_method_names(BodyKind::kPlanarRigidBodies),
+            "lcp, velocity-projection, gr-lcp, gr-velocity-projection");
   EXPECT_EQ(no_contact_method().name, "none");
   EXPECT_EQ(CollisionSettings{}.method, &no_contact_method());
 }
@@ -49,12 +55,24 @@ TEST(ContactRegistry, EveryEntryHasASummaryAFactoryAndDocumentedOptions) {
     if (method->records != StepRecordLayout::kFrames) {
       EXPECT_NE(method->make_stage, nullptr);
     }
-    // It handles some body kind in some dimension, and says why it refuses the others.
+    // It handles one body kind in some dimension, and says why it refuses the others.
     const ContactScope& scope = method->scope;
-    EXPECT_TRUE(scope.particles || scope.planar_rigid_bodies);
+    EXPECT_NE(scope.particles, scope.planar_rigid_bodies);
     EXPECT_TRUE(scope.runs_2d || scope.runs_3d);
     if (!(scope.particles && scope.runs_2d && scope.runs_3d)) {
       EXPECT_FALSE(scope.restriction.empty());
+    }
+    // Rigid bodies are planar; a rigid-body method has its response, which only its stage runs
+    // (it records nothing in a particle file and adds no force), and a particle method has none.
+    if (scope.planar_rigid_bodies) {
+      EXPECT_TRUE(scope.runs_2d);
+      EXPECT_FALSE(scope.runs_3d);
+      EXPECT_NE(method->rigid_response, nullptr);
+      EXPECT_NE(method->make_stage, nullptr);
+      EXPECT_EQ(method->make_force, nullptr);
+      EXPECT_EQ(method->records, StepRecordLayout::kFrames);
+    } else {
+      EXPECT_EQ(method->rigid_response, nullptr);
     }
     std::set<std::string> options;
     for (const OptionSpec& option : method->options) {
@@ -88,11 +106,16 @@ TEST(ContactRegistry, EveryEntryHasASummaryAFactoryAndDocumentedOptions) {
 }
 
 TEST(ContactRegistry, SuggestsTheMethodAMisspeltNameMeans) {
-  EXPECT_EQ(suggest_contact_method("hybird"), "hybrid");
-  EXPECT_EQ(suggest_contact_method("simpel"), "simple");
-  EXPECT_EQ(suggest_contact_method("continuous_time"), "continuous-time");
-  EXPECT_EQ(suggest_contact_method("SIMPLE"), "");  // six edits: the message says lower case
-  EXPECT_EQ(suggest_contact_method("bounce"), "");
+  constexpr BodyKind kParticles = BodyKind::kParticles;
+  EXPECT_EQ(suggest_contact_method("hybird", kParticles), "hybrid");
+  EXPECT_EQ(suggest_contact_method("simpel", kParticles), "simple");
+  EXPECT_EQ(suggest_contact_method("continuous_time", kParticles), "continuous-time");
+  EXPECT_EQ(suggest_contact_method("SIMPLE", kParticles), "");  // six edits: lower case
+  EXPECT_EQ(suggest_contact_method("bounce", kParticles), "");
+  // Only the methods of the body kind are suggested.
+  EXPECT_EQ(suggest_contact_method("gr_lcp", BodyKind::kPlanarRigidBodies), "gr-lcp");
+  EXPECT_EQ(suggest_contact_method("gr_lcp", kParticles), "");
+  EXPECT_EQ(suggest_contact_method("simpel", BodyKind::kPlanarRigidBodies), "");
 }
 
 TEST(ContactRegistry, RefusesBodiesAndDimensionsOutsideAMethodsScope) {
@@ -107,6 +130,66 @@ TEST(ContactRegistry, RefusesBodiesAndDimensionsOutsideAMethodsScope) {
   }
   EXPECT_EQ(contact_method_refusal(contact_method("hybrid"), space.model),
             "\"hybrid\" is 2D only (its rigid impact zones rotate in the plane)");
+  EXPECT_EQ(contact_method_refusal(contact_method("lcp"), plane.model),
+            "\"lcp\" does not handle particles (it is a method of rigid bodies, named by "
+            "<rigidbodycollisionhandling response=\"...\">)");
+}
+
+TEST(ContactRegistry, RefusesEveryMethodForTheBodyKindsItDoesNotHandle) {
+  // Planar rigid bodies: their model's dim counts three coordinates, yet they are 2D.
+  auto [rigid, state] = testing::make_rigid_model(
+      {{.points = {{0, 0}, {1, 0}, {1, 1}}, .masses = {1, 1, 1}}});
+  EXPECT_EQ(body_kind(rigid), BodyKind::kPlanarRigidBodies);
+  EXPECT_EQ(body_dimension(rigid), 2);
+  TestScene plane(2), space(3);
+  EXPECT_EQ(body_kind(plane.model), BodyKind::kParticles);
+  EXPECT_EQ(body_dimension(space.model), 3);
+  for (const ContactMethod* method : contact_methods()) {
+    SCOPED_TRACE(std::string(method->name));
+    const std::string refusal = contact_method_refusal(*method, rigid);
+    EXPECT_EQ(refusal.empty(), method->scope.planar_rigid_bodies) << refusal;
+    if (method->scope.planar_rigid_bodies) {
+      // Refused wherever particles are, whatever their dimension.
+      EXPECT_NE(contact_method_refusal(*method, plane.model).find("does not handle particles"),
+                std::string::npos);
+      EXPECT_NE(contact_method_refusal(*method, space.model).find("does not handle particles"),
+                std::string::npos);
+    } else {
+      EXPECT_EQ(refusal, "\"" + std::string(method->name) +
+                             "\" does not handle rigid bodies (it is a method of particles, "
+                             "named by <collision type=\"...\">)");
+    }
+  }
+}
+
+TEST(ContactRegistry, ThePipelineRunsARigidMethodsStageOnRigidBodies) {
+  // A unit square falling at 1 m/s onto a fixed floor it already touches: every rigid method
+  // stops it (inelastic) or bounces it (reflections); "none" lets it fall on.
+  const std::vector<Vec2> square = {{-0.5, 0.6}, {0.5, 0.6}, {0.5, 0.15}, {-0.5, 0.15}};
+  const std::vector<Vec2> floor = {{-5, 0}, {5, 0}, {5, -1}, {-5, -1}};
+  const auto falling = [&] {
+    return testing::make_rigid_model(
+        {{.points = floor, .masses = {1, 1, 1, 1}, .fixed = true},
+         {.points = square, .masses = {1, 1, 1, 1}, .velocity = {0, -1}}});
+  };
+  for (const ContactMethod* method : contact_methods()) {
+    if (!method->scope.planar_rigid_bodies) continue;
+    SCOPED_TRACE(std::string(method->name));
+    auto [model, state] = falling();
+    model.collisions.use(*method);
+    model.integrator.use(*find_integrator_method("symplectic-euler"));
+    model.integrator.dt = 0.01;
+    StepPipeline(model).step(state);
+    // The square's vertical velocity: 0 when the contact is inelastic, +1 when it is reflected
+    // (no forces act).
+    const double expected = method->rigid_response->generalized_reflections ? 1.0 : 0.0;
+    EXPECT_NEAR(state.v[4], expected, 1e-12);
+  }
+  auto [model, state] = falling();
+  model.integrator.use(*find_integrator_method("symplectic-euler"));
+  model.integrator.dt = 0.01;
+  StepPipeline(model).step(state);
+  EXPECT_EQ(state.v[4], -1.0);
 }
 
 /// Two balls of radius 0.1 that overlap (centres 0.19 apart) and approach, over a floor.
