@@ -46,7 +46,7 @@ template class ContinuousTimeStage<2>;
 template class ContinuousTimeStage<3>;
 
 namespace {
-constexpr std::array kOptions = {
+constexpr std::array kContinuousTimeOptionSpecs = {
     particle_contact_options::restitution(
         "coefficient of restitution: 1 elastic, 0 inelastic (outside [0, 1] with a warning)"),
 };
@@ -55,7 +55,7 @@ constexpr std::array kOptions = {
 constinit const ContactMethod kContinuousTimeContactMethod{
     .name = "continuous-time",
     .summary = "swept detection over each step (polynomial roots), impulses pair by pair",
-    .options = kOptions,
+    .options = kContinuousTimeOptionSpecs,
     .scope = kParticlesIn2DAnd3D,
     .records = StepRecordLayout::kCollisionsAndPolynomials,
     .make_stage = [](const SceneModel& model) -> std::unique_ptr<StepStage> {

@@ -98,7 +98,7 @@ void HybridStage::apply(const StepContext& context, State& state) {
 
 namespace {
 namespace options = particle_contact_options;
-constexpr std::array kOptions = {
+constexpr std::array kHybridOptionSpecs = {
     options::restitution("coefficient of restitution of the impulse passes: 1 elastic, 0 "
                          "inelastic (outside [0, 1] with a warning)"),
     options::stiffness(10.0),
@@ -111,7 +111,7 @@ constexpr std::array kOptions = {
 constinit const ContactMethod kHybridContactMethod{
     .name = "hybrid",
     .summary = "penalty force, Jacobi passes of swept impulses, then rigid impact zones",
-    .options = kOptions,
+    .options = kHybridOptionSpecs,
     .scope = {.particles = true,
               .runs_2d = true,
               .runs_3d = false,

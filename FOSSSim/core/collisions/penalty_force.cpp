@@ -201,7 +201,7 @@ template class PenaltyForce<3>;
 
 namespace {
 namespace options = particle_contact_options;
-constexpr std::array kOptions = {
+constexpr std::array kPenaltyOptionSpecs = {
     options::restitution("accepted and unused (the course reads it for every type)"),
     options::stiffness(100.0),
     options::thickness(0.01),
@@ -212,7 +212,7 @@ constexpr std::array kOptions = {
 constinit const ContactMethod kPenaltyContactMethod{
     .name = "penalty",
     .summary = "a spring force between objects closer than their radii plus a thickness",
-    .options = kOptions,
+    .options = kPenaltyOptionSpecs,
     .scope = kParticlesIn2DAnd3D,
     .records = StepRecordLayout::kFrames,
     .make_force = make_penalty_force,

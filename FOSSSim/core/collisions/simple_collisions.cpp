@@ -33,7 +33,7 @@ template class SimpleCollisionStage<2>;
 template class SimpleCollisionStage<3>;
 
 namespace {
-constexpr std::array kOptions = {
+constexpr std::array kSimpleOptionSpecs = {
     particle_contact_options::restitution(
         "coefficient of restitution: 1 elastic, 0 inelastic (outside [0, 1] with a warning)"),
 };
@@ -42,7 +42,7 @@ constexpr std::array kOptions = {
 constinit const ContactMethod kSimpleContactMethod{
     .name = "simple",
     .summary = "discrete detection at the end of each step, impulses pair by pair",
-    .options = kOptions,
+    .options = kSimpleOptionSpecs,
     .scope = kParticlesIn2DAnd3D,
     .records = StepRecordLayout::kCollisions,
     .make_stage = [](const SceneModel& model) -> std::unique_ptr<StepStage> {
