@@ -1,7 +1,6 @@
 #include "core/rigid/rigid_contact_response.h"
 
 #include <algorithm>
-#include <numeric>
 #include <sstream>
 #include <unordered_map>
 #include <utility>
@@ -187,26 +186,36 @@ void apply_inelastic_response(ContactSolver solver, const RigidBodies& bodies, c
                               const std::vector<RigidContact>& contacts, Vector& v,
                               ContactReport& report, int max_group_contacts) {
   check_normals(bodies, contacts);
-  const int nb = bodies.size();
   // Groups: free bodies joined by contacts; a contact belongs to its free bodies' group.
-  std::vector<int> parent(nb);
-  std::iota(parent.begin(), parent.end(), 0);
+  // The free bodies of the contacts, numbered in order of appearance (so that the work is
+  // proportional to the contacts, not to the scene's bodies: generalized reflections call this
+  // once per reflection with the few contacts still approaching).
+  std::unordered_map<int, int> node_of;
+  std::vector<int> parent;
+  const auto node = [&](int body) {
+    const auto [it, added] = node_of.emplace(body, static_cast<int>(parent.size()));
+    if (added) parent.push_back(it->second);
+    return it->second;
+  };
   std::vector<ContactColumn> columns;
   std::vector<int> kept;  // indices into contacts
   for (int c = 0; c < static_cast<int>(contacts.size()); ++c) {
     ContactColumn column = contact_column(bodies, q, contacts[c]);
     if (column.body[0] < 0 && column.body[1] < 0) continue;  // two fixed bodies
+    for (int b : column.body) {
+      if (b >= 0) node(b);
+    }
     if (column.body[0] >= 0 && column.body[1] >= 0) {
-      parent[find_root(parent, column.body[0])] = find_root(parent, column.body[1]);
+      parent[find_root(parent, node(column.body[0]))] = find_root(parent, node(column.body[1]));
     }
     columns.push_back(column);
     kept.push_back(c);
   }
   const int n = static_cast<int>(columns.size());
-  std::vector<int> group_of_root(nb, -1);  // groups in order of their first contact
+  std::vector<int> group_of_root(parent.size(), -1);  // groups in order of their first contact
   std::vector<std::vector<int>> groups;
   for (int c = 0; c < n; ++c) {
-    const int root = find_root(parent, columns[c].body[columns[c].body[0] >= 0 ? 0 : 1]);
+    const int root = find_root(parent, node(columns[c].body[columns[c].body[0] >= 0 ? 0 : 1]));
     if (group_of_root[root] < 0) {
       group_of_root[root] = static_cast<int>(groups.size());
       groups.emplace_back();
@@ -283,6 +292,8 @@ void apply_generalized_reflections(ContactSolver solver, const RigidBodies& bodi
   std::vector<ContactColumn> columns;
   for (const RigidContact& c : contacts) columns.push_back(contact_column(bodies, q, c));
   std::vector<RigidContact> approaching;
+  Vector inelastic = v;  // equal to v outside the bodies of each reflection's contacts
+  std::vector<int> touched;
   while (true) {
     approaching.clear();
     for (std::size_t c = 0; c < contacts.size(); ++c) {
@@ -304,11 +315,22 @@ void apply_generalized_reflections(ContactSolver solver, const RigidBodies& bodi
     }
     cancellation.check();
     ++report.reflections;
-    Vector inelastic = v;
+    // Only the free bodies of the approaching contacts change: for every other body the
+    // inelastic velocity is v itself and 2v − v = v exactly, so the reflection is applied to
+    // those bodies alone, and `inelastic` (equal to v elsewhere) is kept between reflections
+    // instead of copied: a reflection costs its contacts, not the scene's bodies.
+    touched.clear();
+    for (const RigidContact& c : approaching) {
+      for (int b : {c.i0, c.i1}) {
+        if (!bodies.bodies[b].fixed) touched.push_back(b);
+      }
+    }
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     apply_inelastic_response(solver, bodies, q, approaching, inelastic, report, max_group_contacts);
-    for (int b = 0; b < bodies.size(); ++b) {
-      if (bodies.bodies[b].fixed) continue;
+    for (int b : touched) {
       v.segment<3>(3 * b) = 2.0 * inelastic.segment<3>(3 * b) - v.segment<3>(3 * b);
+      inelastic.segment<3>(3 * b) = v.segment<3>(3 * b);
     }
   }
 }
