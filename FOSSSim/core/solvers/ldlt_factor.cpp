@@ -135,19 +135,21 @@ class MumpsOf final : public LdltFactor::Mumps {
       id_.lwk_user = 0;
       return;
     }
-    if (static_cast<long long>(workspace_.size()) < wanted) {
-      workspace_.clear();
-      workspace_.shrink_to_fit();  // the old factor is not needed: no two copies at once
-      workspace_.resize(static_cast<std::size_t>(wanted));
+    if (workspace_size_ < wanted) {
+      workspace_.reset();  // the old factor is not needed: no two copies at once
+      // Not zeroed: pages MUMPS never touches (the relaxation's) stay unmapped, as with its own.
+      workspace_.reset(new Real[static_cast<std::size_t>(wanted)]);
+      workspace_size_ = wanted;
     }
-    id_.wk_user = workspace_.data();
-    id_.lwk_user = static_cast<MUMPS_INT>(workspace_.size());
+    id_.wk_user = workspace_.get();
+    id_.lwk_user = static_cast<MUMPS_INT>(workspace_size_);
   }
 
   typename Arithmetic::Instance id_{};
   std::vector<Real> values_;  // the lower triangle's values, in MUMPS's arithmetic
   std::vector<Real> rhs_;     // MUMPS solves in place
-  std::vector<Real> workspace_;  // WK_USER: the factorization's workspace and the factor
+  std::unique_ptr<Real[]> workspace_;  // WK_USER: the factorization's workspace and factor
+  long long workspace_size_ = 0;       // its entries
 };
 
 std::unique_ptr<LdltFactor::Mumps> start_mumps(FactorPrecision precision) {
