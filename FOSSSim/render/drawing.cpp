@@ -136,7 +136,9 @@ void add_rigid_bodies(const Scene& scene, const State& state, const PixelMapping
                              SceneModel::kDefaultEdgeRadius * ppu, color});
     ++spring;
   }
-  if (bodies.contact.method != nullptr) add_rigid_contacts(bodies, state, mapping, drawing);
+  if (scene.model.collisions.method->make_stage != nullptr) {  // <rigidbodycollisionhandling>
+    add_rigid_contacts(bodies, state, mapping, drawing);
+  }
 }
 
 /// Hinges are drawn as capsules of this radius (pixels), their middle particle as a disc of
