@@ -77,7 +77,7 @@ Scene contest_balls(int count, unsigned seed) {
     scene.model.edges.push_back({first + k, first + (k + 1) % 4});
     scene.model.edge_radius.push_back(0.5);
   }
-  scene.model.collisions.method = CollisionMethod::kPenalty;
+  scene.model.collisions.method = &contact_method("penalty");
   scene.model.collisions.stiffness = 100.0;
   scene.model.collisions.thickness = 0.0;
   return scene;

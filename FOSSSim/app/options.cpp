@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/parse_command_line.h"
+#include "core/collisions/contact_registry.h"
 #include "core/error.h"
 #include "core/integrators/integrator_registry.h"
 #include "core/text.h"
@@ -281,6 +282,23 @@ std::string integrator_help() {
   return out;
 }
 
+/// The contact methods and their options, for the end of --help.
+std::string contact_help() {
+  std::string out =
+      "Contact methods and their options: particle scenes name one with <collision\n"
+      "type=\"...\"> (options are attributes of <collision>; docs/collisions.md), rigid-body\n"
+      "scenes with <rigidbodycollisionhandling response=\"...\"> (docs/rigid-bodies.md):\n";
+  for (const ContactMethod* method : contact_methods()) {
+    out += "  " + std::string(method->name) + "\n      " + std::string(method->summary) + "\n";
+    if (!method->scope.particles) out += "      (planar rigid bodies)\n";
+    for (const OptionSpec& spec : method->options) {
+      out += "      " + std::string(spec.name) + " = " + spec.describe_values() + " (default " +
+             spec.default_text() + ")\n          " + std::string(spec.help) + "\n";
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 void check_picture_options(Options& options) {
@@ -461,7 +479,7 @@ void add_options(CLI::App& app, Options& options) {
     app.get_option(name)->check(nonempty_name());
   }
   app.set_version_flag("--version", "FOSSSim 0.1.0");
-  app.footer(integrator_help() +
+  app.footer(integrator_help() + "\n" + contact_help() +
              "\nExit status: 0 success or passed; 1 grading failed; 2 bad command line, scene or\n"
              "trajectory file, a size over a limit, an output that would replace an input;\n"
              "3 a step failed (non-finite state, Newton did not converge); 4 an output file\n"

@@ -33,7 +33,8 @@ int run_simulation_window(const Scene& scene, const Options& options) {
   FrameOutputs outputs =
       FrameOutputs::open(scene, output_requests(options), output_settings(options));
   ParticleGrab grab(scene);
-  SimulationStepper stepper(scene, {&grab.force()}, Cancellation(&interrupt_requested));
+  SimulationStepper stepper(scene, {&grab.interaction_force()},
+                            Cancellation(&interrupt_requested));
   SceneView view(scene, stepper.state(), options.width, options.height);
   view.set_element_colors(element_colors(options));
   int status = kExitOk;

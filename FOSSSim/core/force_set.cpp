@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/collisions/penalty_force.h"
+#include "core/collisions/contact_method.h"
 
 namespace fosssim {
 
@@ -12,8 +12,8 @@ ForceSet::ForceSet(const SceneModel& model, std::vector<const Force*> interactio
     : model_(&model) {
   forces_.reserve(model.forces.size() + 1 + interaction.size());
   for (const auto& force : model.forces) forces_.push_back(force.get());
-  if (model.collisions.has_penalty_force()) {
-    contact_ = make_penalty_force(model);
+  if (const auto make_contact_force = model.collisions.method->make_force) {
+    contact_ = make_contact_force(model);
     forces_.push_back(contact_.get());
   }
   forces_.insert(forces_.end(), interaction.begin(), interaction.end());

@@ -12,8 +12,9 @@ namespace fosssim {
 
 /// The forces an integrator sums, in order, with the model they act on: first the model's
 /// forces (in the summation order of the force registry), then the model's contact force when
-/// its collision method has one (the penalty force, core/collisions/penalty_force.h, made here
-/// from model.collisions and summed after every other force of the model, as the course does),
+/// its contact method has one (ContactMethod::make_force: the penalty force of penalty and
+/// hybrid, core/collisions/penalty_force.h, made here from model.collisions and summed after
+/// every other force of the model, as the course does),
 /// then interaction forces that the caller owns and hands to the simulation, such as the
 /// window's drag spring (core/forces/drag_spring_force.h). An interaction force may change its
 /// parameters between steps (grab, move, release) but not be added or removed; with none, results

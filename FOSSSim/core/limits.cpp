@@ -33,6 +33,16 @@ std::string over_limit(std::int64_t limit, const std::string& unit, const std::s
          option + " N)";
 }
 
+void check_vertex_count(std::int64_t vertices, std::int64_t max_vertices, const std::string& what,
+                        const char* counted) {
+  if (vertices <= max_vertices) return;
+  const std::string count = vertices == std::numeric_limits<std::int64_t>::max()
+                                ? "more than " + std::to_string(vertices)
+                                : std::to_string(vertices);
+  throw Error(ErrorKind::kBadInput, what + " " + counted + " " + count + " vertices, " +
+                                        over_limit(max_vertices, "particles", "--max-particles"));
+}
+
 std::int64_t saturating_product(std::initializer_list<std::int64_t> factors) {
   std::int64_t product = 1;
   for (const std::int64_t factor : factors) {

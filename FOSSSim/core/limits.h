@@ -52,6 +52,13 @@ void check_step_count(const SceneModel& model, const Limits& limits);
 /// (raise it with --max-particles N)".
 std::string over_limit(std::int64_t limit, const std::string& unit, const std::string& option);
 
+/// Throws Error (kBadInput) when a generated mesh or body would have more than `max_vertices`
+/// vertices (its particles); `what` describes what was asked for ("a sheet of 2000 × 2000
+/// cells") and `counted` is the verb before the count ("has", or "would have"). `vertices` is
+/// counted in 64 bits, saturating (saturating_product): INT64_MAX reads "more than".
+void check_vertex_count(std::int64_t vertices, std::int64_t max_vertices, const std::string& what,
+                        const char* counted = "has");
+
 /// The product of the factors (each ≥ 0), saturating at INT64_MAX instead of overflowing, for
 /// sizes computed from counts a user wrote.
 std::int64_t saturating_product(std::initializer_list<std::int64_t> factors);

@@ -33,6 +33,10 @@ Eigen::Map<const Points<D>> map_points(const Vector& x) {
   return Eigen::Map<const Points<D>>(x.data(), x.size() / D, D);
 }
 
+/// The z component of the cross product of two planar vectors, a.x b.y − a.y b.x (in this order:
+/// the course's rigid-body and bending code compute it so).
+inline double cross(const Vec<2>& a, const Vec<2>& b) { return a.x() * b.y() - a.y() * b.x(); }
+
 /// Reads particle p's D coordinates out of a state-sized vector.
 template <int D, typename Derived>
 Vec<D> particle_vec(const Eigen::MatrixBase<Derived>& x, int p) {

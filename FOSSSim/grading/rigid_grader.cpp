@@ -1,6 +1,7 @@
 #include "grading/rigid_grader.h"
 
 #include <cmath>
+#include <utility>
 
 #include "core/force_set.h"
 #include "core/rigid/rigid_bodies.h"
@@ -21,8 +22,10 @@ bool close(double a, double b, double limit) { return std::abs(a - b) < limit; }
 
 class RigidGrader {
  public:
-  RigidGrader(const Scene& scene, const std::string& path, const RigidGradingCriteria& criteria)
-      : model_(scene.model),
+  RigidGrader(const Scene& scene, const std::string& path, const RigidGradingCriteria& criteria,
+              std::function<void(const RigidStepResiduals&)> on_step)
+      : on_step_(std::move(on_step)),
+        model_(scene.model),
         bodies_(model_.num_particles()),
         file_(RigidTrajectoryReader::open(path, bodies_, model_.num_steps())),
         forces_(model_),
@@ -44,8 +47,11 @@ class RigidGrader {
       state.time = static_cast<double>(k - 1) * model_.integrator.dt;
       pipeline_.step(state);
       RigidFrame frame = file_.read_frame(k);
+      step_ = RigidStepResiduals{};
+      step_.step = k;
       compare_states(k, rigid_state_block(model_, state), frame.state);
       check_quantities(k, rigid_quantities_block(forces_, state.q, state.v), frame.quantities);
+      if (on_step_) on_step_(step_);
       previous = std::move(frame);
     }
     return report_;
@@ -55,6 +61,11 @@ class RigidGrader {
   void mismatch(RigidQuantity quantity, std::int64_t frame, int body, double provided,
                 double expected) {
     report_.quantity_correct[quantity] = false;
+    step_.quantities_correct = false;
+    if (!report_.first_divergence) {
+      report_.first_divergence = RigidDivergence{frame, body, kQuantityNames[quantity],
+                                                 std::abs(provided - expected)};
+    }
     if (report_.mismatches.size() < RigidGradeReport::kMaxMismatches) {
       report_.mismatches.push_back({quantity, frame, body, provided, expected});
     }
@@ -105,11 +116,30 @@ class RigidGrader {
         report_.accumulated[k] += r[k];
         if (std::isnan(r[k]) || r[k] > report_.maximum[k]) report_.maximum[k] = r[k];
         failed = failed || !(r[k] < report_.criteria.maximum_limit);
+        step_.sum[k] += r[k];
+        const bool larger = std::isnan(r[k]) || r[k] > step_.maximum[k];  // NaN is the largest
+        if (step_.body[k] < 0 || (!std::isnan(step_.maximum[k]) && larger)) {
+          step_.maximum[k] = r[k];
+          step_.body[k] = b;
+        }
       }
     }
     if (failed && report_.first_failing_step == 0) report_.first_failing_step = step;
+    if (failed && !report_.first_divergence) {  // the kind and body of the largest excess
+      int worst = -1;
+      for (int k = 0; k < 4; ++k) {
+        const double r = step_.maximum[k];
+        if (r < report_.criteria.maximum_limit) continue;
+        const double w = worst < 0 ? 0.0 : step_.maximum[worst];
+        if (worst < 0 || (!std::isnan(w) && (std::isnan(r) || r > w))) worst = k;
+      }
+      report_.first_divergence =
+          RigidDivergence{step, step_.body[worst], kResidualNames[worst], step_.maximum[worst]};
+    }
   }
 
+  std::function<void(const RigidStepResiduals&)> on_step_;
+  RigidStepResiduals step_;  ///< the step being graded
   const SceneModel& model_;
   int bodies_;
   RigidTrajectoryReader file_;
@@ -134,10 +164,14 @@ bool RigidGradeReport::passed() const {
   return quantities_passed();
 }
 
-RigidGradeReport grade_rigid_trajectory(const Scene& scene, const std::string& path,
-                                        const RigidGradingCriteria& criteria) {
-  return RigidGrader(scene, path, criteria).grade();
+RigidGradeReport grade_rigid_trajectory(
+    const Scene& scene, const std::string& path, const RigidGradingCriteria& criteria,
+    const std::function<void(const RigidStepResiduals&)>& on_step) {
+  return RigidGrader(scene, path, criteria, on_step).grade();
 }
+
+const char* rigid_residual_name(RigidResidual residual) { return kResidualNames[residual]; }
+const char* rigid_quantity_name(RigidQuantity quantity) { return kQuantityNames[quantity]; }
 
 void print_rigid_grade_report(std::ostream& out, const RigidGradeReport& report) {
   out << "Grading message: Simulation ran to completion.\n";

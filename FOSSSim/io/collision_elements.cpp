@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/collisions/contact_registry.h"
 #include "core/text.h"
 #include "io/element_reader.h"
 #include "io/scene_error.h"
@@ -21,16 +22,41 @@ namespace {
 constexpr std::array<std::string_view, 6> kElements = {
     "halfplane", "halfplanecolor", "sphere", "spherecolor", "collision", "collisiondetection"};
 
-struct MethodName {
-  std::string_view name;
-  CollisionMethod method;
+/// A contact method's options as attributes of its <collision> element. Every option of the
+/// method is asked for, given or not, so that a misspelt one is named ("thicknes": did you mean
+/// "thickness"?). A choice given as "" is read as not given (penalty-jacobian="" is the
+/// course's "none"); an empty number is an error.
+class CollisionAttributes final : public OptionSource {
+ public:
+  CollisionAttributes(ElementReader& reader, const ContactMethod& method)
+      : reader_(reader), method_(method) {}
+  bool has(std::string_view name) override {
+    const std::string attribute(name);
+    const std::string value = reader_.text_or_empty(attribute.c_str());  // asked for, given or not
+    if (value.empty() && is_choice(name)) return false;
+    return reader_.has(attribute.c_str());
+  }
+  double number(std::string_view name) override {
+    return reader_.number(std::string(name).c_str());
+  }
+  std::string text(std::string_view name) override {
+    return reader_.text(std::string(name).c_str());
+  }
+  [[noreturn]] void fail(std::string_view name, const std::string& problem) override {
+    reader_.fail(std::string(name).c_str(), problem);
+  }
+
+ private:
+  bool is_choice(std::string_view name) const {
+    for (const OptionSpec& option : method_.options) {
+      if (option.name == name) return option.type == OptionSpec::Type::kChoice;
+    }
+    return false;
+  }
+
+  ElementReader& reader_;
+  const ContactMethod& method_;
 };
-constexpr std::array<MethodName, 5> kMethods = {
-    {{"none", CollisionMethod::kNone},
-     {"simple", CollisionMethod::kSimple},
-     {"penalty", CollisionMethod::kPenalty},
-     {"continuous-time", CollisionMethod::kContinuousTime},
-     {"hybrid", CollisionMethod::kHybrid}}};
 
 std::vector<const XmlElement*> children(const XmlElement& root, const char* name) {
   return root.children_named(name);
@@ -77,8 +103,11 @@ class CollisionReader {
            "at line " +
                std::to_string(collisions[0]->line()) + ", applies)");
       r.text_or_empty("type");  // its attributes are not reported one by one
-      for (const char* name : {"COR", "k", "thickness", "maxiters", "penalty-jacobian"}) {
-        r.text_or_empty(name);
+      for (const ContactMethod* method : contact_methods()) {
+        if (!method->scope.particles) continue;
+        for (const OptionSpec& option : method->options) {
+          r.text_or_empty(std::string(option.name).c_str());
+        }
       }
     }
     const auto detections = children(root, "collisiondetection");
@@ -162,53 +191,70 @@ class CollisionReader {
     read_obstacle_color(e, index, "sphere", scene_.appearance.sphere_color);
   }
 
+  /// <collision>: the method, its options (ContactMethod::options, read in their order), and
+  /// the particle methods' settings taken from them, with warnings where the course accepts a
+  /// value that is probably a mistake.
   void read_collision(const XmlElement& e) {
     ElementReader r = reader(e, -1);
     CollisionSettings& s = scene_.model.collisions;
     const std::string type = r.text("type");
-    const MethodName* found = nullptr;
-    for (const MethodName& m : kMethods) {
-      if (m.name == type) found = &m;
+    const ContactMethod* method = find_contact_method(type);
+    if (method == nullptr) {
+      const std::string_view meant = suggest_contact_method(type, BodyKind::kParticles);
+      r.fail("type", "names an unknown collision handling " + quote(type.c_str()) + " (" +
+                         (meant.empty() ? "" : "did you mean \"" + std::string(meant) + "\"? ") +
+                         "expected one of " +
+                         describe_contact_method_names(BodyKind::kParticles) +
+                         "; exact spelling, lower case)");
     }
-    if (found == nullptr) {
-      r.fail("type", "names an unknown collision handling " + quote(type.c_str()) +
-                         " (expected one of none, simple, penalty, continuous-time, hybrid; "
-                         "exact spelling, lower case)");
+    if (!method->scope.handles(BodyKind::kParticles)) {  // before its options: none are ours
+      r.fail("type", contact_method_refusal(*method, scene_.model));
     }
-    s.method = found->method;
-    s.cor = r.number_or("COR", 1.0);
-    if (s.cor < 0.0 || s.cor > 1.0) {
-      warn(r, "COR = " + to_text(s.cor) + " is outside [0, 1]: collisions will " +
-                  (s.cor > 1.0 ? "add energy" : "not separate the objects") +
-                  " (the course accepts it)");
+    s.use(*method);
+    CollisionAttributes attributes(r, *method);
+    s.options.read(attributes);
+    take_particle_settings(r, s);
+    if (const std::string refusal = contact_method_refusal(*method, scene_.model);
+        !refusal.empty()) {
+      r.fail("type", refusal);
     }
-    if (s.method == CollisionMethod::kHybrid) {
-      s.stiffness = 10.0;
-      s.thickness = 0.1;
+    keep_warnings(r);
+  }
+
+  /// Copies the options the particle methods share into their fields of `s`, warning about
+  /// values the course accepts but that are probably mistakes.
+  void take_particle_settings(ElementReader& r, CollisionSettings& s) {
+    const OptionValues& o = s.options;
+    if (o.has("COR")) {
+      s.cor = o.number("COR");
+      if (s.cor < 0.0 || s.cor > 1.0) {
+        warn(r, "COR = " + to_text(s.cor) + " is outside [0, 1]: collisions will " +
+                    (s.cor > 1.0 ? "add energy" : "not separate the objects") +
+                    " (the course accepts it)");
+      }
     }
-    if (s.has_penalty_force()) {
-      s.stiffness = r.number_or("k", s.stiffness);
-      s.thickness = r.number_or("thickness", s.thickness);
+    if (o.has("k")) {
+      s.stiffness = o.number("k");
       if (s.stiffness < 0.0) {
         warn(r, "k = " + to_text(s.stiffness) +
                     " is negative: the penalty force pulls objects "
                     "together (the course accepts it)");
       }
+    }
+    if (o.has("thickness")) {
+      s.thickness = o.number("thickness");
       if (s.thickness < 0.0) {
         warn(r, "thickness = " + to_text(s.thickness) +
                     " is negative: objects may overlap before the penalty force acts (the "
                     "course accepts it)");
       }
-      const std::string jacobian = r.text_or_empty("penalty-jacobian");
-      if (jacobian == "exact") {
-        s.penalty_jacobian = PenaltyJacobian::kExact;
-      } else if (!jacobian.empty() && jacobian != "none") {
-        r.fail("penalty-jacobian",
-               "must be \"none\" (the course's) or \"exact\", found " + quote(jacobian.c_str()));
-      }
     }
-    if (s.method == CollisionMethod::kHybrid) {
-      const double iterations = r.number_or("maxiters", 10.0);
+    if (o.has("penalty-jacobian")) {
+      s.penalty_jacobian = o.choice("penalty-jacobian") == "exact" ? PenaltyJacobian::kExact
+                                                                   : PenaltyJacobian::kNone;
+    }
+    if (o.has("maxiters")) {
+      const double iterations = o.number("maxiters");
       const double whole = std::trunc(iterations);
       if (whole != iterations || iterations < 0.0) {
         warn(r, "maxiters = " + to_text(iterations) + " is read as " +
@@ -231,10 +277,6 @@ class CollisionReader {
       }
       s.max_iterations = static_cast<int>(std::max(passes, -1.0));
     }
-    if (scene_.model.dim == 3 && s.method == CollisionMethod::kHybrid) {
-      r.fail("type", "\"hybrid\" is 2D only (its rigid impact zones rotate in the plane)");
-    }
-    keep_warnings(r);
   }
 
   void read_detection(const XmlElement& e) {
@@ -245,9 +287,11 @@ class CollisionReader {
       s.detection = PairDetection::kAllPairs;
     } else if (type == "contest") {
       s.detection = PairDetection::kContest;
-      if (s.method == CollisionMethod::kContinuousTime || s.method == CollisionMethod::kHybrid) {
+      // The course's contest detection makes no polynomials, so its program refuses the methods
+      // that record them.
+      if (s.method->records == StepRecordLayout::kCollisionsAndPolynomials) {
         warn(r, "the course's program refuses \"contest\" detection with " +
-                    std::string(collision_method_name(s.method)) +
+                    std::string(s.method->name) +
                     " handling; FOSSSim runs it (its pair detection serves every method)");
       }
     } else {

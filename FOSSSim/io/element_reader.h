@@ -6,16 +6,12 @@
 #include <vector>
 
 #include "core/force_parameters.h"
+#include "core/misspelling.h"  // looks_like_misspelling, for the did-you-mean of attributes
 #include "core/scene.h"
 #include "io/xml_tree.h"
 
 
 namespace fosssim {
-
-/// True when `unknown` is probably a misspelling of `known`: within two edits (insertions,
-/// deletions, substitutions, swaps of neighbours) of it, one for names of three or four letters;
-/// names of two letters or fewer are never matched ("px" is not "vx").
-bool looks_like_misspelling(std::string_view unknown, std::string_view known);
 
 /// The particles and edges whose elements had an error: an element that refers to one of them
 /// is skipped (DependsOnBrokenElement) rather than reported, since its problem is the other's.

@@ -21,7 +21,7 @@ const char* irregular_kind(mode_t mode) {
   return "is not a regular file";
 }
 
-[[noreturn]] void refuse(const std::string& path, const std::string& problem) {
+[[noreturn]] void refuse_input(const std::string& path, const std::string& problem) {
   throw SceneError(path, 0, "", problem);
 }
 
@@ -37,23 +37,23 @@ std::string file_limit_problem(std::int64_t max_bytes) {
 RegularFile open_regular_file(const std::string& path) {
   struct stat status {};
   if (::stat(path.c_str(), &status) != 0) {
-    refuse(path, std::string("cannot open the file: ") + std::strerror(errno));
+    refuse_input(path, std::string("cannot open the file: ") + std::strerror(errno));
   }
-  if (const char* kind = irregular_kind(status.st_mode)) refuse(path, kind);
+  if (const char* kind = irregular_kind(status.st_mode)) refuse_input(path, kind);
   // Without O_NONBLOCK, opening a FIFO that replaced the file since stat() would wait for a
   // writer; the descriptor is checked again below.
   const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
-  if (fd < 0) refuse(path, std::string("cannot open the file: ") + std::strerror(errno));
+  if (fd < 0) refuse_input(path, std::string("cannot open the file: ") + std::strerror(errno));
   if (::fstat(fd, &status) != 0 || !S_ISREG(status.st_mode)) {
     const char* kind = irregular_kind(status.st_mode);
     ::close(fd);
-    refuse(path, kind != nullptr ? kind : "cannot read the file");
+    refuse_input(path, kind != nullptr ? kind : "cannot read the file");
   }
   ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
   std::FILE* stream = ::fdopen(fd, "rb");
   if (stream == nullptr) {
     ::close(fd);
-    refuse(path, std::string("cannot open the file: ") + std::strerror(errno));
+    refuse_input(path, std::string("cannot open the file: ") + std::strerror(errno));
   }
   RegularFile file;
   file.stream.reset(stream);
@@ -63,7 +63,7 @@ RegularFile open_regular_file(const std::string& path) {
 
 std::string read_text_file(const std::string& path, std::int64_t max_bytes) {
   const RegularFile file = open_regular_file(path);
-  if (file.size > max_bytes) refuse(path, file_limit_problem(max_bytes));
+  if (file.size > max_bytes) refuse_input(path, file_limit_problem(max_bytes));
   std::string content;
   content.reserve(static_cast<std::size_t>(file.size));
   char buffer[1 << 16];
@@ -71,12 +71,12 @@ std::string read_text_file(const std::string& path, std::int64_t max_bytes) {
     const std::size_t n = std::fread(buffer, 1, sizeof buffer, file.stream.get());
     if (n == 0) break;
     if (static_cast<std::int64_t>(content.size() + n) > max_bytes) {
-      refuse(path, file_limit_problem(max_bytes));
+      refuse_input(path, file_limit_problem(max_bytes));
     }
     content.append(buffer, n);
   }
   if (std::ferror(file.stream.get())) {
-    refuse(path, std::string("cannot read the file: ") + std::strerror(errno));
+    refuse_input(path, std::string("cannot read the file: ") + std::strerror(errno));
   }
   return content;
 }
@@ -91,9 +91,10 @@ std::string InputFiles::read(const std::string& path) {
   paths_.push_back(path);
   if (!memory_) return read_text_file(path, limits_.max_file_bytes);
   const auto found = memory_->find(path);
-  if (found == memory_->end()) refuse(path, "cannot open the file: No such file or directory");
+  if (found == memory_->end())
+    refuse_input(path, "cannot open the file: No such file or directory");
   if (static_cast<std::int64_t>(found->second.size()) > limits_.max_file_bytes) {
-    refuse(path, file_limit_problem(limits_.max_file_bytes));
+    refuse_input(path, file_limit_problem(limits_.max_file_bytes));
   }
   return found->second;
 }

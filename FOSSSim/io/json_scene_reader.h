@@ -33,8 +33,10 @@ struct JsonSceneDefaults {
 /// (JsonSceneDefaults: h = 1/30 s, 50 iterations starting at the current positions, pins by
 /// penalty w = 1e10) and applies a force of -9.8 N along y to every vertex, pinned ones
 /// included (a constant force, not m·g, as in the assignment). Optional keys of ours: "h",
-/// "iterations", "start" (the local/global option), "duration". Other keys become warnings.
-/// Errors (SceneError) name the file (and, for malformed JSON, the line) and the problem. The
+/// "iterations", "start" (the local/global option), "duration". Other keys become warnings,
+/// except one within two edits of a known key, an error with a did-you-mean. Every problem is
+/// reported at once (SceneErrors, at most SceneErrorList::kMaxReported), each naming the file,
+/// its line (the key's, a "b" entry's, or the object's for a missing key) and the problem. The
 /// files are read through `files` (io/input_files.h), and Scene::files lists them.
 Scene load_json_scene_file(const std::string& path, InputFiles& files);
 /// The same with the default limits.

@@ -23,7 +23,7 @@ constexpr int kNameAttempts = 64;
 
 std::string reason(int error) { return std::strerror(error); }
 
-[[noreturn]] void refuse(const std::string& path, const std::string& problem) {
+[[noreturn]] void refuse_output(const std::string& path, const std::string& problem) {
   throw Error(ErrorKind::kBadInput, "the output " + path + " " + problem);
 }
 
@@ -67,15 +67,15 @@ OutputFile::OutputFile(const std::string& path) : path_(path), final_path_(path)
   struct stat status {};
   if (::lstat(path.c_str(), &status) == 0 && S_ISLNK(status.st_mode)) {
     if (::stat(path.c_str(), &status) != 0) {
-      refuse(path, "is a symbolic link to " + link_text(path) +
-                       ", which does not exist; FOSSSim writes through a link only to an "
-                       "existing file");
+      refuse_output(path, "is a symbolic link to " + link_text(path) +
+                              ", which does not exist; FOSSSim writes through a link only to an "
+                              "existing file");
     }
     final_path_ = resolved(path);
   } else if (::stat(path.c_str(), &status) != 0) {
     status.st_mode = 0;  // nothing there yet (or unreachable: creating it will say why)
   }
-  if (S_ISDIR(status.st_mode)) refuse(path, "is a folder");
+  if (S_ISDIR(status.st_mode)) refuse_output(path, "is a folder");
   if (in_place_kind(status.st_mode)) {
     // O_NONBLOCK: a FIFO nobody reads fails at once (ENXIO) instead of blocking the run.
     fd_ = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
@@ -100,7 +100,7 @@ OutputFile::OutputFile(const std::string& path) : path_(path), final_path_(path)
     return;
   }
   if (status.st_mode != 0 && !S_ISREG(status.st_mode)) {
-    refuse(path, "is neither a regular file, a character device nor a FIFO");
+    refuse_output(path, "is neither a regular file, a character device nor a FIFO");
   }
   for (int attempt = 0; attempt < kNameAttempts; ++attempt) {
     write_path_ = final_path_ + "." + random_tag() + ".partial";

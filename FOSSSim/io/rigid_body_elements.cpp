@@ -5,10 +5,11 @@
 #include <array>
 #include <cmath>
 
+#include "core/collisions/contact_registry.h"
 #include "core/force_registry.h"
 #include "core/integrators/integrator_registry.h"
 #include "core/rigid/rigid_bodies.h"
-#include "core/rigid/rigid_contact_method.h"
+#include "core/rigid/rigid_contact_stage.h"
 #include "io/element_reader.h"
 #include "io/scene_error.h"
 
@@ -262,16 +263,19 @@ class RigidBodySceneReader {
       keep_warnings(r);
     }
     if (n == 0) scene_.warnings.push_back(file_ + ": warning: the scene has no rigid bodies");
-    bodies->contact = read_contact(*bodies);
+    RigidBodies& built = *bodies;
     model.rigid_bodies = std::move(bodies);
+    built.contact = read_contact(built);  // after: the registry's refusal reads the model
   }
 
   /// <rigidbodycollisionhandling detection="all-pairs" response="..."/>, with the course's
-  /// messages; FOSSSim's own optional maxreflections="..." (generalized reflections' limit).
+  /// messages: the response is a contact method of planar rigid bodies (contact_registry.h),
+  /// which becomes model.collisions.method; FOSSSim's own optional maxreflections="..." and
+  /// maxgroupcontacts="..." (its limits) go to model.rigid_bodies->contact.
   RigidContactSettings read_contact(const RigidBodies& bodies) {
     RigidContactSettings settings;
     const XmlElement* e = first("rigidbodycollisionhandling", false);
-    if (e == nullptr) return settings;
+    if (e == nullptr) return settings;  // no contact: model.collisions keeps "none"
     ElementReader r = reader(*e, -1);
     if (!r.has("detection")) {
       r.fail("No rigidbodycollisionhandling 'detection' attribute specified. Exiting.");
@@ -285,12 +289,17 @@ class RigidBodySceneReader {
       r.fail("No rigidbodycollisionhandling 'response' attribute specified. Exiting.");
     }
     const std::string response = r.text("response");
-    settings.method = find_rigid_contact_method(response);
-    if (settings.method == nullptr) {
+    const ContactMethod* method = find_contact_method(response);
+    const std::string refusal =
+        method == nullptr ? "" : contact_method_refusal(*method, scene_.model);
+    if (method == nullptr || !refusal.empty()) {
       r.fail("Invalid rigidbodycollisionhandling 'response' attribute specified. Valid options "
-             "are lcp and velocity-projection. Exiting. (found \"" + response +
-             "\"; gr-lcp and gr-velocity-projection are valid too)");
+             "are lcp and velocity-projection. Exiting. (found \"" + response + "\"" +
+             (refusal.empty() ? "" : ": " + refusal) + "; " + other_rigid_responses() +
+             " are valid too)");
     }
+    scene_.model.collisions.use(*method);
+    const RigidResponse& chosen = *method->rigid_response;
     if (r.has("maxreflections")) {
       const int limit = r.integer("maxreflections");
       if (limit < 1) r.fail("maxreflections", "must be at least 1, found " + std::to_string(limit));
@@ -309,12 +318,11 @@ class RigidBodySceneReader {
         continue;
       }
       r.warn("fixed body " + std::to_string(b) + " declares a velocity: " +
-             (settings.method->solver == ContactSolver::kLcp
+             (chosen.solver == ContactSolver::kLcp
                   ? "the LCP counts it in contacts' normal velocities (velocity projection "
                     "ignores it)"
                   : "velocity projection ignores it (the LCP would count it)") +
-             (settings.method->generalized_reflections &&
-                      settings.method->solver == ContactSolver::kLcp
+             (chosen.generalized_reflections && chosen.solver == ContactSolver::kLcp
                   ? "; with gr-lcp a body resting on it never stops reflecting (the course's "
                     "program loops forever, FOSSSim stops at maxreflections)"
                   : ""));
@@ -322,6 +330,24 @@ class RigidBodySceneReader {
     }
     keep_warnings(r);
     return settings;
+  }
+
+  /// The registry's rigid-body responses beyond the two the course's message names:
+  /// "gr-lcp and gr-velocity-projection".
+  static std::string other_rigid_responses() {
+    std::vector<std::string_view> names;
+    for (const ContactMethod* method : contact_methods()) {
+      if (method->scope.planar_rigid_bodies && method->name != "lcp" &&
+          method->name != "velocity-projection") {
+        names.push_back(method->name);
+      }
+    }
+    std::string out;
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      if (k > 0) out += k + 1 == names.size() ? " and " : ", ";
+      out += names[k];
+    }
+    return out;
   }
 
   static double signed_area(const std::vector<Vec2>& points) {

@@ -459,8 +459,12 @@ Scene load_scene_text(std::string_view text, const std::string& name, InputFiles
   }
   check_attribute_counts(text, name, files.limits().max_attributes);
   std::vector<std::string> warnings;
-  const std::string fixed =
-      number_repeated_hull_attributes(separate_run_together_attributes(text, name, warnings));
+  std::string fixed = separate_run_together_attributes(text, name, warnings);
+  // Only rigid bodies have hull attributes to number: elsewhere the pass would copy the whole
+  // text unchanged (54 MB more at the peak of reading the 316x316 cloth, and 6% of its time).
+  if (fixed.find("<rigidbody") != std::string::npos) {
+    fixed = number_repeated_hull_attributes(fixed);
+  }
   const std::vector<XmlElement> top = parse_xml(fixed, name);
   if (top.empty()) throw SceneError(name, 0, "", "the file holds no XML element");
   if (top.size() > 1) {

@@ -62,17 +62,7 @@ bool read_doubles(std::FILE* file, double* data, std::size_t count) {
 }  // namespace
 
 TrajectoryLayout trajectory_layout(const SceneModel& model) {
-  switch (model.collisions.method) {
-    case CollisionMethod::kSimple:
-      return TrajectoryLayout::kCollisions;
-    case CollisionMethod::kContinuousTime:
-    case CollisionMethod::kHybrid:
-      return TrajectoryLayout::kCollisionsAndPolynomials;
-    case CollisionMethod::kNone:
-    case CollisionMethod::kPenalty:
-      break;
-  }
-  return TrajectoryLayout::kFrames;
+  return model.collisions.method->records;
 }
 
 // ---- TrajectoryWriter -------------------------------------------------------------------------

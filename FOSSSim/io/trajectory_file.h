@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/collisions/collision_record.h"
+#include "core/collisions/contact_method.h"
 #include "core/collisions/polynomial.h"
 #include "core/error.h"
 #include "core/scene_model.h"
@@ -21,18 +22,12 @@
 
 namespace fosssim {
 
-/// What each record of a trajectory file holds (course-compatible layouts).
-enum class TrajectoryLayout {
-  kFrames,  ///< positions then velocities (Theme 1; collision types none and penalty)
-  /// Each frame followed by int32 count and that many collision records (type simple).
-  kCollisions,
-  /// Each frame followed by its collisions, then int32 count and that many polynomials (int32
-  /// length, then the coefficients, highest degree first); two records per step, the sync
-  /// record and the end-of-step record (types continuous-time and hybrid).
-  kCollisionsAndPolynomials,
-};
+/// What each record of a trajectory file holds (course-compatible layouts): the record layout
+/// of the scene's contact method (core/collisions/contact_method.h), kFrames, kCollisions or
+/// kCollisionsAndPolynomials.
+using TrajectoryLayout = StepRecordLayout;
 
-/// The layout of a model's trajectory files, from its collision method.
+/// The layout of a model's trajectory files: its contact method's (ContactMethod::records).
 TrajectoryLayout trajectory_layout(const SceneModel& model);
 
 /// One record of a trajectory file: a state and, in the layouts that have them, collisions and

@@ -14,18 +14,6 @@ namespace fosssim {
 
 namespace {
 
-/// Throws Error (kBadInput) when `vertices` is more than `max_vertices`; `what` describes the
-/// body asked for ("a sheet of 2000 × 2000 cells").
-void check_vertex_count(std::int64_t vertices, std::int64_t max_vertices, const std::string& what,
-                        const char* counted = "has") {
-  if (vertices <= max_vertices) return;
-  const std::string count = vertices == std::numeric_limits<std::int64_t>::max()
-                                ? "more than " + std::to_string(vertices)
-                                : std::to_string(vertices);
-  throw Error(ErrorKind::kBadInput, what + " " + counted + " " + count + " vertices, " +
-                                        over_limit(max_vertices, "particles", "--max-particles"));
-}
-
 [[noreturn]] void bad(const std::string& problem) { throw Error(ErrorKind::kBadInput, problem); }
 
 /// Vertex k of n on the circle of radius r: angle 2πk/n, exactly (r, 0) for k = 0.

@@ -12,17 +12,6 @@ namespace fosssim {
 
 namespace {
 
-/// Throws Error (kBadInput) when `vertices` (counted in 64 bits, saturating) is more than
-/// `max_vertices`; `what` describes the mesh asked for ("a tetbox of 2 × 3 × 4 cubes").
-void check_vertex_count(std::int64_t vertices, std::int64_t max_vertices, const std::string& what) {
-  if (vertices <= max_vertices) return;
-  const std::string count = vertices == std::numeric_limits<std::int64_t>::max()
-                                ? "more than " + std::to_string(vertices)
-                                : std::to_string(vertices);
-  throw Error(ErrorKind::kBadInput, what + " has " + count + " vertices, " +
-                                        over_limit(max_vertices, "particles", "--max-particles"));
-}
-
 /// "a × b × c", for messages.
 std::string sizes(std::initializer_list<int> counts) {
   std::string out;

@@ -20,6 +20,8 @@
 
 namespace fosssim {
 
+void set_color(cairo_t* cr, const Color& c) { cairo_set_source_rgb(cr, c.r, c.g, c.b); }
+
 namespace {
 
 constexpr double kTextMargin = 6.0;   // pixels from the top-left corner
@@ -36,8 +38,6 @@ struct ContextDeleter {
 };
 using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
 using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
-
-void set_color(cairo_t* cr, const Color& c) { cairo_set_source_rgb(cr, c.r, c.g, c.b); }
 
 void paint_text(cairo_t* cr, const Drawing& drawing) {
   if (drawing.text.empty()) return;

@@ -17,6 +17,9 @@ namespace fosssim {
 /// marks, guides, then the text lines. Anti-aliased as the target surface allows.
 void paint_drawing(cairo_t* cr, const Drawing& drawing);
 
+/// Makes `c` the source colour of `cr` (opaque).
+void set_color(cairo_t* cr, const Color& c);
+
 /// `drawing` painted into a new image of its size.
 Image render_image(const Drawing& drawing);
 

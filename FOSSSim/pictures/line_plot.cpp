@@ -24,8 +24,6 @@ const Color kText{0.2, 0.2, 0.2};
 const Color kGrid{0.88, 0.88, 0.88};
 const Color kNote{0.33, 0.33, 0.33};
 
-void set_color(cairo_t* cr, const Color& c) { cairo_set_source_rgb(cr, c.r, c.g, c.b); }
-
 /// Shows `text` so that the point (align_x, align_y) of its box, each in [0, 1] from the left
 /// and the top, lies at (x, y). Returns how far the text advances along x.
 double show_text(cairo_t* cr, const std::string& text, double x, double y, double align_x,

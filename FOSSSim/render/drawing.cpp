@@ -136,7 +136,9 @@ void add_rigid_bodies(const Scene& scene, const State& state, const PixelMapping
                              SceneModel::kDefaultEdgeRadius * ppu, color});
     ++spring;
   }
-  if (bodies.contact.method != nullptr) add_rigid_contacts(bodies, state, mapping, drawing);
+  if (scene.model.collisions.method->make_stage != nullptr) {  // <rigidbodycollisionhandling>
+    add_rigid_contacts(bodies, state, mapping, drawing);
+  }
 }
 
 /// Hinges are drawn as capsules of this radius (pixels), their middle particle as a disc of
@@ -254,6 +256,14 @@ Drawing compose_drawing(const Scene& scene, const State& state, const PathHistor
   }
   if (scene.model.rigid_bodies) {
     add_rigid_bodies(scene, state, mapping, drawing);
+    if (overlay.drag && overlay.drag->body_point) {  // the mouse pulls a body's point
+      const int b = overlay.drag->particle;
+      const Vec<2> from = rotate(body_angle(state.q, b), *overlay.drag->body_point) +
+                          body_center(state.q, b);
+      add_drag_guide(drawing, mapping.to_pixel(from.x(), from.y()),
+                     mapping.to_pixel(overlay.drag->target.x(), overlay.drag->target.y()),
+                     drawing.text_color);
+    }
     drawing.text = overlay_text(overlay, state.time, scene.model.integrator.dt);
     return drawing;
   }

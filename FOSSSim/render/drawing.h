@@ -92,8 +92,10 @@ struct ParticleMark {
 
 /// A particle pulled toward a point with the mouse: drawn as a line from it to the point.
 struct DragGuide {
-  int particle = 0;
+  int particle = 0;  ///< the particle pulled, or in a rigid-body scene the body
   Eigen::Vector3d target = Eigen::Vector3d::Zero();  ///< world units (z ignored in 2D)
+  /// Rigid bodies: the pulled point in body space (the line starts at R(θ)p + X).
+  std::optional<Eigen::Vector2d> body_point;
 };
 
 /// How the triangles and hinges of elastic bodies (Force::append_elements) are coloured.

@@ -57,4 +57,20 @@ void write_diagnosis(const std::string& folder, const SceneResult& result,
   write_line_plot(residual_plot(history.columns(), plot), stem + ".residuals.svg");
 }
 
+void write_rigid_diagnosis(const std::string& folder, const SceneResult& result,
+                           const RigidGradeReport& report, const ResidualHistory& history) {
+  const std::string stem = diagnosis_stem(folder, result.name);
+  write_file_atomically(stem + ".diagnosis.txt", diagnosis_text(result));
+  history.write_table(stem + ".residuals.tsv");
+  ResidualPlotOptions plot;
+  plot.title = result.name + ": largest residual per step (" + result.integrator + ")";
+  plot.dt = result.dt;
+  plot.limit = report.criteria.maximum_limit;
+  plot.velocity_limit = report.criteria.maximum_limit;
+  if (report.first_divergence && report.first_divergence->step > 0) {
+    plot.marked_step = report.first_divergence->step;
+  }
+  write_line_plot(residual_plot(history.columns(), plot), stem + ".residuals.svg");
+}
+
 }  // namespace fosssim

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "grading/grader.h"
+#include "grading/rigid_grader.h"
 #include "residual_history.h"
 #include "scene_result.h"
 
@@ -21,6 +22,13 @@ std::string diagnosis_text(const SceneResult& result);
 /// it) and NAME.residuals.svg. Throws Error (kCannotWrite).
 void write_diagnosis(const std::string& folder, const SceneResult& result,
                      const GradeReport* report, const ResidualHistory& history);
+
+/// The same for a failing Theme 3 scene whose trajectory was graded: NAME.diagnosis.txt,
+/// NAME.residuals.tsv (every step: the larger of the X and θ residuals as the position column,
+/// of V and ω as the velocity column, with their bodies) and NAME.residuals.svg, marking the
+/// first divergence. Throws Error (kCannotWrite).
+void write_rigid_diagnosis(const std::string& folder, const SceneResult& result,
+                           const RigidGradeReport& report, const ResidualHistory& history);
 
 /// The path without extension that write_diagnosis uses for a scene: "<folder>/assets/t1m1/x".
 std::string diagnosis_stem(const std::string& folder, const std::string& scene_name);

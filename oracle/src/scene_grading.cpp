@@ -1,7 +1,10 @@
 #include "scene_grading.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
+#include <vector>
 #include <sstream>
 #include <stdexcept>
 
@@ -19,6 +22,17 @@
 namespace fosssim {
 
 namespace {
+
+/// The per-step history's limits for a Theme 3 scene: the course's (RigidGradingCriteria), the
+/// same for positions (X, θ) and velocities (V, ω).
+GradingCriteria rigid_history_criteria() {
+  const RigidGradingCriteria rigid;
+  GradingCriteria criteria;
+  criteria.accumulated_limit = rigid.accumulated_limit;
+  criteria.maximum_limit = rigid.maximum_limit;
+  criteria.maximum_velocity_limit = rigid.maximum_limit;
+  return criteria;
+}
 
 std::string vector_text(const Vector& x, int begin, int dim) {
   std::string text = "(";
@@ -137,23 +151,75 @@ std::string rigid_failure_reason(const RigidGradeReport& report) {
   return reason;
 }
 
+/// The first divergence of a Theme 3 file as a line, and its step's residuals with those of the
+/// steps just before it, as a table (the full table of every step is the diagnosis's TSV).
+std::string rigid_divergence_details(const RigidGradeReport& report,
+                                     const std::vector<RigidStepResiduals>& recent) {
+  std::ostringstream out;
+  const RigidDivergence& d = *report.first_divergence;
+  out << "First divergence: step " << d.step;
+  if (d.body >= 0) out << ", body " << d.body;
+  out << ", " << d.quantity << " (residual " << to_text(d.residual) << ", limit "
+      << to_text(report.criteria.maximum_limit) << ")\n";
+  if (recent.empty()) return out.str();
+  out << "Residuals per step, largest over bodies (body):\n"
+      << "  step  X  Theta  V  Omega  quantities\n";
+  for (const RigidStepResiduals& s : recent) {
+    out << "  " << s.step;
+    for (int k = 0; k < 4; ++k) out << "  " << to_text(s.maximum[k]) << " (" << s.body[k] << ")";
+    out << "  " << (s.quantities_correct ? "correct" : "WRONG") << "\n";
+  }
+  return out.str();
+}
+
 /// Grades the checked Theme 3 trajectory of a run with the course's rigid-body criteria
-/// (grading/rigid_grader.h), as FOSSSim -i does; fills verdict, residuals and explanation. The
-/// residuals are the four figures of the course's residual file: accumulated X + θ and V + ω,
-/// maximum X + θ and V + ω. Rigid grading keeps no per-step history.
-void grade_rigid_file(const Scene& scene, const std::string& path, SceneResult& result) {
+/// (grading/rigid_grader.h), as FOSSSim -i does; fills verdict, residuals and explanation, and
+/// hands each step's residuals to `history` (position: the larger of the X and θ residuals,
+/// velocity: of V and ω, with their bodies). The residuals are the four figures of the course's
+/// residual file: accumulated X + θ and V + ω, maximum X + θ and V + ω. A failing file's
+/// details name the first divergence (step, body, quantity) and the residuals of the steps up
+/// to it.
+std::optional<RigidGradeReport> grade_rigid_file(const Scene& scene, const std::string& path,
+                                                 ResidualHistory& history, SceneResult& result) {
   std::optional<RigidGradeReport> report;
+  constexpr std::size_t kRecentSteps = 5;
+  std::vector<RigidStepResiduals> recent;  // the last kRecentSteps steps up to the divergence
+  bool diverged = false;
+  const auto on_step = [&](const RigidStepResiduals& s) {
+    StepResidual step;
+    step.step = s.step;
+    step.sum_position = s.sum[kResidualX] + s.sum[kResidualTheta];
+    step.sum_velocity = s.sum[kResidualV] + s.sum[kResidualOmega];
+    const auto larger = [&s](int a, int b) {
+      return std::isnan(s.maximum[b]) || s.maximum[b] > s.maximum[a] ? b : a;
+    };
+    const int position = larger(kResidualX, kResidualTheta);
+    const int velocity = larger(kResidualV, kResidualOmega);
+    step.max_position = s.maximum[position];
+    step.max_position_particle = s.body[position];
+    step.max_velocity = s.maximum[velocity];
+    step.max_velocity_particle = s.body[velocity];
+    history.add(step);
+    if (diverged) return;
+    recent.push_back(s);
+    if (recent.size() > kRecentSteps) recent.erase(recent.begin());
+    bool over = !s.quantities_correct;
+    for (int k = 0; k < 4; ++k) {
+      over = over || !(s.maximum[k] < RigidGradingCriteria{}.maximum_limit);
+    }
+    diverged = over;
+  };
   try {
     if (auto bad = rigid_non_finite(scene.model, path)) {
       result.verdict = Verdict::kGarbage;
       result.reason = "the trajectory holds a non-finite value: " + *bad;
-      return;
+      return std::nullopt;
     }
-    report = grade_rigid_trajectory(scene, path);
+    report = grade_rigid_trajectory(scene, path, {}, on_step);
   } catch (const Error& error) {
     result.verdict = Verdict::kShort;
     result.reason = error.what();
-    return;
+    return std::nullopt;
   }
   const auto sum = [](const std::array<double, 4>& r, int a, int b) { return r[a] + r[b]; };
   result.residuals = Residuals{sum(report->accumulated, kResidualX, kResidualTheta),
@@ -164,19 +230,34 @@ void grade_rigid_file(const Scene& scene, const std::string& path, SceneResult& 
   if (!report->passed()) {
     result.reason = rigid_failure_reason(*report);
     std::ostringstream details;
+    if (const auto& d = report->first_divergence) {
+      details << rigid_divergence_details(*report,
+                                          d->step > 0 ? recent : std::vector<RigidStepResiduals>{});
+      DivergencePoint point;
+      point.step = d->step;
+      point.particle = d->body;
+      for (const RigidStepResiduals& s : recent) {
+        if (s.step != d->step) continue;
+        point.position_residual = std::max(s.maximum[kResidualX], s.maximum[kResidualTheta]);
+        point.velocity_residual = std::max(s.maximum[kResidualV], s.maximum[kResidualOmega]);
+      }
+      result.first_divergence = point;
+    }
     print_rigid_grade_report(details, *report);
     result.details = details.str();
   }
+  return report;
 }
 
 /// Grades the checked trajectory of a run, each step's residuals into `history`; fills verdict,
 /// residuals and explanation. Returns the report when the trajectory could be graded (a
 /// particle scene's; Theme 3 scenes are graded by grade_rigid_file, without one).
 std::optional<GradeReport> grade_file(const Scene& scene, const std::string& path,
-                                      ResidualHistory& history, SceneResult& result) {
+                                      ResidualHistory& history, SceneResult& result,
+                                      std::optional<RigidGradeReport>& rigid_report) {
   const int dim = scene.model.dim;
   if (scene.model.rigid_bodies) {
-    grade_rigid_file(scene, path, result);
+    rigid_report = grade_rigid_file(scene, path, history, result);
     return std::nullopt;
   }
   std::optional<TrajectoryReader> file;
@@ -307,7 +388,9 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
   const std::int64_t expected_bytes = expected_trajectory_bytes(model);
 
   std::optional<GradeReport> report;
-  ResidualHistory history(result.steps, result.dt, criteria_for(scene),
+  std::optional<RigidGradeReport> rigid_report;
+  ResidualHistory history(result.steps, result.dt,
+                          model.rigid_bodies ? rigid_history_criteria() : criteria_for(scene),
                           !options.diagnose_dir.empty());
   try {
     WorkFolder work(options.work_dir);
@@ -323,7 +406,7 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
       result.reason = run.reason;
     } else {
       const auto start = std::chrono::steady_clock::now();
-      report = grade_file(scene, run.trajectory_path, history, result);
+      report = grade_file(scene, run.trajectory_path, history, result, rigid_report);
       result.grade_seconds = seconds_since(start);
     }
     if (options.keep_work)
@@ -334,7 +417,11 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
   }
   if (!result.passed() && !options.diagnose_dir.empty()) {
     try {
-      write_diagnosis(options.diagnose_dir, result, report ? &*report : nullptr, history);
+      if (rigid_report) {
+        write_rigid_diagnosis(options.diagnose_dir, result, *rigid_report, history);
+      } else {
+        write_diagnosis(options.diagnose_dir, result, report ? &*report : nullptr, history);
+      }
     } catch (const Error& error) {
       result.details +=
           std::string("(could not write the diagnosis files: ") + error.what() + ")\n";

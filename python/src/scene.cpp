@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "core/collisions/contact_registry.h"
 #include "core/error.h"
 #include "core/force_evaluation.h"
 #include "core/integrators/integrator_registry.h"
@@ -201,9 +202,10 @@ const char* energy_name(EnergyTrend trend) {
   return "unknown";
 }
 
-py::dict describe_method(const IntegratorMethod& method) {
+/// Options as dicts: name, help, values, type, default (and choices or range).
+py::list describe_options(std::span<const OptionSpec> specs) {
   py::list options;
-  for (const OptionSpec& spec : method.options) {
+  for (const OptionSpec& spec : specs) {
     py::dict option;
     option["name"] = std::string(spec.name);
     option["help"] = std::string(spec.help);
@@ -225,19 +227,45 @@ py::dict describe_method(const IntegratorMethod& method) {
     }
     options.append(option);
   }
+  return options;
+}
+
+py::dict describe_method(const IntegratorMethod& method) {
   py::list aliases;
   for (std::string_view alias : method.aliases) aliases.append(std::string(alias));
   py::dict out;
   out["name"] = std::string(method.name);
   out["aliases"] = aliases;
   out["summary"] = std::string(method.summary);
-  out["options"] = options;
+  out["options"] = describe_options(method.options);
   out["order"] = method.properties.order;
   out["course_reference"] = method.properties.course_reference;
   out["runs_2d"] = method.properties.runs_2d;
   out["runs_3d"] = method.properties.runs_3d;
   out["implicit"] = method.properties.implicit;
   out["energy"] = energy_name(method.properties.energy);
+  return out;
+}
+
+py::dict describe_contact_method(const ContactMethod& method) {
+  py::list bodies;
+  if (method.scope.particles) bodies.append("particles");
+  if (method.scope.planar_rigid_bodies) bodies.append("planar rigid bodies");
+  const char* records = "frames";
+  if (method.records == StepRecordLayout::kCollisions) records = "collisions";
+  if (method.records == StepRecordLayout::kCollisionsAndPolynomials) {
+    records = "collisions and polynomials";
+  }
+  py::dict out;
+  out["name"] = std::string(method.name);
+  out["summary"] = std::string(method.summary);
+  out["options"] = describe_options(method.options);
+  out["bodies"] = bodies;
+  out["runs_2d"] = method.scope.runs_2d;
+  out["runs_3d"] = method.scope.runs_3d;
+  out["records"] = records;
+  out["has_stage"] = method.make_stage != nullptr;
+  out["has_force"] = method.make_force != nullptr;
   return out;
 }
 
@@ -387,10 +415,9 @@ void add_scene(py::module_& module) {
       .def_property_readonly("warnings", [](const PyScene& s) { return s.scene->warnings; })
       .def_property_readonly("description", [](const PyScene& s) { return s.scene->description; })
       .def_property_readonly("tag", [](const PyScene& s) { return s.scene->tag; })
-      .def_property_readonly("collisions",
-                             [](const PyScene& s) {
-                               return std::string(collision_method_name(s.scene->model.collisions.method));
-                             })
+      .def_property_readonly(
+          "collisions",
+          [](const PyScene& s) { return std::string(s.scene->model.collisions.method->name); })
       .def_property_readonly(
           "mass",
           [](py::object self) {
@@ -537,6 +564,17 @@ void add_scene_bindings(py::module_& module) {
         return out;
       },
       "Every integrator of the registry: name, aliases, summary, options, properties.");
+  module.def(
+      "contact_methods",
+      []() {
+        py::list out;
+        for (const ContactMethod* method : contact_methods()) {
+          out.append(describe_contact_method(*method));
+        }
+        return out;
+      },
+      "Every contact method of the registry (<collision type>): name, summary, options, the "
+      "bodies and dimensions it handles, what its steps record.");
 }
 
 }  // namespace fosssim::python

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "core/collisions/contact_registry.h"
 #include "core/integrators/integrator_registry.h"
 #include "support/run_program.h"
 #include "support/scratch_folder.h"
@@ -80,6 +81,19 @@ TEST_F(CommandLine, HelpDocumentsEveryOptionAndExitStatus) {
       EXPECT_NE(r.out.find(std::string(option.name) + " = " + option.describe_values()),
                 std::string::npos)
           << option.name;
+    }
+  }
+  // Every contact method of the registry and its options.
+  for (const ContactMethod* method : contact_methods()) {
+    EXPECT_NE(
+        r.out.find("  " + std::string(method->name) + "\n      " + std::string(method->summary)),
+        std::string::npos)
+        << method->name;
+    for (const OptionSpec& option : method->options) {
+      EXPECT_NE(r.out.find(std::string(option.name) + " = " + option.describe_values() +
+                           " (default " + option.default_text() + ")"),
+                std::string::npos)
+          << method->name << " " << option.name;
     }
   }
 }

@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include "core/collisions/contact_registry.h"
 #include "io/scene_loader.h"
 
 namespace fosssim {
@@ -40,7 +41,7 @@ TEST(CollisionElements, ReadsHalfPlanesColoursAndTheCoursesDefaults) {
   EXPECT_EQ(scene.model.half_planes[0].normal[1], 2.0);  // kept unnormalised
   EXPECT_EQ(scene.appearance.half_plane_color[0], (Color{0.5, 0.25, 1.0}));
   const CollisionSettings& s = scene.model.collisions;
-  EXPECT_EQ(s.method, CollisionMethod::kHybrid);
+  EXPECT_EQ(s.method->name, "hybrid");
   EXPECT_EQ(s.cor, 1.0);
   EXPECT_EQ(s.stiffness, 10.0);
   EXPECT_EQ(s.thickness, 0.1);
@@ -53,7 +54,46 @@ TEST(CollisionElements, ReadsHalfPlanesColoursAndTheCoursesDefaults) {
   EXPECT_EQ(load("<collision type=\"penalty\" penalty-jacobian=\"exact\"/>\n")
                 .model.collisions.penalty_jacobian,
             PenaltyJacobian::kExact);
-  EXPECT_EQ(load("").model.collisions.method, CollisionMethod::kNone);
+  EXPECT_EQ(load("").model.collisions.method->name, "none");
+}
+
+TEST(CollisionElements, EveryRegisteredMethodLoadsWithTheDefaultsOfItsOptions) {
+  for (const ContactMethod* method : contact_methods()) {
+    if (!method->scope.particles || !method->scope.runs_2d) continue;
+    SCOPED_TRACE(std::string(method->name));
+    const Scene scene = load("<collision type=\"" + std::string(method->name) + "\"/>\n");
+    const CollisionSettings& s = scene.model.collisions;
+    EXPECT_EQ(s.method, method);
+    EXPECT_TRUE(scene.warnings.empty());
+    ASSERT_EQ(s.options.specs().size(), method->options.size());
+    for (const OptionSpec& option : method->options) {
+      if (option.type == OptionSpec::Type::kChoice) {
+        EXPECT_EQ(s.options.choice(option.name), option.choices.front());
+      } else {
+        EXPECT_EQ(s.options.number(option.name), option.default_value) << option.name;
+      }
+    }
+  }
+}
+
+TEST(CollisionElements, OptionsGivenAreReadIntoTheSettings) {
+  const Scene scene = load(
+      "<collision type=\"hybrid\" COR=\"0.5\" k=\"7\" thickness=\"0.2\" "
+      "penalty-jacobian=\"exact\" maxiters=\"3\"/>\n");
+  const CollisionSettings& s = scene.model.collisions;
+  EXPECT_EQ(s.options.number("COR"), 0.5);
+  EXPECT_EQ(s.cor, 0.5);
+  EXPECT_EQ(s.stiffness, 7.0);
+  EXPECT_EQ(s.thickness, 0.2);
+  EXPECT_EQ(s.penalty_jacobian, PenaltyJacobian::kExact);
+  EXPECT_EQ(s.max_iterations, 3);
+  EXPECT_TRUE(scene.warnings.empty());
+  // An empty penalty-jacobian is the course's none, as it always was; an empty number is not.
+  EXPECT_EQ(load("<collision type=\"penalty\" penalty-jacobian=\"\"/>\n")
+                .model.collisions.penalty_jacobian,
+            PenaltyJacobian::kNone);
+  EXPECT_EQ(error_of("<collision type=\"penalty\" k=\"\"/>\n"),
+            "c.xml:4: error: <collision>: attribute \"k\" must be a finite number, found \"\"");
 }
 
 TEST(CollisionElements, MaxitersIsTruncatedTowardZeroWithAWarning) {
@@ -140,6 +180,17 @@ const Case kCases[] = {
      "c.xml:4: error: <collision>: attribute \"type\" names an unknown collision handling "
      "\"SIMPLE\" (expected one of none, simple, penalty, continuous-time, hybrid; exact "
      "spelling, lower case)"},
+    {"CollisionTypeMisspelt", "<collision type=\"hybird\"/>\n",
+     "c.xml:4: error: <collision>: attribute \"type\" names an unknown collision handling "
+     "\"hybird\" (did you mean \"hybrid\"? expected one of none, simple, penalty, "
+     "continuous-time, hybrid; exact spelling, lower case)"},
+    {"CollisionTypeOfRigidBodies", "<collision type=\"gr-lcp\" maxreflections=\"0\"/>\n",
+     "c.xml:4: error: <collision>: attribute \"type\" \"gr-lcp\" does not handle particles (it "
+     "is a method of rigid bodies, named by <rigidbodycollisionhandling response=\"...\">)"},
+    {"CollisionTypeMisspeltOnlyAmongParticleMethods", "<collision type=\"lcpp\"/>\n",
+     "c.xml:4: error: <collision>: attribute \"type\" names an unknown collision handling "
+     "\"lcpp\" (expected one of none, simple, penalty, continuous-time, hybrid; exact "
+     "spelling, lower case)"},
     {"CorNotANumber", "<collision type=\"simple\" COR=\"bouncy\"/>\n",
      "c.xml:4: error: <collision>: attribute \"COR\" must be a finite number, found \"bouncy\""},
     {"StiffnessNotANumber", "<collision type=\"penalty\" k=\"stiff\"/>\n",
@@ -203,7 +254,7 @@ TEST(CollisionElements, ProbableMistakesAreWarnedAbout) {
       "<halfplane px=\"0\" py=\"0\" nx=\"0\" ny=\"0\"/>\n"
       "<collision type=\"penalty\" COR=\"1.5\" k=\"-1\" thickness=\"-0.1\"/>\n"
       "<collision type=\"simple\"/>\n");
-  EXPECT_EQ(scene.model.collisions.method, CollisionMethod::kPenalty);  // the first one
+  EXPECT_EQ(scene.model.collisions.method->name, "penalty");  // the first one
   ASSERT_EQ(scene.warnings.size(), 5u);
   EXPECT_EQ(scene.warnings[0],
             "c.xml:4: warning: <halfplane> 0: the normal is zero, so this half-plane never "

@@ -84,28 +84,34 @@ TEST(JsonScene, RejectsBadScenesNamingTheProblem) {
   dir.write("square.obj", kSquare);
   dir.write("lines.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n");
   const Bad cases[] = {
-      {R"({"k": 1})", 0, "the required key \"obj\""},
-      {R"({"obj": "square.obj"})", 0, "the required key \"k\" is missing"},
-      {R"({"obj": "square.obj", "k": "stiff"})", 0, "\"k\" must be a number, found \"stiff\""},
-      {R"({"obj": "square.obj", "k": -1})", 0, "\"k\" must not be negative"},
-      {R"({"obj": "square.obj", "k": 1, "b": [0]})", 0,
+      {R"({"k": 1})", 1, "the required key \"obj\""},
+      {R"({"obj": "square.obj"})", 1, "the required key \"k\" is missing"},
+      {R"({"obj": "square.obj", "k": "stiff"})", 1, "\"k\" must be a number, found \"stiff\""},
+      {R"({"obj": "square.obj", "k": -1})", 1, "\"k\" must not be negative"},
+      {R"({"obj": "square.obj", "k": 1, "b": [0]})", 1,
        "\"b\"[0] must be a vertex number from 1 to 4 (1-based), found 0"},
-      {R"({"obj": "square.obj", "k": 1, "b": [1, 5]})", 0,
+      {R"({"obj": "square.obj", "k": 1, "b": [1, 5]})", 1,
        "\"b\"[1] must be a vertex number from 1 to 4"},
-      {R"({"obj": "square.obj", "k": 1, "b": 3})", 0, "\"b\" must be a list"},
-      {R"({"obj": "square.obj", "k": 1, "m": 0})", 0, "\"m\" must be positive"},
-      {R"({"obj": "square.obj", "k": 1, "iterations": 2.5})", 0,
+      {R"({"obj": "square.obj", "k": 1, "b": 3})", 1, "\"b\" must be a list"},
+      {R"({"obj": "square.obj", "k": 1, "m": 0})", 1, "\"m\" must be positive"},
+      {R"({"obj": "square.obj", "k": 1, "iterations": 2.5})", 1,
        "\"iterations\" must be a whole number"},
-      {R"({"obj": "square.obj", "k": 1, "start": "previous"})", 0,
+      {R"({"obj": "square.obj", "k": 1, "start": "previous"})", 1,
        "\"start\" must be \"inertial\" or \"current\", found \"previous\""},
-      {R"({"obj": "square.obj", "k": 1, "start": 1})", 0,
+      {R"({"obj": "square.obj", "k": 1, "start": 1})", 1,
        "\"start\" must be \"inertial\" or \"current\", found \"1\""},
-      {R"({"obj": "lines.obj", "k": 1})", 0, "masses from areas need faces"},
+      {R"({"obj": "lines.obj", "k": 1})", 1, "masses from areas need faces"},
       {"{\n  \"obj\": \"square.obj\",\n  \"k\": 1,,\n}", 3, "not valid JSON"},
-      {"[1, 2]", 0, "must hold a JSON object"},
-      {R"({"obj": "square.obj\u0000.txt", "k": 1})", 0,
+      {"[1, 2]", 1, "must hold a JSON object"},
+      {R"({"obj": "square.obj\u0000.txt", "k": 1})", 1,
        "\"obj\" must be a file name, found one holding a NUL character"},
       {"  \n", 0, "the file is empty"},
+      {"{\n  \"obj\": \"square.obj\",\n  \"k\": 1,\n  \"m\": -2\n}", 4, "\"m\" must be positive"},
+      {"{\n  \"obj\": \"square.obj\",\n  \"k\": 1,\n  \"b\": [\n    1,\n    7]\n}", 6,
+       "\"b\"[1] must be a vertex number"},
+      {"\n\n{\"obj\": \"square.obj\"}", 3, "the required key \"k\" is missing"},
+      {R"({"obj": "square.obj", "k": 1, "duraton": 2})", 1,
+       "unknown key \"duraton\" (did you mean \"duration\"?)"},
   };
   for (const Bad& c : cases) {
     const std::string path = dir.write("bad.json", c.json);
@@ -114,6 +120,70 @@ TEST(JsonScene, RejectsBadScenesNamingTheProblem) {
     EXPECT_EQ(scene_error.line(), c.line) << scene_error.what();
     EXPECT_NE(scene_error.problem().find(c.problem), std::string::npos) << scene_error.what();
   }
+}
+
+TEST(JsonScene, ReportsEveryProblemOfAFileWithItsLine) {
+  testing::ScratchFolder dir;
+  dir.write("square.obj", kSquare);
+  const std::string path = dir.write("scene.json",
+                                     "{\n"                          // 1
+                                     "  \"obj\": \"square.obj\",\n"  // 2
+                                     "  \"k\": -1,\n"                // 3
+                                     "  \"itreations\": 5,\n"        // 4
+                                     "  \"b\": [1,\n"                // 5
+                                     "        9,\n"                 // 6
+                                     "        0],\n"                // 7
+                                     "  \"h\": \"fast\",\n"          // 8
+                                     "  \"colour\": \"red\"\n"       // 9: only a warning
+                                     "}\n");
+  const SceneErrors errors = thrown_by<SceneErrors>([&] { load_json_scene_file(path); });
+  EXPECT_EQ(errors.kind(), ErrorKind::kBadInput);  // the programs exit 2
+  ASSERT_EQ(errors.total(), 5u) << errors.what();
+  const std::pair<int, const char*> expected[] = {
+      {3, "\"k\" must not be negative, found -1"},
+      {4, "unknown key \"itreations\" (did you mean \"iterations\"?)"},
+      {6, "\"b\"[1] must be a vertex number from 1 to 4 (1-based), found 9"},
+      {7, "\"b\"[2] must be a vertex number from 1 to 4 (1-based), found 0"},
+      {8, "\"h\" must be a number, found \"fast\""},
+  };
+  ASSERT_EQ(errors.errors().size(), 5u);
+  for (std::size_t k = 0; k < 5; ++k) {
+    EXPECT_EQ(errors.errors()[k].file(), path);
+    EXPECT_EQ(errors.errors()[k].line(), expected[k].first) << errors.what();
+    EXPECT_EQ(errors.errors()[k].problem(), expected[k].second) << errors.what();
+  }
+  // One line per problem in the message, each "file:line: error: ...".
+  const std::string what = errors.what();
+  EXPECT_NE(what.find(path + ":4: error: unknown key \"itreations\""), std::string::npos) << what;
+  EXPECT_NE(what.find(path + ":8: error: \"h\" must be a number"), std::string::npos) << what;
+  EXPECT_EQ(what.find("colour"), std::string::npos) << what;
+}
+
+TEST(JsonScene, KeepsAtMostTheDocumentedNumberOfProblemsAndCountsTheRest) {
+  testing::ScratchFolder dir;
+  dir.write("square.obj", kSquare);
+  std::string list = "[";
+  for (int k = 0; k < 25; ++k) list += std::string(k == 0 ? "" : ",\n") + "0";
+  const std::string path =
+      dir.write("scene.json", R"({"obj": "square.obj", "k": 1, "b": )" + list + "]}");
+  const SceneErrors errors = thrown_by<SceneErrors>([&] { load_json_scene_file(path); });
+  EXPECT_EQ(errors.total(), 25u);
+  ASSERT_EQ(errors.errors().size(), SceneErrorList::kMaxReported);
+  EXPECT_EQ(errors.errors().back().line(), static_cast<int>(SceneErrorList::kMaxReported));
+  EXPECT_NE(std::string(errors.what()).find("and 5 more errors"), std::string::npos)
+      << errors.what();
+}
+
+TEST(JsonScene, ReportsTheSceneProblemsBesideABrokenMesh) {
+  testing::ScratchFolder dir;
+  dir.write("broken.obj", "v 0 0 0\nv 1 0 0\nf 1 7\n");
+  const std::string path =
+      dir.write("scene.json", "{\"obj\": \"broken.obj\",\n \"k\": 1,\n \"m\": 0}");
+  const SceneErrors errors = thrown_by<SceneErrors>([&] { load_json_scene_file(path); });
+  ASSERT_EQ(errors.total(), 2u) << errors.what();
+  const std::string what = errors.what();
+  EXPECT_NE(what.find((dir / "broken.obj") + ":3: error:"), std::string::npos) << what;
+  EXPECT_NE(what.find(path + ":3: error: \"m\" must be positive"), std::string::npos) << what;
 }
 
 TEST(JsonScene, PassesOnTheMeshFilesErrorsWithTheirLines) {

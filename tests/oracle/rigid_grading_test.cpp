@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "batch.h"
+#include "diagnosis.h"
 #include "grading/rigid_grader.h"
 #include "io/scene_loader.h"
 #include "scene_grading.h"
@@ -156,6 +157,81 @@ TEST(RigidGrading, TheCommandGradesATheme3SuiteIntoJUnit) {
   EXPECT_TRUE(contains(xml, "failures=\"0\"")) << xml;
   EXPECT_FALSE(contains(xml, "<failure")) << xml;
   EXPECT_FALSE(contains(xml, "<error")) << xml;
+}
+
+
+// The diagnosis of a failing Theme 3 scene (fosssim-oracle --diagnose): the perturbing candidate
+// (FOSSSim, then one double of its file changed) turns body 1's ω at frame 23 by 1e-6; the
+// oracle names step 23, body 1, Omega, shows the residuals of the steps up to it, and writes the
+// per-step table (zero residuals before step 23, the change at 23) and the plot.
+TEST(RigidGrading, TheDiagnosisNamesTheFirstFailingStepBodyAndQuantity) {
+  TemporaryFolder work, diagnosis;
+  testing::use_perturbing_candidate(23, 1, 5, "1e-6");
+  GradingOptions options = options_for(testing::candidate("perturbing_candidate.sh"), work);
+  options.diagnose_dir = diagnosis.path();
+  const SceneResult r = grade_scene(rigid_scene(), options);
+  EXPECT_EQ(r.verdict, Verdict::kFailed);
+  ASSERT_TRUE(r.first_divergence);
+  EXPECT_EQ(r.first_divergence->step, 23);
+  EXPECT_EQ(r.first_divergence->particle, 1);
+  EXPECT_NEAR(r.first_divergence->velocity_residual, 1e-6, 1e-12);
+  EXPECT_EQ(r.first_divergence->position_residual, 0.0);  // the frame's positions are right
+  EXPECT_TRUE(contains(r.details, "First divergence: step 23, body 1, Omega (residual 1.00000000002"))
+      << r.details;
+  EXPECT_TRUE(contains(r.details, "Residuals per step")) << r.details;
+  EXPECT_TRUE(contains(r.details, "\n  22  0 (0)")) << r.details;  // the step before: exact
+  // The table: a header and one row per step, zero before step 23.
+  const std::string stem = diagnosis_stem(diagnosis.path(), rigid_scene().name);
+  const std::string table = testing::read_bytes(stem + ".residuals.tsv");
+  std::vector<std::string> rows;
+  std::size_t at = 0;
+  while (at < table.size()) {
+    const std::size_t end = table.find('\n', at);
+    rows.push_back(table.substr(at, end - at));
+    at = end == std::string::npos ? table.size() : end + 1;
+  }
+  ASSERT_EQ(rows.size(), 1u + kSteps) << table;
+  EXPECT_EQ(rows[22].substr(0, 3), "22\t");
+  EXPECT_TRUE(contains(rows[22], "\t0\t")) << rows[22];
+  EXPECT_EQ(rows[23].substr(0, 3), "23\t");
+  EXPECT_TRUE(contains(rows[23], "\t1.00000000002")) << rows[23];
+  EXPECT_TRUE(contains(testing::read_bytes(stem + ".residuals.svg"), "<svg"));
+  EXPECT_TRUE(contains(testing::read_bytes(stem + ".diagnosis.txt"), "First divergence"));
+  // The grader's own report agrees: FOSSSim -i's first divergence on the same kind of file.
+  std::string bytes = testing::fosssim_trajectory(kRigidScene, work);
+  add_to_double(bytes, state_offset(23, 1, 5), 1e-6);
+  testing::write_bytes(work / "perturbed.bin", bytes);
+  std::vector<RigidStepResiduals> steps;
+  const RigidGradeReport direct = grade_rigid_trajectory(
+      load_scene_file(kRigidScene), work / "perturbed.bin", {},
+      [&steps](const RigidStepResiduals& s) { steps.push_back(s); });
+  ASSERT_TRUE(direct.first_divergence);
+  EXPECT_EQ(direct.first_divergence->step, 23);
+  EXPECT_EQ(direct.first_divergence->body, 1);
+  EXPECT_EQ(direct.first_divergence->quantity, "Omega");
+  ASSERT_EQ(steps.size(), static_cast<std::size_t>(kSteps));
+  EXPECT_EQ(steps[22].step, 23);
+  EXPECT_EQ(steps[22].body[kResidualOmega], 1);
+  EXPECT_EQ(steps[21].maximum[kResidualOmega], 0.0);
+  // Step 24 restarts from the perturbed frame: its residuals show the change carried on.
+  EXPECT_GT(steps[23].maximum[kResidualTheta] + steps[23].maximum[kResidualOmega], 0.0);
+}
+
+// A wrong derived quantity alone (the state right) is a divergence too: its frame and body.
+TEST(RigidGrading, AWrongDerivedQuantityIsTheFirstDivergence) {
+  TemporaryFolder work;
+  std::string bytes = testing::fosssim_trajectory(kRigidScene, work);
+  // Frame 9's quantities block follows its state: P (2B), L_cm (B), L_spin (B), T_cm (B), ...
+  const std::size_t quantities = state_offset(9, 0, 0) + 8 * 6 * kBodies;
+  add_to_double(bytes, quantities + 8 * (2 * kBodies + kBodies + 1), 1e-5);  // L_spin, body 1
+  testing::write_bytes(work / "wrong_l.bin", bytes);
+  const RigidGradeReport report =
+      grade_rigid_trajectory(load_scene_file(kRigidScene), work / "wrong_l.bin");
+  ASSERT_TRUE(report.first_divergence);
+  EXPECT_EQ(report.first_divergence->step, 9);
+  EXPECT_EQ(report.first_divergence->body, 1);
+  EXPECT_EQ(report.first_divergence->quantity, "Lspin");
+  EXPECT_NEAR(report.first_divergence->residual, 1e-5, 1e-12);
 }
 
 }  // namespace

@@ -66,6 +66,38 @@ def test_integrators_come_from_the_registry():
             assert option["help"]
 
 
+def test_contact_methods_come_from_the_registry():
+    methods = {m["name"]: m for m in fosssim.contact_methods()}
+    assert list(methods)[:5] == ["none", "simple", "penalty", "continuous-time", "hybrid"]
+    assert methods["hybrid"]["runs_2d"] and not methods["hybrid"]["runs_3d"]
+    assert methods["hybrid"]["has_stage"] and methods["hybrid"]["has_force"]
+    assert methods["penalty"]["records"] == "frames"
+    assert methods["simple"]["records"] == "collisions"
+    assert methods["continuous-time"]["records"] == "collisions and polynomials"
+    hybrid_options = {o["name"]: o for o in methods["hybrid"]["options"]}
+    assert hybrid_options["k"]["default"] == 10.0
+    assert hybrid_options["penalty-jacobian"]["choices"] == ["none", "exact"]
+    for method in methods.values():
+        assert method["summary"]
+        for option in method["options"]:
+            assert option["help"]
+    scene = fosssim.load_scene_text(FORCES_SCENE)
+    assert scene.collisions == "none"
+
+
+def test_rigid_body_responses_are_contact_methods(source_dir):
+    methods = {m["name"]: m for m in fosssim.contact_methods()}
+    rigid = [name for name, m in methods.items() if "planar rigid bodies" in m["bodies"]]
+    assert rigid == ["lcp", "velocity-projection", "gr-lcp", "gr-velocity-projection"]
+    for name in rigid:
+        assert methods[name]["bodies"] == ["planar rigid bodies"]
+        assert methods[name]["runs_2d"] and not methods[name]["runs_3d"]
+        assert methods[name]["has_stage"] and not methods[name]["has_force"]
+        assert methods[name]["records"] == "frames"
+    scene = fosssim.load_scene(str(source_dir / "assets/t3m2/gr_lcp_newtons_cradle.xml"))
+    assert scene.collisions == "gr-lcp"
+
+
 def test_set_integrator_takes_aliases_dt_and_options():
     scene = fosssim.load_scene_text(FORCES_SCENE)
     scene.set_integrator("semi-implicit-euler", dt=0.002)

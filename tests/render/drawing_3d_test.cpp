@@ -133,7 +133,7 @@ TEST(ComposeDrawing3D, AddsMarksTheDragGuideAndTheTime) {
   Scene scene = particles_at({{1, 0, 0}});
   Overlay overlay;
   overlay.marks = {{0, Color{1, 0, 0}}};
-  overlay.drag = DragGuide{0, Eigen::Vector3d(0, 1, 0)};
+  overlay.drag = DragGuide{0, Eigen::Vector3d(0, 1, 0), std::nullopt};
   overlay.status = {"paused"};
   const Drawing d = draw(scene, front_camera(), overlay);
   ASSERT_EQ(d.marks.size(), 2u);  // the mark and the guide's ring

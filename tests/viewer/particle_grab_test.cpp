@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "core/forces/rigid_body_spring_force.h"
+#include "core/rigid/rigid_bodies.h"
 #include "core/step/simulation.h"
 #include "io/scene_loader.h"
 #include "support/scene_builder.h"
@@ -194,6 +196,131 @@ TEST(DragSpring, AnIdleDragSpringChangesNothing) {
   }
   EXPECT_EQ(a.state().q, b.state().q);
   EXPECT_EQ(a.state().v, b.state().v);
+}
+
+
+/// A rigid-body scene: a free 2 × 1 box (four unit vertex masses, centre at the origin) above a
+/// fixed floor, no gravity; the viewport maps world (x, y) to pixel (256 + 51.2 x, 256 − 51.2 y).
+Scene box_over_floor() {
+  return load_scene_text(R"(<scene>
+    <simtype type="rigid-body"/><duration time="1"/>
+    <rigidbodyintegrator type="symplectic-euler" dt="0.01"/>
+    <viewport cx="0" cy="0" size="5"/>
+    <rigidbodyvertex x="-1" y="0.5" m="1"/><rigidbodyvertex x="1" y="0.5" m="1"/>
+    <rigidbodyvertex x="1" y="-0.5" m="1"/><rigidbodyvertex x="-1" y="-0.5" m="1"/>
+    <rigidbodyvertex x="-4" y="-2" m="1"/><rigidbodyvertex x="4" y="-2" m="1"/>
+    <rigidbodyvertex x="4" y="-3" m="1"/><rigidbodyvertex x="-4" y="-3" m="1"/>
+    <rigidbody p="0" p="1" p="2" p="3" vx="0" vy="0" omega="0" r="0.05"/>
+    <rigidbody p="4" p="5" p="6" p="7" vx="0" vy="0" omega="0" r="0.05" fixed="1"/>
+    </scene>)",
+                         "box.xml");
+}
+
+/// The pixel of world point (x, y) in box_over_floor's view.
+Point2 box_pixel(double x, double y) { return {256.0 + 51.2 * x, 256.0 - 51.2 * y}; }
+
+TEST(RigidBodyGrab, PicksTheBodyUnderTheCursorAndGrabsItsPointThere) {
+  Scene scene = box_over_floor();
+  State state = scene.initial;
+  state.q[2] = std::numbers::pi / 2;  // the box turned a quarter: now 1 wide and 2 high
+  const SceneView view(scene, state, 512, 512);
+  ParticleGrab grab(scene);
+  EXPECT_EQ(&grab.interaction_force(), &grab.rigid_force());
+  const RigidBodyDragForce& spring = grab.rigid_force();
+  // (0.3, 0.8) lies in the turned box (not in the unturned one): its body point is R(−π/2) of
+  // it, (0.8, −0.3).
+  const Point2 inside = box_pixel(0.3, 0.8);
+  ASSERT_TRUE(grab.press(view, state, inside.x, inside.y));
+  EXPECT_EQ(spring.body(), 0);
+  EXPECT_TRUE(spring.body_point().isApprox(Vec<2>(0.8, -0.3), 1e-9)) << spring.body_point();
+  EXPECT_TRUE(spring.target().isApprox(Vec<2>(0.3, 0.8), 1e-9));
+  // The stiffness is the mass felt at the point over h²: M = 4, I = 4 (1 + 0.25) = 5.
+  EXPECT_NEAR(spring.stiffness(), 1.0 / (0.25 + 0.73 / 5.0) / 1e-4, 1e-6);
+  // The drag line starts at the grabbed point of the body.
+  ASSERT_TRUE(grab.guide());
+  EXPECT_EQ(grab.guide()->particle, 0);
+  ASSERT_TRUE(grab.guide()->body_point);
+  grab.move(view, box_pixel(2.3, 1.8).x, box_pixel(2.3, 1.8).y);
+  EXPECT_TRUE(spring.target().isApprox(Vec<2>(2.3, 1.8), 1e-9));
+  grab.release();
+  EXPECT_FALSE(spring.active());
+  EXPECT_FALSE(grab.active());
+  // Outside the turned box but inside where the unturned one was: nothing. Within its radius
+  // (0.05) plus 8 pixels of an edge: the box. The fixed floor cannot be pulled.
+  EXPECT_FALSE(grab.press(view, state, box_pixel(0.9, 0.3).x, box_pixel(0.9, 0.3).y));
+  EXPECT_TRUE(grab.press(view, state, box_pixel(0.5 + 0.15, 0.3).x, box_pixel(0.65, 0.3).y));
+  grab.release();
+  EXPECT_FALSE(grab.press(view, state, box_pixel(0.0, -2.5).x, box_pixel(0.0, -2.5).y));
+  EXPECT_FALSE(spring.active());
+}
+
+TEST(RigidBodyGrab, TheDragIsTheRigidSpringToAWorldPoint) {
+  // Energy and gradient (F and τ) equal those of the scene's own rigid-body spring from the
+  // grabbed point to the target, rest length 0, on a moved and turned state.
+  Scene scene = box_over_floor();
+  RigidBodyDragForce drag;
+  drag.grab(0, Vec<2>(0.7, -0.2), Vec<2>(1.5, 2.0), 250.0);
+  drag.move_target(Vec<2>(-1.0, 3.0));
+  const RigidBodySpringForce spring(0, Vec<2>(0.7, -0.2), -1, Vec<2>(-1.0, 3.0), 250.0, 0.0);
+  State state = scene.initial;
+  state.q.segment<3>(0) << 0.4, -0.3, 0.9;
+  const ForceInput in{state.q, state.v, scene.model.mass};
+  double e_drag = 0.0, e_spring = 0.0;
+  drag.add_energy(in, e_drag);
+  spring.add_energy(in, e_spring);
+  EXPECT_GT(e_drag, 0.0);
+  EXPECT_EQ(e_drag, e_spring);
+  Vector g_drag = Vector::Zero(6), g_spring = Vector::Zero(6);
+  drag.add_gradient(in, g_drag);
+  spring.add_gradient(in, g_spring);
+  EXPECT_EQ(g_drag, g_spring);
+  EXPECT_NE(g_drag[2], 0.0);  // a torque: the point is off the centre
+  drag.release();
+  double idle = 0.0;
+  drag.add_energy(in, idle);
+  EXPECT_EQ(idle, 0.0);
+}
+
+TEST(RigidBodyGrab, PullsTheGrabbedPointToTheCursorInAHeadlessRun) {
+  // The box grabbed at (0.8, 0.3) through the window's picking and pulled to (2.3, 1.8), no
+  // gravity, symplectic Euler. First step by hand: F = k (1.5, 1.5), τ = (0.8, 0.3) × F =
+  // 0.75 k, V = h F / M, ω = h τ / I (M = 4, I = 5). Then 300 steps stay bounded (the
+  // stiffness keeps symplectic Euler stable: an unstable spring would grow every step) and the
+  // grabbed point passes near the cursor. An idle grab leaves the box at rest.
+  for (const bool pull : {true, false}) {
+    Scene scene = box_over_floor();
+    ParticleGrab grab(scene);
+    SimulationStepper stepper(scene, {&grab.interaction_force()});
+    const SceneView view(scene, stepper.state(), 512, 512);
+    const Vec<2> start(0.8, 0.3), goal(2.3, 1.8);
+    if (pull) {
+      ASSERT_TRUE(grab.press(view, stepper.state(), box_pixel(0.8, 0.3).x, box_pixel(0.8, 0.3).y));
+      grab.move(view, box_pixel(2.3, 1.8).x, box_pixel(2.3, 1.8).y);
+      ASSERT_TRUE(grab.rigid_force().target().isApprox(goal, 1e-9));
+    }
+    const double k = grab.rigid_force().stiffness(), h = 0.01;
+    stepper.step();
+    const Vector& v1 = stepper.state().v;
+    const Vec<2> pull_vector = pull ? Vec<2>(goal - start) : Vec<2>::Zero();
+    EXPECT_NEAR(v1[0], h * k * pull_vector.x() / 4.0, 1e-9 * (1 + k));
+    EXPECT_NEAR(v1[1], h * k * pull_vector.y() / 4.0, 1e-9 * (1 + k));
+    EXPECT_NEAR(v1[2], h * k * (0.8 * pull_vector.y() - 0.3 * pull_vector.x()) / 5.0,
+                1e-9 * (1 + k));
+    double closest = (start - goal).norm(), farthest = 0.0;
+    for (int step = 1; step < 300; ++step) {
+      stepper.step();
+      const State& s = stepper.state();
+      const Vec<2> point = rotate(body_angle(s.q, 0), start) + body_center(s.q, 0);
+      closest = std::min(closest, (point - goal).norm());
+      farthest = std::max(farthest, (point - goal).norm());
+    }
+    if (pull) {
+      EXPECT_LT(farthest, 3.0 * (start - goal).norm());  // bounded: stable
+      EXPECT_LT(closest, 0.5 * (start - goal).norm());   // it came to the cursor
+    } else {
+      EXPECT_EQ(stepper.state().q.head<3>(), scene.initial.q.head<3>());  // no pull, no motion
+    }
+  }
 }
 
 }  // namespace

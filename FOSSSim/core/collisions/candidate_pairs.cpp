@@ -42,10 +42,9 @@ bool uses_grid_pairs(const SceneModel& model) {
       break;
   }
   // The grid visits the pairs that can act in the course's order, so penalty forces and simple
-  // impulses come out bit-identical; 2D continuous-time and hybrid files log the polynomials
-  // of every pair the course visits, which only all pairs reproduces.
-  return model.dim == 3 ||
-         (s.method != CollisionMethod::kContinuousTime && s.method != CollisionMethod::kHybrid);
+  // impulses come out bit-identical; 2D methods that record polynomials (continuous-time and
+  // hybrid) log those of every pair the course visits, which only all pairs reproduces.
+  return model.dim == 3 || s.method->records != StepRecordLayout::kCollisionsAndPolynomials;
 }
 
 std::unique_ptr<CandidatePairs> make_candidate_pairs(const SceneModel& model) {

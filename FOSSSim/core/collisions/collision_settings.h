@@ -1,8 +1,12 @@
 #pragma once
-// What a scene says about contact: half-planes and the collision method with its parameters.
+// What a scene says about contact: half-planes and the contact method with its parameters.
 
+#include <array>
+#include <limits>
 #include <string_view>
 
+#include "core/collisions/contact_registry.h"
+#include "core/integrators/integrator_options.h"
 #include "core/types.h"
 
 namespace fosssim {
@@ -20,15 +24,6 @@ struct HalfPlane {
 struct Sphere {
   Vector center;        ///< size dim
   double radius = 0.0;  ///< > 0
-};
-
-/// How a scene handles contact (docs/collisions.md).
-enum class CollisionMethod {
-  kNone,            ///< nothing collides
-  kSimple,          ///< discrete detection after each step and impulses (Gauss-Seidel)
-  kPenalty,         ///< a penalty force, summed after every other force
-  kContinuousTime,  ///< swept detection over the step and impulses (Gauss-Seidel)
-  kHybrid,          ///< penalty force, Jacobi passes of swept impulses, then rigid impact zones
 };
 
 /// How candidate pairs are found (<collisiondetection type>; docs/collisions.md, "Broad
@@ -52,9 +47,51 @@ enum class PenaltyJacobian {
   kExact,
 };
 
-/// The <collision> element and its parameters, with the course's defaults.
+/// The settings of the particle methods (Theme 2's <collision> attributes), declared once for the
+/// entries that read them: each method lists those it reads, in the course's reading order
+/// (COR, k, thickness, penalty-jacobian, maxiters), with its own defaults.
+namespace particle_contact_options {
+/// A number the course accepts whatever its value (a suspicious one gets a warning).
+constexpr OptionSpec any_number(std::string_view name, double default_value,
+                                std::string_view help) {
+  return OptionSpec::number(name, default_value, -std::numeric_limits<double>::infinity(), false,
+                            help);
+}
+constexpr OptionSpec restitution(std::string_view help) { return any_number("COR", 1.0, help); }
+constexpr OptionSpec stiffness(double default_value) {
+  return any_number("k", default_value, "penalty stiffness k, N/m (a negative one pulls together)");
+}
+constexpr OptionSpec thickness(double default_value) {
+  return any_number("thickness", default_value,
+                    "penalty thickness T, m: the force acts within the radii plus T");
+}
+inline constexpr std::array<std::string_view, 2> kPenaltyJacobianChoices = {"none", "exact"};
+constexpr OptionSpec penalty_jacobian() {
+  OptionSpec spec = OptionSpec::choice(
+      "penalty-jacobian", kPenaltyJacobianChoices,
+      "how implicit integrators see the penalty force: none (the course's: right-hand sides "
+      "only) or exact (its exact Jacobian in the step matrix)");
+  spec.values_text = "\"none\" (the course's) or \"exact\"";
+  return spec;
+}
+constexpr OptionSpec max_iterations(double default_value) {
+  return any_number("maxiters", default_value,
+                    "impulse passes a step before the geometric stage, truncated; <= 0 skips "
+                    "them (capped by --max-hybrid-passes)");
+}
+}  // namespace particle_contact_options
+
+/// How a scene handles contact: the method (a particle scene's <collision>, a rigid-body scene's
+/// <rigidbodycollisionhandling>) and its settings, with the course's defaults.
 struct CollisionSettings {
-  CollisionMethod method = CollisionMethod::kNone;
+  /// The method (an entry of core/collisions/contact_registry.h); "none" without <collision>
+  /// (<rigidbodycollisionhandling>).
+  const ContactMethod* method = &no_contact_method();
+  /// The values of method->options as the scene gave them, defaults for the others: where a
+  /// method whose settings are not among the fields below reads them.
+  OptionValues options{method->options};
+  // The particle methods' settings, which the loader copies from `options` (the fields of the
+  // options a method does not have keep these defaults) and their code reads:
   double cor = 1.0;          ///< coefficient of restitution (simple, continuous-time, hybrid)
   double stiffness = 100.0;  ///< penalty k (hybrid's default is 10)
   double thickness = 0.01;   ///< penalty thickness T (hybrid's default is 0.1)
@@ -63,18 +100,11 @@ struct CollisionSettings {
   PairDetection detection = PairDetection::kDefault;
   PenaltyJacobian penalty_jacobian = PenaltyJacobian::kNone;
 
-  /// True for the methods that add a penalty force to the model.
-  bool has_penalty_force() const {
-    return method == CollisionMethod::kPenalty || method == CollisionMethod::kHybrid;
-  }
-  /// True for the methods that run a response stage after the integrator.
-  bool has_response_stage() const {
-    return method == CollisionMethod::kSimple || method == CollisionMethod::kContinuousTime ||
-           method == CollisionMethod::kHybrid;
+  /// Switches to `m` with its options at their defaults (the fields above are left as they are).
+  void use(const ContactMethod& m) {
+    method = &m;
+    options = OptionValues(m.options);
   }
 };
-
-/// The scene-file name of a method ("continuous-time").
-std::string_view collision_method_name(CollisionMethod method);
 
 }  // namespace fosssim

@@ -199,4 +199,23 @@ std::unique_ptr<Force> make_penalty_force(const SceneModel& model) {
 template class PenaltyForce<2>;
 template class PenaltyForce<3>;
 
+namespace {
+namespace options = particle_contact_options;
+constexpr std::array kPenaltyOptionSpecs = {
+    options::restitution("accepted and unused (the course reads it for every type)"),
+    options::stiffness(100.0),
+    options::thickness(0.01),
+    options::penalty_jacobian(),
+};
+}  // namespace
+
+constinit const ContactMethod kPenaltyContactMethod{
+    .name = "penalty",
+    .summary = "a spring force between objects closer than their radii plus a thickness",
+    .options = kPenaltyOptionSpecs,
+    .scope = kParticlesIn2DAnd3D,
+    .records = StepRecordLayout::kFrames,
+    .make_force = make_penalty_force,
+};
+
 }  // namespace fosssim

@@ -7,6 +7,7 @@
 
 #include "core/collisions/candidate_pairs.h"
 #include "core/collisions/collision_settings.h"
+#include "core/collisions/contact_method.h"
 #include "core/force.h"
 #include "core/scene_model.h"
 
@@ -73,5 +74,8 @@ class PenaltyForce final : public Force {
 /// The model's penalty force (model.collisions: method penalty or hybrid), for dimension
 /// model.dim.
 std::unique_ptr<Force> make_penalty_force(const SceneModel& model);
+
+/// Registry entry: "penalty" (the force alone; hybrid uses the force too).
+extern const ContactMethod kPenaltyContactMethod;
 
 }  // namespace fosssim

@@ -26,8 +26,6 @@ Mat2 angle_hessian(const Vec2& e) {
   return J / (s * s);
 }
 
-double cross(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
-
 }  // namespace
 
 double ElasticBodyBendingForce::angle(const Vector& q) const {

@@ -10,7 +10,6 @@ namespace fosssim {
 
 namespace {
 constexpr int kWorld = -1;
-double cross(const Vec<2>& a, const Vec<2>& b) { return a.x() * b.y() - a.y() * b.x(); }
 Vec<2> perp(const Vec<2>& a) { return {-a.y(), a.x()}; }
 }  // namespace
 

@@ -102,13 +102,13 @@ std::vector<std::string> ImplicitEuler::notes() const {
 }
 
 namespace {
-constexpr std::array<std::string_view, 1> kAliases = {"implicit"};
-constexpr NewtonSettings kDefaults;
-constexpr std::array kOptions = {
-    OptionSpec::number("newton-tolerance", kDefaults.tolerance, 0.0, /*excluded=*/true,
+constexpr std::array<std::string_view, 1> kImplicitEulerAliases = {"implicit"};
+constexpr NewtonSettings kImplicitEulerDefaults;
+constexpr std::array kImplicitEulerOptionSpecs = {
+    OptionSpec::number("newton-tolerance", kImplicitEulerDefaults.tolerance, 0.0, /*excluded=*/true,
                        "stop Newton when the L2 norm of a correction is below this (m/s); "
                        "1e-9 is the course's"),
-    OptionSpec::integer("newton-max-iterations", kDefaults.max_iterations, 1, 1000000,
+    OptionSpec::integer("newton-max-iterations", kImplicitEulerDefaults.max_iterations, 1, 1000000,
                         "give up on a step after this many Newton iterations"),
     kSolverOption,
 };
@@ -116,9 +116,9 @@ constexpr std::array kOptions = {
 
 constinit const IntegratorMethod kImplicitEulerMethod{
     .name = "implicit-euler",
-    .aliases = kAliases,
+    .aliases = kImplicitEulerAliases,
     .summary = "backward Euler solved by Newton's method to 1e-9",
-    .options = kOptions,
+    .options = kImplicitEulerOptionSpecs,
     .properties = {.order = 1,
                    .course_reference = true,
                    .implicit = true,

@@ -24,6 +24,7 @@ std::string quoted_list(std::span<const std::string_view> choices) {
 }  // namespace
 
 std::string OptionSpec::describe_values() const {
+  if (!values_text.empty()) return std::string(values_text);
   switch (type) {
     case Type::kChoice:
       return quoted_list(choices);

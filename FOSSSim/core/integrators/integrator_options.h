@@ -28,6 +28,9 @@ struct OptionSpec {
   bool lowest_excluded = false;
   double highest = std::numeric_limits<double>::infinity();
   std::span<const std::string_view> choices;
+  /// How messages and help describe the accepted values, when the generic description
+  /// (describe_values) does not say enough: "\"none\" (the course's) or \"exact\"".
+  std::string_view values_text;
 
   /// A real number ≥ lowest (> lowest when `excluded`).
   static constexpr OptionSpec number(std::string_view name, double default_value, double lowest,
@@ -66,7 +69,7 @@ struct OptionSpec {
   }
 
   /// What the option accepts, for messages and help: "a whole number from 1 to 1000000",
-  /// "\"elimination\" or \"penalty\"".
+  /// "\"elimination\" or \"penalty\"" (values_text when it is set).
   std::string describe_values() const;
   /// The default as text ("10", "1e-09", "elimination").
   std::string default_text() const;

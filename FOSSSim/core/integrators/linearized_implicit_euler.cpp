@@ -35,15 +35,15 @@ void LinearizedImplicitEuler::advance(State& state) {
 }
 
 namespace {
-constexpr std::array<std::string_view, 1> kAliases = {"linearized-implicit"};
-constexpr std::array kOptions = {kSolverOption};
+constexpr std::array<std::string_view, 1> kLinearizedImplicitEulerAliases = {"linearized-implicit"};
+constexpr std::array kLinearizedImplicitEulerOptionSpecs = {kSolverOption};
 }  // namespace
 
 constinit const IntegratorMethod kLinearizedImplicitEulerMethod{
     .name = "linearized-implicit-euler",
-    .aliases = kAliases,
+    .aliases = kLinearizedImplicitEulerAliases,
     .summary = "one Newton step of implicit Euler from the predicted position (Baraff-Witkin)",
-    .options = kOptions,
+    .options = kLinearizedImplicitEulerOptionSpecs,
     .properties = {.order = 1,
                    .course_reference = true,
                    .implicit = true,

@@ -26,7 +26,7 @@ void LinearlyImplicitEuler::advance(State& state) {
 
 namespace {
 constexpr std::array<std::string_view, 2> kHessians = {"exact", "projected"};
-constexpr std::array kOptions = {
+constexpr std::array kLinearlyImplicitEulerOptionSpecs = {
     OptionSpec::choice("hessian", kHessians,
                        "\"projected\" drops compressed springs' negative transverse stiffness, "
                        "so the step matrix stays positive definite"),
@@ -38,7 +38,7 @@ constinit const IntegratorMethod kLinearlyImplicitEulerMethod{
     .name = "linearly-implicit-euler",
     .aliases = {},
     .summary = "one linear solve at the current state, fixed particles eliminated (CSC417 a2)",
-    .options = kOptions,
+    .options = kLinearlyImplicitEulerOptionSpecs,
     .properties = {.order = 1, .implicit = true, .energy = EnergyTrend::kDecays},
     .create = [](const OptionValues& options, int) -> std::unique_ptr<Integrator> {
       return std::make_unique<LinearlyImplicitEuler>(options.choice("hessian") == "projected",

@@ -350,20 +350,20 @@ template class LocalGlobal<2>;
 template class LocalGlobal<3>;
 
 namespace {
-constexpr std::array<std::string_view, 1> kAliases = {"fast-mass-springs"};
+constexpr std::array<std::string_view, 1> kLocalGlobalAliases = {"fast-mass-springs"};
 constexpr std::array<std::string_view, 2> kStarts = {"inertial", "current"};
 constexpr std::array<std::string_view, 2> kPins = {"elimination", "penalty"};
 constexpr std::array<std::string_view, 3> kSolvers = {"auto", "dense", "sparse"};
-constexpr LocalGlobalSettings kDefaults;
-constexpr IntegratorProperties kProperties = {
+constexpr LocalGlobalSettings kLocalGlobalDefaults;
+constexpr IntegratorProperties kLocalGlobalProperties = {
     .order = 1, .implicit = true, .velocity_from_positions = true, .energy = EnergyTrend::kDecays};
 constexpr std::array<std::string_view, 2> kAccelerations = {"anderson", "chebyshev"};
 constexpr std::array<std::string_view, 1> kAcceleratedAliases = {"anderson-local-global"};
 constexpr OptionSpec kIterationsOption =
-    OptionSpec::integer("iterations", kDefaults.iterations, 1, 1000000,
+    OptionSpec::integer("iterations", kLocalGlobalDefaults.iterations, 1, 1000000,
                         "local/global iterations per step (at most, with a tolerance)");
 constexpr OptionSpec kToleranceOption =
-    OptionSpec::number("tolerance", kDefaults.tolerance, 0.0, /*excluded=*/false,
+    OptionSpec::number("tolerance", kLocalGlobalDefaults.tolerance, 0.0, /*excluded=*/false,
                        "stop iterating once no coordinate moves more than this (m); 0: never");
 constexpr OptionSpec kStartOption =
     OptionSpec::choice("start", kStarts,
@@ -374,14 +374,15 @@ constexpr OptionSpec kPinsOption =
                        "fixed particles: removed from the system (exact), or held by penalty "
                        "springs as in Liu et al. 2013");
 constexpr OptionSpec kPenaltyOption =
-    OptionSpec::number("penalty", kDefaults.penalty_weight, 0.0, /*excluded=*/true,
+    OptionSpec::number("penalty", kLocalGlobalDefaults.penalty_weight, 0.0, /*excluded=*/true,
                        "stiffness w of penalty pins (N/m)");
 constexpr OptionSpec kSolverChoiceOption =
     OptionSpec::choice("solver", kSolvers,
                        "factorization of the constant matrix: dense up to 64 free particles "
                        "(auto), dense, or sparse");
-constexpr std::array kOptions = {kIterationsOption, kToleranceOption, kStartOption,
-                                 kPinsOption,       kPenaltyOption,   kSolverChoiceOption};
+constexpr std::array kLocalGlobalOptionSpecs = {kIterationsOption, kToleranceOption,
+                                                kStartOption,      kPinsOption,
+                                                kPenaltyOption,    kSolverChoiceOption};
 constexpr std::array kAcceleratedOptions = {
     kIterationsOption,
     kToleranceOption,
@@ -392,9 +393,9 @@ constexpr std::array kAcceleratedOptions = {
     OptionSpec::choice("acceleration", kAccelerations,
                        "anderson (Peng et al. 2018, energy safeguarded, the default) or "
                        "chebyshev (Wang 2015, needs rho)"),
-    OptionSpec::integer("window", kDefaults.window, 1, 100,
+    OptionSpec::integer("window", kLocalGlobalDefaults.window, 1, 100,
                         "anderson: how many recent iterates are combined"),
-    OptionSpec::number("rho", kDefaults.rho, 0.0, /*excluded=*/true,
+    OptionSpec::number("rho", kLocalGlobalDefaults.rho, 0.0, /*excluded=*/true,
                        "chebyshev: the spectral radius of the plain iteration, below 1"),
 };
 
@@ -429,10 +430,10 @@ LocalGlobalSettings local_global_settings(const OptionValues& options) {
 
 constinit const IntegratorMethod kLocalGlobalMethod{
     .name = "local-global",
-    .aliases = kAliases,
+    .aliases = kLocalGlobalAliases,
     .summary = "implicit Euler for springs by local/global iterations (Liu et al. 2013)",
-    .options = kOptions,
-    .properties = kProperties,
+    .options = kLocalGlobalOptionSpecs,
+    .properties = kLocalGlobalProperties,
     .create = &make_local_global,
 };
 
@@ -443,7 +444,7 @@ constinit const IntegratorMethod kAcceleratedLocalGlobalMethod{
         "local/global iterations with Anderson acceleration (Peng et al. 2018): the same "
         "step, reached in fewer iterations",
     .options = kAcceleratedOptions,
-    .properties = kProperties,
+    .properties = kLocalGlobalProperties,
     .create = &make_local_global,
 };
 

@@ -164,12 +164,12 @@ void Newton::advance(State& state) {
 }
 
 namespace {
-constexpr NewtonOptions kDefaults;
+constexpr NewtonOptions kNewtonDefaults;
 constexpr std::array<std::string_view, 3> kHessianChoices = {"adaptive", "projected", "exact"};
-constexpr std::array kOptions = {
-    OptionSpec::number("tolerance", kDefaults.tolerance, 0.0, /*excluded=*/true,
+constexpr std::array kNewtonOptionSpecs = {
+    OptionSpec::number("tolerance", kNewtonDefaults.tolerance, 0.0, /*excluded=*/true,
                        "stop once a correction is this small relative to the velocities"),
-    OptionSpec::integer("max-iterations", kDefaults.max_iterations, 1, 1000000,
+    OptionSpec::integer("max-iterations", kNewtonDefaults.max_iterations, 1, 1000000,
                         "a step that has not converged after this many iterations fails"),
     kSolverOption,
     OptionSpec::choice(
@@ -195,7 +195,7 @@ constinit const IntegratorMethod kNewtonMethod{
     .summary =
         "implicit Euler solved to round-off by Newton's method with line searches, "
         "fixed particles eliminated (the reference for meshes)",
-    .options = kOptions,
+    .options = kNewtonOptionSpecs,
     .properties = {.order = 1, .implicit = true, .energy = EnergyTrend::kDecays},
     .create = [](const OptionValues& options, int) -> std::unique_ptr<Integrator> {
       return std::make_unique<Newton>(

@@ -124,26 +124,26 @@ void QuasiNewton::advance(State& state) {
 }
 
 namespace {
-constexpr std::array<std::string_view, 1> kAliases = {"lbfgs"};
-constexpr QuasiNewtonOptions kDefaults;
-constexpr std::array kOptions = {
-    OptionSpec::integer("iterations", kDefaults.iterations, 1, 1000000,
+constexpr std::array<std::string_view, 1> kQuasiNewtonAliases = {"lbfgs"};
+constexpr QuasiNewtonOptions kQuasiNewtonDefaults;
+constexpr std::array kQuasiNewtonOptionSpecs = {
+    OptionSpec::integer("iterations", kQuasiNewtonDefaults.iterations, 1, 1000000,
                         "L-BFGS iterations per step, at most"),
-    OptionSpec::number("tolerance", kDefaults.tolerance, 0.0, /*excluded=*/false,
+    OptionSpec::number("tolerance", kQuasiNewtonDefaults.tolerance, 0.0, /*excluded=*/false,
                        "stop once a correction is this small relative to the velocities; 0: "
                        "always take all iterations"),
-    OptionSpec::integer("history", kDefaults.history, 1, 1000,
+    OptionSpec::integer("history", kQuasiNewtonDefaults.history, 1, 1000,
                         "pairs of steps and gradient changes L-BFGS keeps"),
 };
 }  // namespace
 
 constinit const IntegratorMethod kQuasiNewtonMethod{
     .name = "quasi-newton",
-    .aliases = kAliases,
+    .aliases = kQuasiNewtonAliases,
     .summary =
         "implicit Euler by L-BFGS with the local/global matrix as initial Hessian "
         "(Liu et al. 2017)",
-    .options = kOptions,
+    .options = kQuasiNewtonOptionSpecs,
     .properties = {.order = 1, .implicit = true, .energy = EnergyTrend::kDecays},
     .create = [](const OptionValues& options, int) -> std::unique_ptr<Integrator> {
       return std::make_unique<QuasiNewton>(QuasiNewtonOptions{

@@ -17,13 +17,13 @@ void SymplecticEuler::advance(State& state) {
 }
 
 namespace {
-constexpr std::array<std::string_view, 2> kAliases = {"forward-backward-euler",
-                                                      "semi-implicit-euler"};
+constexpr std::array<std::string_view, 2> kSymplecticEulerAliases = {"forward-backward-euler",
+                                                                     "semi-implicit-euler"};
 }  // namespace
 
 constinit const IntegratorMethod kSymplecticEulerMethod{
     .name = "symplectic-euler",
-    .aliases = kAliases,
+    .aliases = kSymplecticEulerAliases,
     .summary = "symplectic (forward-backward) Euler: velocity first, then position",
     .properties = {.order = 1, .course_reference = true, .energy = EnergyTrend::kBounded},
     .create = [](const OptionValues&, int) -> std::unique_ptr<Integrator> {

@@ -57,22 +57,27 @@ namespace {
 
 /// The columns of J, sparse (a contact touches at most two bodies: six coordinates).
 struct SparseColumns {
-  std::vector<std::vector<std::pair<int, double>>> columns;
+  std::vector<std::vector<std::pair<int, double>>> own;  // when made from a dense J
+  const std::vector<std::vector<std::pair<int, double>>>* columns;
 
-  explicit SparseColumns(const Eigen::MatrixXd& J) : columns(J.cols()) {
+  explicit SparseColumns(const ContactProblem& problem) : columns(&problem.J_columns) {
+    if (!problem.J_columns.empty()) return;
+    const Eigen::MatrixXd& J = problem.J;
+    own.resize(J.cols());
     for (int c = 0; c < J.cols(); ++c) {
       for (int i = 0; i < J.rows(); ++i) {
-        if (J(i, c) != 0.0) columns[c].emplace_back(i, J(i, c));
+        if (J(i, c) != 0.0) own[c].emplace_back(i, J(i, c));
       }
     }
+    columns = &own;
   }
   double dot(int c, const Vector& x) const {
     double sum = 0.0;
-    for (const auto& [i, value] : columns[c]) sum += value * x[i];
+    for (const auto& [i, value] : (*columns)[c]) sum += value * x[i];
     return sum;
   }
   void add(int c, double factor, Vector& x) const {
-    for (const auto& [i, value] : columns[c]) x[i] += factor * value;
+    for (const auto& [i, value] : (*columns)[c]) x[i] += factor * value;
   }
 };
 
@@ -81,7 +86,13 @@ struct SparseColumns {
 /// QR), a column is removed with Givens rotations.
 class ActiveFactor {
  public:
-  explicit ActiveFactor(int capacity) : r_(capacity, capacity) {}
+  /// Room for `capacity` active columns at most. Up to kFullStorage columns the storage is
+  /// allocated at once (so small problems keep one layout, and their round-off); beyond, it
+  /// grows as columns join (n² doubles of 14,000 contacts are 1.5 GB).
+  static constexpr int kFullStorage = 1024;
+  explicit ActiveFactor(int capacity)
+      : capacity_(capacity),
+        r_(std::min(capacity, kFullStorage), std::min(capacity, kFullStorage)) {}
   int size() const { return s_; }
 
   /// Solves RᵀR x = d in place.
@@ -94,10 +105,18 @@ class ActiveFactor {
   /// Appends a column whose least-squares coefficients on the active columns are `coefficients`
   /// and whose remainder has length `remainder`.
   void append(const Vector& coefficients, double remainder) {
-    for (int i = 0; i < s_; ++i) {
-      double sum = 0.0;
-      for (int j = i; j < s_; ++j) sum += r_(i, j) * coefficients[j];
-      r_(i, s_) = sum;
+    if (s_ == r_.rows()) {  // grow (the values of the top-left block are kept)
+      const int grown = std::min(capacity_, 2 * static_cast<int>(r_.rows()));
+      r_.conservativeResizeLike(Eigen::MatrixXd::Zero(grown, grown));
+    }
+    // The new column is R times the coefficients: row i sums r_ij c_j for j = i, i + 1, ...
+    // in that order; the loop runs down R's columns (contiguous) with one running sum per
+    // row, which is the same order of additions as a sum along each row, bit for bit.
+    auto column = r_.col(s_).head(s_);
+    column.setZero();
+    for (int j = 0; j < s_; ++j) {
+      const double c = coefficients[j];
+      for (int i = 0; i <= j; ++i) column[i] += r_(i, j) * c;
     }
     for (int i = s_ + 1; i < r_.rows(); ++i) r_(i, s_) = 0.0;
     r_(s_, s_) = remainder;
@@ -122,6 +141,7 @@ class ActiveFactor {
   }
 
  private:
+  int capacity_;
   Eigen::MatrixXd r_;
   int s_ = 0;
 };
@@ -133,8 +153,8 @@ Vector solve_contact_qp(const ContactProblem& problem, int max_iterations) {
   const int n = static_cast<int>(b.size());
   Vector lambda = Vector::Zero(n);
   if (n == 0) return lambda;
-  const SparseColumns J(problem.J);
-  const int dofs = static_cast<int>(problem.J.rows());
+  const SparseColumns J(problem);
+  const int dofs = static_cast<int>(problem.J_columns.empty() ? problem.J.rows() : problem.J_rows);
   const double scale = std::max(1.0, b.cwiseAbs().maxCoeff());
   // A contact is violated below −tol; one that depends on the active ones and cannot be
   // reached by drops is accepted when within −loose (round-off of the dependence).

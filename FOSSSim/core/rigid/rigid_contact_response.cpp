@@ -1,16 +1,15 @@
 #include "core/rigid/rigid_contact_response.h"
 
 #include <algorithm>
-#include <numeric>
 #include <sstream>
+#include <unordered_map>
+#include <utility>
 
 #include "core/solvers/solver_failure.h"
 
 namespace fosssim {
 
 namespace {
-
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 /// Index of the representative of x, with path halving.
 int find_root(std::vector<int>& parent, int x) {
@@ -45,48 +44,92 @@ void check_normals(const RigidBodies& bodies, const std::vector<RigidContact>& c
   }
 }
 
-/// A = NᵀM⁻¹N and b of `contacts` (with their columns).
+/// The entry A_ij = η_iᵀM⁻¹η_j of two contacts (zero unless they share a free body).
+double normal_matrix_entry(const RigidBodies& bodies, const ContactColumn& ci,
+                           const ContactColumn& cj) {
+  double a = 0.0;
+  for (int k = 0; k < 2; ++k) {
+    for (int l = 0; l < 2; ++l) {
+      if (ci.body[k] >= 0 && ci.body[k] == cj.body[l]) {
+        a += ci.entries[k].cwiseProduct(inverse_mass(bodies, ci.body[k])).dot(cj.entries[l]);
+      }
+    }
+  }
+  return a;
+}
+
+/// What assemble builds besides b and the sparse columns of J.
+enum class Assembly {
+  kSparse,  ///< J_columns only: what the QP reads
+  kLcp,     ///< also the dense A, for the degeneracy test and Dantzig's method
+  kDense,   ///< also the dense A and J (assemble_contact_problem, for tests)
+};
+
+/// The problem of `contacts` (with their columns): b, J's columns over the group's free bodies
+/// (numbered in order of appearance) and, as `assembly` asks, A = NᵀM⁻¹N and J densely. A
+/// contact's entries in A are computed only with the contacts sharing a body with it (the
+/// others are zero), so the cost is the group's size times its contacts per body, besides
+/// clearing a dense A.
 ContactProblem assemble(ContactSolver solver, const RigidBodies& bodies, const Vector& q,
                         const Vector& v, const std::vector<const RigidContact*>& contacts,
-                        const std::vector<const ContactColumn*>& columns) {
+                        const std::vector<const ContactColumn*>& columns, Assembly assembly) {
   const int m = static_cast<int>(contacts.size());
   ContactProblem problem;
-  problem.A = Eigen::MatrixXd::Zero(m, m);
   problem.b.resize(m);
-  // J = M^(−1/2)N over the group's free bodies, numbered in order of appearance.
-  std::vector<int> local;
-  for (const ContactColumn* column : columns) {
-    for (int b : column->body) {
-      if (b >= 0 && std::find(local.begin(), local.end(), b) == local.end()) local.push_back(b);
-    }
-  }
-  problem.J = Eigen::MatrixXd::Zero(3 * static_cast<int>(local.size()), m);
+  // The group's free bodies in order of appearance, and the contacts on each.
+  std::unordered_map<int, int> local;
+  std::vector<std::vector<int>> contacts_of;
   for (int i = 0; i < m; ++i) {
-    for (int k = 0; k < 2; ++k) {
-      const int b = columns[i]->body[k];
+    for (int b : columns[i]->body) {
       if (b < 0) continue;
-      const int at = static_cast<int>(std::find(local.begin(), local.end(), b) - local.begin());
-      problem.J.block<3, 1>(3 * at, i) +=
-          columns[i]->entries[k].cwiseProduct(inverse_mass(bodies, b).cwiseSqrt());
+      const auto [it, added] = local.emplace(b, static_cast<int>(contacts_of.size()));
+      if (added) contacts_of.emplace_back();
+      contacts_of[it->second].push_back(i);
     }
   }
+  // J = M^(−1/2)N, each column's entries in increasing row order (a contact's two bodies by
+  // their local numbers), exact zeros left out.
+  problem.J_rows = 3 * static_cast<int>(contacts_of.size());
+  problem.J_columns.resize(m);
   for (int i = 0; i < m; ++i) {
+    int order[2] = {0, 1};
     const ContactColumn& ci = *columns[i];
-    for (int j = 0; j < m; ++j) {
-      const ContactColumn& cj = *columns[j];
-      double a = 0.0;
-      for (int k = 0; k < 2; ++k) {
-        for (int l = 0; l < 2; ++l) {
-          if (ci.body[k] >= 0 && ci.body[k] == cj.body[l]) {
-            a += ci.entries[k].cwiseProduct(inverse_mass(bodies, ci.body[k])).dot(cj.entries[l]);
-          }
+    if (ci.body[0] >= 0 && ci.body[1] >= 0 && local.at(ci.body[1]) < local.at(ci.body[0])) {
+      std::swap(order[0], order[1]);
+    }
+    for (int k : order) {
+      const int b = ci.body[k];
+      if (b < 0) continue;
+      const Vec<3> entry = ci.entries[k].cwiseProduct(inverse_mass(bodies, b).cwiseSqrt());
+      for (int r = 0; r < 3; ++r) {
+        if (entry[r] != 0.0) problem.J_columns[i].emplace_back(3 * local.at(b) + r, entry[r]);
+      }
+    }
+  }
+  if (assembly == Assembly::kDense) {
+    problem.J = Eigen::MatrixXd::Zero(problem.J_rows, m);
+    for (int i = 0; i < m; ++i) {
+      for (const auto& [row, value] : problem.J_columns[i]) problem.J(row, i) = value;
+    }
+  }
+  if (assembly != Assembly::kSparse) {
+    problem.A = Eigen::MatrixXd::Zero(m, m);
+    std::vector<int> seen(m, -1);
+    for (int i = 0; i < m; ++i) {
+      for (int b : columns[i]->body) {
+        if (b < 0) continue;
+        for (int j : contacts_of[local.at(b)]) {
+          if (seen[j] == i) continue;  // shares both bodies with i: done
+          seen[j] = i;
+          problem.A(i, j) = normal_matrix_entry(bodies, *columns[i], *columns[j]);
         }
       }
-      problem.A(i, j) = a;
     }
+  }
+  for (int i = 0; i < m; ++i) {
     problem.b[i] = solver == ContactSolver::kLcp
                        ? contact_normal_velocity(bodies, q, v, *contacts[i])
-                       : free_normal_velocity(ci, v);
+                       : free_normal_velocity(*columns[i], v);
   }
   return problem;
 }
@@ -105,7 +148,7 @@ ContactProblem assemble_contact_problem(ContactSolver solver, const RigidBodies&
     members.push_back(&contacts[c]);
     member_columns.push_back(&columns[c]);
   }
-  return assemble(solver, bodies, q, v, members, member_columns);
+  return assemble(solver, bodies, q, v, members, member_columns, Assembly::kDense);
 }
 
 ContactColumn contact_column(const RigidBodies& bodies, const Vector& q,
@@ -141,33 +184,41 @@ void apply_inelastic_response(ContactSolver solver, const RigidBodies& bodies, c
                               const std::vector<RigidContact>& contacts, Vector& v,
                               ContactReport& report, int max_group_contacts) {
   check_normals(bodies, contacts);
-  const int nb = bodies.size();
   // Groups: free bodies joined by contacts; a contact belongs to its free bodies' group.
-  std::vector<int> parent(nb);
-  std::iota(parent.begin(), parent.end(), 0);
+  // The free bodies of the contacts, numbered in order of appearance (so that the work is
+  // proportional to the contacts, not to the scene's bodies: generalized reflections call this
+  // once per reflection with the few contacts still approaching).
+  std::unordered_map<int, int> node_of;
+  std::vector<int> parent;
+  const auto node = [&](int body) {
+    const auto [it, added] = node_of.emplace(body, static_cast<int>(parent.size()));
+    if (added) parent.push_back(it->second);
+    return it->second;
+  };
   std::vector<ContactColumn> columns;
   std::vector<int> kept;  // indices into contacts
   for (int c = 0; c < static_cast<int>(contacts.size()); ++c) {
     ContactColumn column = contact_column(bodies, q, contacts[c]);
     if (column.body[0] < 0 && column.body[1] < 0) continue;  // two fixed bodies
+    for (int b : column.body) {
+      if (b >= 0) node(b);
+    }
     if (column.body[0] >= 0 && column.body[1] >= 0) {
-      parent[find_root(parent, column.body[0])] = find_root(parent, column.body[1]);
+      parent[find_root(parent, node(column.body[0]))] = find_root(parent, node(column.body[1]));
     }
     columns.push_back(column);
     kept.push_back(c);
   }
   const int n = static_cast<int>(columns.size());
-  std::vector<int> group_of(n), group_root;
+  std::vector<int> group_of_root(parent.size(), -1);  // groups in order of their first contact
   std::vector<std::vector<int>> groups;
   for (int c = 0; c < n; ++c) {
-    const int root = find_root(parent, columns[c].body[columns[c].body[0] >= 0 ? 0 : 1]);
-    auto it = std::find(group_root.begin(), group_root.end(), root);
-    if (it == group_root.end()) {
-      group_root.push_back(root);
+    const int root = find_root(parent, node(columns[c].body[columns[c].body[0] >= 0 ? 0 : 1]));
+    if (group_of_root[root] < 0) {
+      group_of_root[root] = static_cast<int>(groups.size());
       groups.emplace_back();
-      it = group_root.end() - 1;
     }
-    groups[it - group_root.begin()].push_back(c);
+    groups[group_of_root[root]].push_back(c);
   }
   for (const std::vector<int>& group : groups) {
     ++report.groups;
@@ -186,7 +237,9 @@ void apply_inelastic_response(ContactSolver solver, const RigidBodies& bodies, c
       members.push_back(&contacts[kept[c]]);
       member_columns.push_back(&columns[c]);
     }
-    const ContactProblem problem = assemble(solver, bodies, q, v, members, member_columns);
+    const ContactProblem problem =
+        assemble(solver, bodies, q, v, members, member_columns,
+                 solver == ContactSolver::kLcp ? Assembly::kLcp : Assembly::kSparse);
     Vector lambda;
     if (solver == ContactSolver::kLcp) {
       std::string reason;
@@ -237,6 +290,8 @@ void apply_generalized_reflections(ContactSolver solver, const RigidBodies& bodi
   std::vector<ContactColumn> columns;
   for (const RigidContact& c : contacts) columns.push_back(contact_column(bodies, q, c));
   std::vector<RigidContact> approaching;
+  Vector inelastic = v;  // equal to v outside the bodies of each reflection's contacts
+  std::vector<int> touched;
   while (true) {
     approaching.clear();
     for (std::size_t c = 0; c < contacts.size(); ++c) {
@@ -258,11 +313,22 @@ void apply_generalized_reflections(ContactSolver solver, const RigidBodies& bodi
     }
     cancellation.check();
     ++report.reflections;
-    Vector inelastic = v;
+    // Only the free bodies of the approaching contacts change: for every other body the
+    // inelastic velocity is v itself and 2v − v = v exactly, so the reflection is applied to
+    // those bodies alone, and `inelastic` (equal to v elsewhere) is kept between reflections
+    // instead of copied: a reflection costs its contacts, not the scene's bodies.
+    touched.clear();
+    for (const RigidContact& c : approaching) {
+      for (int b : {c.i0, c.i1}) {
+        if (!bodies.bodies[b].fixed) touched.push_back(b);
+      }
+    }
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     apply_inelastic_response(solver, bodies, q, approaching, inelastic, report, max_group_contacts);
-    for (int b = 0; b < bodies.size(); ++b) {
-      if (bodies.bodies[b].fixed) continue;
+    for (int b : touched) {
       v.segment<3>(3 * b) = 2.0 * inelastic.segment<3>(3 * b) - v.segment<3>(3 * b);
+      inelastic.segment<3>(3 * b) = v.segment<3>(3 * b);
     }
   }
 }

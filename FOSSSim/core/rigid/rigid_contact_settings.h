@@ -3,11 +3,10 @@
 
 namespace fosssim {
 
-struct RigidContactMethod;  // core/rigid/rigid_contact_method.h
-
+/// FOSSSim's limits of rigid-body contact. The response itself is the scene's contact method,
+/// model.collisions.method (an entry of core/collisions/contact_registry.h; "none" when the
+/// scene has no <rigidbodycollisionhandling>).
 struct RigidContactSettings {
-  /// The response; null when the scene has no <rigidbodycollisionhandling> (no contact).
-  const RigidContactMethod* method = nullptr;
   /// Generalized reflections: the most reflections one step may take (the course's loop has no
   /// limit and never ends when a fixed body declares a velocity into a resting body). FOSSSim's
   /// own attribute maxreflections="..." raises it.

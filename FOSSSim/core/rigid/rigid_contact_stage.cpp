@@ -1,13 +1,23 @@
 #include "core/rigid/rigid_contact_stage.h"
 
 #include <iostream>
+#include <stdexcept>
 #include <utility>
+
+#include "core/rigid/rigid_bodies.h"
+#include "core/scene_model.h"
 
 namespace fosssim {
 
-RigidContactStage::RigidContactStage(const SceneModel& model, const RigidContactMethod& method,
-                                     const RigidContactSettings& settings, ContactWarningSink warn)
-    : model_(&model), method_(&method), settings_(settings), warn_(std::move(warn)) {
+RigidContactStage::RigidContactStage(const SceneModel& model, const ContactMethod& method,
+                                     ContactWarningSink warn)
+    : model_(&model), method_(&method), warn_(std::move(warn)) {
+  if (method.rigid_response == nullptr || !model.rigid_bodies) {
+    throw std::logic_error("contact method \"" + std::string(method.name) +
+                           "\" has no rigid-body stage for this model");
+  }
+  response_ = *method.rigid_response;
+  settings_ = model.rigid_bodies->contact;
   if (!warn_) {
     warn_ = [](const std::string& line) { std::cerr << line << "\n"; };
   }
@@ -19,12 +29,12 @@ void RigidContactStage::apply(const StepContext& context, State& state) {
   report_ = ContactReport{};
   report_.contacts = static_cast<int>(contacts.size());
   if (contacts.empty()) return;
-  if (method_->generalized_reflections) {
-    apply_generalized_reflections(method_->solver, bodies, state.q, contacts,
+  if (response_.generalized_reflections) {
+    apply_generalized_reflections(response_.solver, bodies, state.q, contacts,
                                   settings_.max_reflections, state.v, report_, context.cancellation,
                                   settings_.max_group_contacts);
   } else {
-    apply_inelastic_response(method_->solver, bodies, state.q, contacts, state.v, report_,
+    apply_inelastic_response(response_.solver, bodies, state.q, contacts, state.v, report_,
                              settings_.max_group_contacts);
   }
   context.cancellation.check();
@@ -38,11 +48,54 @@ void RigidContactStage::apply(const StepContext& context, State& state) {
   }
 }
 
-std::unique_ptr<StepStage> create_rigid_contact_stage(const SceneModel& model,
-                                                      const RigidContactMethod& method,
-                                                      const RigidContactSettings& settings,
-                                                      ContactWarningSink warn) {
-  return std::make_unique<RigidContactStage>(model, method, settings, std::move(warn));
+namespace {
+
+/// Every entry's ContactMethod::make_stage: the stage of model.collisions' method.
+std::unique_ptr<StepStage> make_rigid_stage(const SceneModel& model) {
+  return std::make_unique<RigidContactStage>(model, *model.collisions.method);
 }
+
+constexpr RigidResponse kLcp{ContactSolver::kLcp, false};
+constexpr RigidResponse kVelocityProjection{ContactSolver::kVelocityProjection, false};
+constexpr RigidResponse kGrLcp{ContactSolver::kLcp, true};
+constexpr RigidResponse kGrVelocityProjection{ContactSolver::kVelocityProjection, true};
+
+}  // namespace
+
+// All four are the course's own methods: their trajectories match its program to round-off on
+// non-degenerate contact (docs/rigid-bodies.md, "What is course-compatible").
+
+constinit const ContactMethod kLcpContactMethod{
+    .name = "lcp",
+    .summary = "inelastic contact: the LCP w = Aλ + b ≥ 0, λ ≥ 0, λᵀw = 0 (ODE's Dantzig solver)",
+    .scope = kPlanarRigidBodies,
+    .make_stage = &make_rigid_stage,
+    .rigid_response = &kLcp,
+};
+
+constinit const ContactMethod kVelocityProjectionContactMethod{
+    .name = "velocity-projection",
+    .summary = "inelastic contact: the closest velocities in the kinetic metric that no contact "
+               "approaches",
+    .scope = kPlanarRigidBodies,
+    .make_stage = &make_rigid_stage,
+    .rigid_response = &kVelocityProjection,
+};
+
+constinit const ContactMethod kGrLcpContactMethod{
+    .name = "gr-lcp",
+    .summary = "elastic contact: generalized reflections, each solved as an LCP",
+    .scope = kPlanarRigidBodies,
+    .make_stage = &make_rigid_stage,
+    .rigid_response = &kGrLcp,
+};
+
+constinit const ContactMethod kGrVelocityProjectionContactMethod{
+    .name = "gr-velocity-projection",
+    .summary = "elastic contact: generalized reflections, each solved as a velocity projection",
+    .scope = kPlanarRigidBodies,
+    .make_stage = &make_rigid_stage,
+    .rigid_response = &kGrVelocityProjection,
+};
 
 }  // namespace fosssim

@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "core/collisions/collision_stages.h"
-#include "core/rigid/rigid_contact_method.h"
+#include "core/collisions/contact_registry.h"
 #include "core/solvers/solver_failure.h"
 #include "core/step_error.h"
 
@@ -15,11 +14,8 @@ StepPipeline::StepPipeline(const SceneModel& model, StepAdditions additions)
       integrator_(make_integrator(model, std::move(additions.interaction_forces))),
       cancellation_(additions.cancellation) {
   integrator_->set_cancellation(cancellation_);
-  if (auto collisions = make_collision_stage(model)) {
+  if (auto collisions = make_contact_stage(model)) {
     add_stage(StagePhase::kResponse, std::move(collisions));
-  }
-  if (auto contact = make_rigid_contact_stage(model)) {  // rigid bodies (core/rigid/)
-    add_stage(StagePhase::kResponse, std::move(contact));
   }
   for (auto& [phase, stage] : additions.stages) add_stage(phase, std::move(stage));
 }

@@ -37,7 +37,8 @@ struct StepAdditions {
 class StepPipeline {
  public:
   /// Makes and precomputes the model's integrator (make_integrator) and adds the model's
-  /// collision handling, if it has a response stage (core/collisions/collision_stages.h);
+  /// contact method's response stage, if it has one (make_contact_stage,
+  /// core/collisions/contact_registry.h);
   /// `model` must outlive the pipeline, and so must the interaction forces of `additions`.
   explicit StepPipeline(const SceneModel& model, StepAdditions additions = {});
 

@@ -27,12 +27,12 @@ constexpr double kFloor = -0.3;  // the half-space y ≤ kFloor, under the spher
 
 /// A free 6 × 6 cloth (1 m square, 0.1 kg) lying flat at height y0 over z ∈ [0, 1], on a floor
 /// at y = kFloor, with the sphere under its middle when `sphere`.
-TestScene cloth_over(const IntegratorMethod& method, CollisionMethod collisions, bool sphere,
+TestScene cloth_over(const IntegratorMethod& method, const ContactMethod* collisions, bool sphere,
                      double y0) {
   // Explicit methods need a step well below the springs' period; implicit ones take 10× more,
   // but for simple impulses, which change no positions: a draped cloth's tension pushes its
   // vertices into the sphere by about h² a every step, 100 times more at 10 times the step.
-  const bool small_step = !method.properties.implicit || collisions == CollisionMethod::kSimple;
+  const bool small_step = !method.properties.implicit || collisions == &contact_method("simple");
   const double dt = small_step ? 5e-4 : 5e-3;
   TestScene scene = testing::cloth(6, 20.0, method.name, dt, /*horizontal=*/true, "none", 0.01);
   for (int p = 0; p < scene.model.num_particles(); ++p) scene.initial.q[3 * p + 1] += y0;
@@ -73,7 +73,7 @@ Clearance run(TestScene& scene) {
 }
 
 struct Case {
-  CollisionMethod collisions;
+  const ContactMethod* collisions;
   /// The least clearance allowed, as a fraction of the vertex radius: penalty contact lets
   /// objects sink in by m g / k (here far less than the thickness); simple impulses change no
   /// positions, so resting vertices creep in by about h² a per step.
@@ -81,14 +81,13 @@ struct Case {
 };
 
 TEST(ClothContact, ClothOnAFloorAndOnASphereDoesNotPassThroughUnderEvery3DIntegrator) {
-  const Case cases[] = {{CollisionMethod::kPenalty, 0.9},
-                        {CollisionMethod::kContinuousTime, 0.9},
-                        {CollisionMethod::kSimple, 0.1}};
+  const Case cases[] = {{&contact_method("penalty"), 0.9},
+                        {&contact_method("continuous-time"), 0.9},
+                        {&contact_method("simple"), 0.1}};
   for (const IntegratorMethod* method : integrator_methods()) {
     if (!method->properties.runs_3d) continue;
     for (const Case& c : cases) {
-      const std::string what =
-          std::string(method->name) + ", " + std::string(collision_method_name(c.collisions));
+      const std::string what = std::string(method->name) + ", " + std::string(c.collisions->name);
       // Dropped from 0.2 m above the floor.
       TestScene flat = cloth_over(*method, c.collisions, false, kFloor + kRadius + 0.2);
       const Clearance on_floor = run(flat);
@@ -101,9 +100,8 @@ TEST(ClothContact, ClothOnAFloorAndOnASphereDoesNotPassThroughUnderEvery3DIntegr
       EXPECT_GT(on_sphere.floor, c.least * kRadius) << what << ": floor under the sphere";
       EXPECT_LT(on_sphere.sphere, kRadius + kThickness) << what << ": reached the sphere";
       std::printf("%-26s %-16s floor %.4f  sphere %.4f  (vertex radius %.2f)\n",
-                  std::string(method->name).c_str(),
-                  std::string(collision_method_name(c.collisions)).c_str(), on_floor.floor,
-                  on_sphere.sphere, kRadius);
+                  std::string(method->name).c_str(), std::string(c.collisions->name).c_str(),
+                  on_floor.floor, on_sphere.sphere, kRadius);
     }
   }
 }
@@ -118,7 +116,7 @@ TestScene stiff_contact(std::string_view integrator) {
   scene.model.spheres.push_back({vec({0, 0, 2}), 1.0});
   scene.add_simple_gravity(vec({0, -9.8, 0}));
   CollisionSettings& s = scene.model.collisions;
-  s.method = CollisionMethod::kPenalty;
+  s.method = &contact_method("penalty");
   s.stiffness = 1e4;
   s.thickness = 0.01;
   s.penalty_jacobian = PenaltyJacobian::kExact;

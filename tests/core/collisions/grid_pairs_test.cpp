@@ -453,7 +453,7 @@ void check_crowd() {
   EXPECT_TRUE(grid.visits_directly());
   EXPECT_TRUE(same);
   EXPECT_EQ(count, all.size());
-  for (const CollisionMethod method : {CollisionMethod::kPenalty, CollisionMethod::kSimple}) {
+  for (const ContactMethod* method : {&contact_method("penalty"), &contact_method("simple")}) {
     model.collisions.method = method;
     model.collisions.stiffness = 100;
     model.collisions.thickness = 0.01;
@@ -463,8 +463,8 @@ void check_crowd() {
     ASSERT_TRUE(uses_grid_pairs(model));
     const auto [states_grid, records_grid] = simulate(model, scene.initial, 2);
     for (std::size_t k = 0; k < states_all.size(); ++k) {
-      ASSERT_EQ(states_grid[k].q, states_all[k].q) << collision_method_name(method) << " " << k;
-      ASSERT_EQ(states_grid[k].v, states_all[k].v) << collision_method_name(method) << " " << k;
+      ASSERT_EQ(states_grid[k].q, states_all[k].q) << method->name << " " << k;
+      ASSERT_EQ(states_grid[k].v, states_all[k].v) << method->name << " " << k;
       expect_same_records(records_grid[k], records_all[k], "crowd, step " + std::to_string(k));
     }
   }
@@ -476,7 +476,7 @@ TEST(GridPairs, CrowdsPastTheBudgetAreVisitedLikeAllPairsIn3D) { check_crowd<3>(
 
 /// A crowded random scene in a box, stepped with the grid and with all pairs: the states are
 /// equal bit for bit, and so are the collisions found.
-void check_same_simulation(int dim, CollisionMethod method, unsigned seed) {
+void check_same_simulation(int dim, const ContactMethod* method, unsigned seed) {
   constexpr int kSteps = 25;
   TestScene scene = random_scene(dim, seed, 80, 40, 0);
   // Smaller particles, so that the scene is crowded but not jammed, all free (fixed particles
@@ -493,13 +493,12 @@ void check_same_simulation(int dim, CollisionMethod method, unsigned seed) {
   }
   scene.model.collisions.method = method;
   scene.model.collisions.cor = 0.7;
-  if (method == CollisionMethod::kPenalty) {
+  if (method == &contact_method("penalty")) {
     scene.model.collisions.stiffness = 200;
     scene.model.collisions.thickness = 0.02;
   }
-  const std::string what = "dim " + std::to_string(dim) + ", method " +
-                           std::string(collision_method_name(method)) + ", seed " +
-                           std::to_string(seed);
+  const std::string what = "dim " + std::to_string(dim) + ", method " + std::string(method->name) +
+                           ", seed " + std::to_string(seed);
   SceneModel& model = scene.model;
   model.collisions.detection = PairDetection::kAllPairs;
   ASSERT_FALSE(uses_grid_pairs(model));
@@ -518,10 +517,10 @@ void check_same_simulation(int dim, CollisionMethod method, unsigned seed) {
     polynomials_all += records_all[k].polynomials.size();
     polynomials_grid += records_grid[k].polynomials.size();
   }
-  if (method == CollisionMethod::kSimple || method == CollisionMethod::kContinuousTime) {
+  if (method == &contact_method("simple") || method == &contact_method("continuous-time")) {
     EXPECT_GT(collisions, 5);
   }
-  if (method == CollisionMethod::kContinuousTime || method == CollisionMethod::kHybrid) {
+  if (method == &contact_method("continuous-time") || method == &contact_method("hybrid")) {
     // The same responses from far fewer pair tests (hybrid records no collisions).
     EXPECT_GT(polynomials_grid, 0u);
     EXPECT_LT(2 * polynomials_grid, polynomials_all);
@@ -530,13 +529,13 @@ void check_same_simulation(int dim, CollisionMethod method, unsigned seed) {
 
 TEST(GridPairs, SimulationsEqualAllPairsBitForBit) {
   for (const int dim : {2, 3}) {
-    for (const CollisionMethod method :
-         {CollisionMethod::kPenalty, CollisionMethod::kSimple, CollisionMethod::kContinuousTime}) {
+    for (const ContactMethod* method : {&contact_method("penalty"), &contact_method("simple"),
+                                        &contact_method("continuous-time")}) {
       for (unsigned seed = 1; seed <= 2; ++seed) check_same_simulation(dim, method, seed);
     }
   }
   for (unsigned seed = 1; seed <= 2; ++seed) {
-    check_same_simulation(2, CollisionMethod::kHybrid, seed);
+    check_same_simulation(2, &contact_method("hybrid"), seed);
   }
 }
 
@@ -545,14 +544,14 @@ TEST(GridPairs, DefaultIsTheGridWhereResultsAreThoseOfAllPairs) {
   model.collisions.detection = PairDetection::kDefault;
   for (const int dim : {2, 3}) {
     model.dim = dim;
-    for (const CollisionMethod method :
-         {CollisionMethod::kNone, CollisionMethod::kSimple, CollisionMethod::kPenalty,
-          CollisionMethod::kContinuousTime, CollisionMethod::kHybrid}) {
+    for (const ContactMethod* method :
+         {&contact_method("none"), &contact_method("simple"), &contact_method("penalty"),
+          &contact_method("continuous-time"), &contact_method("hybrid")}) {
       model.collisions.method = method;
       const bool logs_every_pair =
-          method == CollisionMethod::kContinuousTime || method == CollisionMethod::kHybrid;
+          method == &contact_method("continuous-time") || method == &contact_method("hybrid");
       EXPECT_EQ(uses_grid_pairs(model), dim == 3 || !logs_every_pair)
-          << dim << "D " << collision_method_name(method);
+          << dim << "D " << method->name;
     }
   }
 }

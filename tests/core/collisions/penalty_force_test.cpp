@@ -31,7 +31,7 @@ TestScene contact_scene(PenaltyJacobian jacobian) {
   scene.add_particle(1, vec({1.0, 0.4}), vec({0, 0}), false, 0.05);
   scene.add_edge(2, 3, 0.1);
   scene.add_half_plane(vec({0, 0}), vec({0, 3}));
-  scene.model.collisions.method = CollisionMethod::kPenalty;
+  scene.model.collisions.method = &contact_method("penalty");
   scene.model.collisions.stiffness = 100.0;
   scene.model.collisions.thickness = 0.05;
   scene.model.collisions.penalty_jacobian = jacobian;
@@ -71,7 +71,7 @@ TEST(PenaltyForce, NothingOutsideRadiiPlusThicknessAndNoForceAtTheBoundary) {
   TestScene scene(2);
   scene.add_particle(1, vec({0, 0}), vec({0, 0}), false, 0.2);
   scene.add_particle(1, vec({0.5, 0}), vec({0, 0}), false, 0.25);  // 0.5 = 0.2 + 0.25 + 0.05
-  scene.model.collisions.method = CollisionMethod::kPenalty;
+  scene.model.collisions.method = &contact_method("penalty");
   scene.model.collisions.thickness = 0.05;
   const Vector F = compute_force(ForceSet(scene.model), scene.initial.q, scene.initial.v);
   EXPECT_EQ(F.norm(), 0.0);
@@ -108,7 +108,7 @@ TEST(PenaltyForce, ExactJacobianMatchesFiniteDifferencesOnRandomContacts) {
     scene.add_particle(1, vec({1, random.uniform(-0.05, 0.05)}), vec({0, 0}), false, 0.05);
     scene.add_edge(2, 3, 0.1);
     scene.add_half_plane(vec({0, -0.1}), random.unit_vector(2) + vec({0, 3}));
-    scene.model.collisions.method = CollisionMethod::kPenalty;
+    scene.model.collisions.method = &contact_method("penalty");
     scene.model.collisions.thickness = 0.05;
     scene.model.collisions.penalty_jacobian = PenaltyJacobian::kExact;
     ForceSet forces(scene.model);
@@ -126,7 +126,7 @@ TestScene stiff_floor(std::string_view integrator, PenaltyJacobian jacobian) {
   scene.add_particle(0.1, vec({0, 0.12}), vec({0, -1}), false, 0.1);
   scene.add_simple_gravity(vec({0, -9.81}));
   scene.add_half_plane(vec({0, 0}), vec({0, 1}));
-  scene.model.collisions.method = CollisionMethod::kPenalty;
+  scene.model.collisions.method = &contact_method("penalty");
   scene.model.collisions.stiffness = 1e5;
   scene.model.collisions.thickness = 0.0;
   scene.model.collisions.penalty_jacobian = jacobian;
@@ -165,7 +165,7 @@ TEST(PenaltyForce, WorkedExampleE2HalfPlaneForceIsTheCoursesToTheLastBit) {
   TestScene scene(2, "symplectic-euler", 1.0);
   scene.add_particle(1, vec({-0.95, -0.85}), vec({0, 0}), false, 0.2);
   scene.add_half_plane(vec({-1, -1}), vec({1, 1}));
-  scene.model.collisions.method = CollisionMethod::kPenalty;
+  scene.model.collisions.method = &contact_method("penalty");
   scene.model.collisions.stiffness = 1000.0;
   scene.model.collisions.thickness = 0.2;
   const State next = testing::run_steps(scene.model, scene.initial, 1);

@@ -37,7 +37,7 @@ TEST(SimpleCollisions, CourseWorkedExampleParticleEdgeWithRestitutionHalf) {
   scene.add_particle(1, vec({-1, 0}), vec({0, 0}), true, 0.1);
   scene.add_particle(3, vec({1, 0}), vec({0, 0}), false, 0.1);
   scene.add_edge(1, 2, 0.1);
-  scene.model.collisions.method = CollisionMethod::kSimple;
+  scene.model.collisions.method = &contact_method("simple");
   scene.model.collisions.cor = 0.5;
   const StepRecord record = step_once(scene);
   EXPECT_EQ(scene.initial.v[1], 0.17035110533159936);
@@ -61,7 +61,7 @@ TEST(SimpleCollisions, TouchingExactlyOrMovingApartIsNotACollision) {
     // Radii 0.5 + 0.25 = 0.75, exactly the distance at the end of the step when vx = 0.
     scene.add_particle(1, vec({0, 0}), vec({vx, 0}), false, 0.5);
     scene.add_particle(1, vec({0.75, 0}), vec({0, 0}), false, 0.25);
-    scene.model.collisions.method = CollisionMethod::kSimple;
+    scene.model.collisions.method = &contact_method("simple");
     const StepRecord record = step_once(scene);
     // vx = 1: overlapping and approaching; 0: touching exactly; -1: overlapping, moving apart.
     EXPECT_EQ(record.collisions.size(), vx > 0.0 ? 1u : 0u) << "vx = " << vx;
@@ -76,7 +76,7 @@ TEST(SimpleCollisions, CentreOnAnEdgeOrABoundaryIsNeverDetected) {
   scene.add_edge(1, 2, 0.1);
   scene.add_half_plane(vec({0, 0}), vec({0, 1}));
   scene.initial.v.setZero();
-  scene.model.collisions.method = CollisionMethod::kSimple;
+  scene.model.collisions.method = &contact_method("simple");
   EXPECT_TRUE(step_once(scene).collisions.empty());
 }
 
@@ -87,7 +87,7 @@ TEST(SimpleCollisions, HalfPlaneDistanceIsUnsigned) {
     TestScene scene(2, "explicit-euler", 0.001);
     scene.add_particle(1, vec({0, -0.05}), vec({0, vy}), false, 0.1);
     scene.add_half_plane(vec({0, 0}), vec({0, 2}));  // the normal's length does not matter
-    scene.model.collisions.method = CollisionMethod::kSimple;
+    scene.model.collisions.method = &contact_method("simple");
     const StepRecord record = step_once(scene);
     if (vy < 0.0) {
       EXPECT_TRUE(record.collisions.empty());
@@ -107,7 +107,7 @@ TEST(SimpleCollisions, GaussSeidelInTheCourseOrderPassesMomentumAlongAChain) {
   scene.add_particle(1, vec({-0.45, 0}), vec({1, 0}), false, 0.25);
   scene.add_particle(1, vec({0, 0}), vec({0, 0}), false, 0.25);
   scene.add_particle(1, vec({0.45, 0}), vec({0, 0}), false, 0.25);
-  scene.model.collisions.method = CollisionMethod::kSimple;
+  scene.model.collisions.method = &contact_method("simple");
   const StepRecord record = step_once(scene);
   ASSERT_EQ(record.collisions.size(), 2u);
   EXPECT_EQ(record.collisions[0].second, 1);
@@ -122,7 +122,7 @@ TEST(SimpleCollisions, FixedParticlesHaveInfiniteMassAndDoNotMove) {
   TestScene scene(2, "explicit-euler", 0.01);
   scene.add_particle(1, vec({0, 0}), vec({1, 0}), false, 0.2);
   scene.add_particle(7, vec({0.35, 0}), vec({0, 0}), true, 0.2);
-  scene.model.collisions.method = CollisionMethod::kSimple;
+  scene.model.collisions.method = &contact_method("simple");
   step_once(scene);
   EXPECT_EQ(scene.initial.v[0], -1.0);  // reflected as from a wall
   EXPECT_EQ(scene.initial.v[1], 0.0);
@@ -246,17 +246,17 @@ TEST(Collisions3D, HalfSpacesParticlesAndEdgesWithEveryMethodButHybrid) {
   // A ball falls onto the half-space z ≤ 0 (normal of length 3) in 3D: simple impulses reflect
   // it; continuous-time catches it even when it would pass the floor within one step; the
   // penalty force pushes it up.
-  for (const CollisionMethod method :
-       {CollisionMethod::kSimple, CollisionMethod::kContinuousTime, CollisionMethod::kPenalty}) {
+  for (const ContactMethod* method : {&contact_method("simple"), &contact_method("continuous-time"),
+                                      &contact_method("penalty")}) {
     TestScene scene(3, "explicit-euler", 0.01);
-    const double speed = method == CollisionMethod::kContinuousTime ? 50.0 : 1.0;
+    const double speed = method == &contact_method("continuous-time") ? 50.0 : 1.0;
     scene.add_particle(1, vec({0.1, -0.2, 0.05}), vec({0.3, 0, -speed}), false, 0.1);
     scene.add_half_plane(vec({0, 0, 0}), vec({0, 0, 3}));
     scene.model.collisions.method = method;
     StepPipeline pipeline(scene.model);
     StepRecord record;
     pipeline.step(scene.initial, &record);
-    if (method == CollisionMethod::kPenalty) {
+    if (method == &contact_method("penalty")) {
       EXPECT_GT(scene.initial.v[2], -speed) << "pushed up";
       continue;
     }
@@ -273,7 +273,7 @@ TEST(Collisions3D, HalfSpacesParticlesAndEdgesWithEveryMethodButHybrid) {
   scene.add_particle(1, vec({1, 0, 0}), vec({0, 0, 0}), true, 0.05);
   scene.add_edge(1, 2, 0.1);
   scene.add_particle(1, vec({0.12, 0, 0.25}), vec({-2, 0, 0}), false, 0.1);
-  scene.model.collisions.method = CollisionMethod::kSimple;
+  scene.model.collisions.method = &contact_method("simple");
   StepPipeline pipeline(scene.model);
   StepRecord record;
   pipeline.step(scene.initial, &record);
@@ -291,7 +291,7 @@ TEST(SimpleCollisions, WorkedExampleE3HalfPlaneNormalAndImpulseAreTheCoursesBits
   TestScene scene(2, "explicit-euler", 1e-20);
   scene.add_particle(1, vec({-0.9, -0.85}), vec({-1, -2}), false, 0.2);
   scene.add_half_plane(vec({-1, -1}), vec({1, 1}));
-  scene.model.collisions.method = CollisionMethod::kSimple;
+  scene.model.collisions.method = &contact_method("simple");
   scene.model.collisions.cor = 0.5;
   const StepRecord record = step_once(scene);
   ASSERT_EQ(record.collisions.size(), 1u);
@@ -309,7 +309,7 @@ TEST(SimpleCollisions, AFixedParticleBouncesOffAHalfPlaneAndThenMoves) {
   TestScene scene(2, "explicit-euler", 0.0625);
   scene.add_particle(1, vec({0, 0.1875}), vec({0, -1}), true, 0.2);
   scene.add_half_plane(vec({0, 0}), vec({0, 1}));
-  scene.model.collisions.method = CollisionMethod::kSimple;
+  scene.model.collisions.method = &contact_method("simple");
   scene.model.collisions.cor = 0.5;
   const StepRecord record = step_once(scene);
   ASSERT_EQ(record.collisions.size(), 1u);

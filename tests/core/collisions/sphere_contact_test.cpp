@@ -25,8 +25,8 @@ using testing::vec;
 
 /// One particle of mass m and radius r at x with velocity v, and the sphere of radius 1 about
 /// the origin.
-TestScene particle_and_sphere(const Vector& x, const Vector& v, double r, CollisionMethod method,
-                              double h = 0.01) {
+TestScene particle_and_sphere(const Vector& x, const Vector& v, double r,
+                              const ContactMethod* method, double h = 0.01) {
   TestScene scene(3, "explicit-euler", h);
   scene.add_particle(2.0, x, v, false, r);
   scene.model.spheres.push_back({vec({0, 0, 0}), 1.0});
@@ -59,7 +59,7 @@ TEST(SphereContact, SimpleImpulseMatchesHandComputation) {
   // x = (0.3, 1.05, 0), r = 0.1: n = -x, ‖n‖² = 1.1925 < 1.1², v·n = 1.8 > 0 (approaching).
   // With COR 0.5, c = 0.75: v' = v - 2c (v·n̂) n̂ = v - 1.5 · 1.8 / 1.1925 · n.
   TestScene scene = particle_and_sphere(vec({0.3, 1.05, 0}), vec({1, -2, 0}), 0.1,
-                                        CollisionMethod::kSimple, 1e-12);
+                                        &contact_method("simple"), 1e-12);
   scene.model.collisions.cor = 0.5;
   StepPipeline pipeline(scene.model);
   StepRecord record;
@@ -79,7 +79,7 @@ TEST(SphereContact, NoCollisionWhenTouchingExactlyOrMovingAway) {
   // ‖n‖ = 1.1 = radii exactly (strict inequality); then overlapping but leaving.
   for (const auto& [x, v] : {std::pair{vec({0, 1.1, 0}), vec({0, -1, 0})},
                              std::pair{vec({0, 1.05, 0}), vec({0, 1, 0})}}) {
-    TestScene scene = particle_and_sphere(x, v, 0.1, CollisionMethod::kSimple, 1e-300);
+    TestScene scene = particle_and_sphere(x, v, 0.1, &contact_method("simple"), 1e-300);
     StepPipeline pipeline(scene.model);
     StepRecord record;
     pipeline.step(scene.initial, &record);
@@ -90,7 +90,7 @@ TEST(SphereContact, NoCollisionWhenTouchingExactlyOrMovingAway) {
 TEST(SphereContact, PenaltyForceMatchesHandComputation) {
   // d = ‖(0, 1.05, 0)‖ = 1.05, R = 1.1, T = 0.05: δ = -0.1, n̂ = (0, -1, 0): F = k δ n̂ = (0, 10, 0).
   TestScene scene =
-      particle_and_sphere(vec({0, 1.05, 0}), vec({0, 0, 0}), 0.1, CollisionMethod::kPenalty);
+      particle_and_sphere(vec({0, 1.05, 0}), vec({0, 0, 0}), 0.1, &contact_method("penalty"));
   scene.model.collisions.stiffness = 100.0;
   scene.model.collisions.thickness = 0.05;
   const Vector F = compute_force(ForceSet(scene.model), scene.initial.q, scene.initial.v);
@@ -105,7 +105,7 @@ TEST(SphereContact, PenaltyJacobianMatchesFiniteDifferences) {
   for (int trial = 0; trial < 20; ++trial) {
     // A particle within reach of the sphere at a random direction, not at the support's edge.
     const Vector x = random.unit_vector(3) * random.uniform(0.6, 1.1);
-    TestScene scene = particle_and_sphere(x, vec({0, 0, 0}), 0.1, CollisionMethod::kPenalty);
+    TestScene scene = particle_and_sphere(x, vec({0, 0, 0}), 0.1, &contact_method("penalty"));
     scene.model.collisions.thickness = 0.05;
     scene.model.collisions.penalty_jacobian = PenaltyJacobian::kExact;
     ForceSet forces(scene.model);
@@ -123,7 +123,7 @@ TEST(SphereContact, SweptPolynomialsRootsAndResponse) {
   // approach -w·w t - p·w = -6.25 t + 7.5 (positive before t = 1.2).
   const double h = 0.1;
   TestScene scene = particle_and_sphere(vec({0, 3, 0}), vec({0, -25, 0}), 0.5,
-                                        CollisionMethod::kContinuousTime, h);
+                                        &contact_method("continuous-time"), h);
   const Vector xs = scene.initial.q, xe = vec({0, 0.5, 0});
   const CandidatePair pair{CollisionKind::kParticleSphere, 0, 0};
   const auto polynomials = swept_polynomials<3>(scene.model, pair, xs, xe);
@@ -149,13 +149,13 @@ TEST(SphereContact, SweptPolynomialsRootsAndResponse) {
 TEST(SphereContact, ContinuousTimeCatchesAParticleThatWouldPassThroughInOneStep) {
   // At 100 m/s a particle crosses the whole sphere within a step of 0.05 s: discrete detection
   // at the end sees nothing, swept detection stops it at the near side.
-  for (const CollisionMethod method :
-       {CollisionMethod::kSimple, CollisionMethod::kContinuousTime}) {
+  for (const ContactMethod* method :
+       {&contact_method("simple"), &contact_method("continuous-time")}) {
     TestScene scene = particle_and_sphere(vec({-3, 0.2, 0}), vec({100, 0, 0}), 0.1, method, 0.05);
     StepPipeline pipeline(scene.model);
     StepRecord record;
     pipeline.step(scene.initial, &record);
-    if (method == CollisionMethod::kSimple) {
+    if (method == &contact_method("simple")) {
       EXPECT_TRUE(record.collisions.empty());
       EXPECT_GT(scene.initial.q[0], 1.1);  // passed through
     } else {

@@ -143,7 +143,7 @@ TEST(ContinuousTime, CourseWorkedExampleTwoBalls) {
   TestScene scene(2, "explicit-euler", 0.01);
   scene.add_particle(1, vec({-0.41, 0}), vec({1, 0}), false, 0.2);
   scene.add_particle(1, vec({0, 0}), vec({0, 0}), false, 0.2);
-  scene.model.collisions.method = CollisionMethod::kContinuousTime;
+  scene.model.collisions.method = &contact_method("continuous-time");
   StepPipeline pipeline(scene.model);
   StepRecord record;
   pipeline.step(scene.initial, &record);
@@ -161,8 +161,8 @@ TEST(ContinuousTime, CourseWorkedExampleTwoBalls) {
 }
 
 TEST(ContinuousTime, CatchesAFastParticleThatDiscreteDetectionMisses) {
-  for (const CollisionMethod method :
-       {CollisionMethod::kSimple, CollisionMethod::kContinuousTime}) {
+  for (const ContactMethod* method :
+       {&contact_method("simple"), &contact_method("continuous-time")}) {
     TestScene scene(2, "explicit-euler", 0.01);
     scene.add_particle(1, vec({-0.5, 0}), vec({100, 0}), false, 0.05);  // 1 m per step
     scene.add_particle(1, vec({0, 0}), vec({0, 0}), true, 0.05);
@@ -170,7 +170,7 @@ TEST(ContinuousTime, CatchesAFastParticleThatDiscreteDetectionMisses) {
     StepPipeline pipeline(scene.model);
     StepRecord record;
     pipeline.step(scene.initial, &record);
-    if (method == CollisionMethod::kSimple) {
+    if (method == &contact_method("simple")) {
       EXPECT_TRUE(record.collisions.empty());  // it tunnelled through
       EXPECT_GT(scene.initial.q[0], 0.4);
     } else {
@@ -189,7 +189,7 @@ TEST(Hybrid, CourseWorkedExampleThreeBallsWithOneImpulsePass) {
   scene.add_particle(1, vec({-0.45, 0}), vec({1, 0}), false, 0.25);
   scene.add_particle(1, vec({0, 0}), vec({0, 0}), false, 0.25);
   scene.add_particle(1, vec({0.45, 0}), vec({0, 0}), false, 0.25);
-  scene.model.collisions.method = CollisionMethod::kHybrid;
+  scene.model.collisions.method = &contact_method("hybrid");
   scene.model.collisions.max_iterations = 1;
   scene.model.collisions.stiffness = 0.0;
   scene.model.collisions.thickness = 0.1;
@@ -216,7 +216,7 @@ TEST(Hybrid, PassesThatChangeNothingStopAtMaxIterationsAndTheZonesEnd) {
   scene.add_particle(1, vec({-0.3, 0}), vec({5, 0}), false, 0.25);
   scene.add_particle(1, vec({0, 0}), vec({0, 0}), false, 0.25);
   scene.add_particle(1, vec({0.3, 0}), vec({-5, 0}), false, 0.25);
-  scene.model.collisions.method = CollisionMethod::kHybrid;
+  scene.model.collisions.method = &contact_method("hybrid");
   scene.model.collisions.max_iterations = 1000;
   scene.model.collisions.cor = -1.0;
   scene.model.collisions.stiffness = 0.0;
@@ -236,7 +236,7 @@ TEST(Hybrid, ZonesTouchingAHalfPlaneOrAFixedParticleStopDead) {
   TestScene scene(2, "explicit-euler", 0.01);
   scene.add_particle(1, vec({0, 0.3}), vec({0, -50}), false, 0.1);
   scene.add_half_plane(vec({0, 0}), vec({0, 1}));
-  scene.model.collisions.method = CollisionMethod::kHybrid;
+  scene.model.collisions.method = &contact_method("hybrid");
   scene.model.collisions.max_iterations = 0;  // straight to the geometric stage
   StepPipeline pipeline(scene.model);
   pipeline.step(scene.initial);

@@ -1,15 +1,20 @@
 // Rigid-body contact run from scene text (<rigidbodycollisionhandling>): the course program's
 // worked examples C (lcp), D (velocity-projection), E (gr-lcp) and F (gr-velocity-projection)
 // one step at a time, the degenerate five-vertex table, gr-lcp's limit through the step
-// pipeline, and every malformed <rigidbodycollisionhandling> with its message.
+// pipeline, every malformed <rigidbodycollisionhandling> with its message, and the responses as
+// entries of the contact registry.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "core/rigid/rigid_bodies.h"
-#include "core/rigid/rigid_contact_method.h"
+#include "core/collisions/contact_registry.h"
+#include "core/rigid/rigid_contact_stage.h"
 #include "core/step/simulation.h"
 #include "core/step_error.h"
 #include "io/scene_error.h"
@@ -303,19 +308,73 @@ TEST(RigidContactScene, MalformedCollisionHandlingIsRefusedWithTheCoursesMessage
   }
 }
 
-TEST(RigidContactScene, EveryMethodIsNamedAndMadeFromTheScene) {
-  for (const RigidContactMethod& method : rigid_contact_methods()) {
-    const Scene scene = load_scene_text(
-        with_response(kTiltedBox,
-                      R"(<rigidbodycollisionhandling detection="all-pairs" response=")" +
-                          std::string(method.name) + R"("/>)"),
-        "contact.xml");
-    EXPECT_EQ(scene.model.rigid_bodies->contact.method, &method);
-    EXPECT_NE(make_rigid_contact_stage(scene.model), nullptr);
+std::string handling(std::string_view response) {
+  return R"(<rigidbodycollisionhandling detection="all-pairs" response=")" +
+         std::string(response) + R"("/>)";
+}
+
+TEST(RigidContactScene, TheFourResponsesAreRegistryEntriesOfPlanarRigidBodies) {
+  std::vector<std::string> names;
+  for (const ContactMethod* method : contact_methods()) {
+    if (!method->scope.planar_rigid_bodies) continue;
+    names.emplace_back(method->name);
+    // A rigid-body response handles nothing else and records nothing in particle files.
+    EXPECT_FALSE(method->scope.particles) << method->name;
+    EXPECT_EQ(method->records, StepRecordLayout::kFrames) << method->name;
+    ASSERT_NE(method->rigid_response, nullptr) << method->name;
+    EXPECT_EQ(method->make_force, nullptr) << method->name;
   }
+  EXPECT_EQ(names, (std::vector<std::string>{"lcp", "velocity-projection", "gr-lcp",
+                                              "gr-velocity-projection"}));
+  EXPECT_EQ(describe_contact_method_names(BodyKind::kPlanarRigidBodies),
+            "lcp, velocity-projection, gr-lcp, gr-velocity-projection");
+  // Their responses: the two inelastic problems, once or as generalized reflections.
+  const auto response = [](std::string_view name) { return *contact_method(name).rigid_response; };
+  EXPECT_EQ(response("lcp").solver, ContactSolver::kLcp);
+  EXPECT_FALSE(response("lcp").generalized_reflections);
+  EXPECT_EQ(response("velocity-projection").solver, ContactSolver::kVelocityProjection);
+  EXPECT_FALSE(response("velocity-projection").generalized_reflections);
+  EXPECT_EQ(response("gr-lcp").solver, ContactSolver::kLcp);
+  EXPECT_TRUE(response("gr-lcp").generalized_reflections);
+  EXPECT_EQ(response("gr-velocity-projection").solver, ContactSolver::kVelocityProjection);
+  EXPECT_TRUE(response("gr-velocity-projection").generalized_reflections);
+}
+
+TEST(RigidContactScene, EveryMethodIsNamedAndMadeFromTheScene) {
+  int rigid_methods = 0;
+  for (const ContactMethod* method : contact_methods()) {
+    if (!method->scope.planar_rigid_bodies) continue;
+    ++rigid_methods;
+    const Scene scene =
+        load_scene_text(with_response(kTiltedBox, handling(method->name)), "contact.xml");
+    EXPECT_EQ(scene.model.collisions.method, method);
+    EXPECT_TRUE(contact_method_refusal(*method, scene.model).empty());
+    const std::unique_ptr<StepStage> stage = make_contact_stage(scene.model);
+    ASSERT_NE(stage, nullptr);
+    EXPECT_NE(dynamic_cast<const RigidContactStage*>(stage.get()), nullptr);
+  }
+  EXPECT_EQ(rigid_methods, 4);
   const Scene none = load_scene_text(with_response(kTiltedBox, ""), "contact.xml");
-  EXPECT_EQ(none.model.rigid_bodies->contact.method, nullptr);
-  EXPECT_EQ(make_rigid_contact_stage(none.model), nullptr);
+  EXPECT_EQ(none.model.collisions.method, &no_contact_method());
+  EXPECT_EQ(make_contact_stage(none.model), nullptr);
+}
+
+TEST(RigidContactScene, AParticleMethodIsRefusedAsAResponseWithTheCoursesMessage) {
+  const std::string where = "contact.xml:16: error: <rigidbodycollisionhandling>";
+  for (const ContactMethod* method : contact_methods()) {
+    if (method->scope.planar_rigid_bodies) continue;
+    SCOPED_TRACE(std::string(method->name));
+    const std::string message = error_of(handling(method->name));
+    EXPECT_NE(message.find(where), std::string::npos) << message;
+    EXPECT_NE(message.find("Invalid rigidbodycollisionhandling 'response' attribute specified. "
+                           "Valid options are lcp and velocity-projection. Exiting. (found \"" +
+                           std::string(method->name) + "\": \"" + std::string(method->name) +
+                           "\" does not handle rigid bodies (it is a method of particles, named "
+                           "by <collision type=\"...\">); gr-lcp and gr-velocity-projection are "
+                           "valid too)"),
+              std::string::npos)
+        << message;
+  }
 }
 
 }  // namespace

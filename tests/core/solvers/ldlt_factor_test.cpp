@@ -6,7 +6,8 @@
 // - Sylvester's law of inertia: the number of negative pivots of D equals the number of
 //   negative eigenvalues of A (counted by a dense symmetric eigensolver), on matrices with
 //   none, a few and many;
-// - one analysis serves any number of factorizations of the pattern, with new values;
+// - one analysis serves any number of factorizations of the pattern, with new values, and the
+//   workspace kept between factorizations grows for a larger pattern and delayed pivots;
 // - a singular matrix is reported, not solved;
 // - in single precision: the same inertia, solutions with float's accuracy (residual near
 //   float's round-off, and not double's: the factor really is single), and a matrix with an
@@ -91,6 +92,33 @@ TEST(LdltFactor, OneAnalysisServesNewValuesOfThePattern) {
     EXPECT_EQ(factor.negative_pivots(), negative_eigenvalues(A));
     expect_solves(factor, A, seed + 100);
   }
+}
+
+// The factorization's workspace is kept from one factorization to the next (ldlt_factor.cpp,
+// WK_USER) and sized from the analysis: it must grow for a larger pattern analysed later, and
+// for pivots delayed beyond the analysis's estimate (a zero diagonal forces 2×2 pivots where
+// the analysed matrix needed none).
+TEST(LdltFactor, KeptWorkspaceServesALargerPatternAndDelayedPivots) {
+  LdltFactor factor;
+  const SparseMatrix small = grid_matrix(5, 4.5, 310);
+  factor.analyze(small);
+  ASSERT_TRUE(factor.factorize(small));
+  expect_solves(factor, small, 311);
+  const SparseMatrix large = grid_matrix(20, 4.5, 312);
+  factor.analyze(large);
+  ASSERT_TRUE(factor.factorize(large));
+  expect_solves(factor, large, 313);
+  SparseMatrix hollow = grid_matrix(20, 0.0, 314);
+  for (int k = 0; k < hollow.outerSize(); ++k) {
+    for (SparseMatrix::InnerIterator it(hollow, k); it; ++it) {
+      if (it.row() == it.col()) it.valueRef() = 0.0;
+    }
+  }
+  ASSERT_TRUE(factor.factorize(hollow));
+  EXPECT_EQ(factor.negative_pivots(), negative_eigenvalues(hollow));
+  expect_solves(factor, hollow, 315);
+  ASSERT_TRUE(factor.factorize(large));  // and back
+  expect_solves(factor, large, 316);
 }
 
 TEST(LdltFactor, ReportsASingularMatrix) {

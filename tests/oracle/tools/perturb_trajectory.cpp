@@ -3,7 +3,8 @@
 //
 //   perturb_trajectory SCENE FILE FRAME PARTICLE COMPONENT DELTA
 //     adds DELTA to the double of frame FRAME, particle PARTICLE, component COMPONENT
-//     (0..dim-1: position x, y[, z]; dim..2dim-1: velocity)
+//     (0..dim-1: position x, y[, z]; dim..2dim-1: velocity; for a Theme 3 scene, body PARTICLE's
+//     state X_x X_y θ V_x V_y ω, components 0..5, in the course's Theme 3 layout)
 //   perturb_trajectory SCENE FILE FRAME PARTICLE COMPONENT flip-bit
 //     flips the least significant bit of that double instead
 
@@ -44,8 +45,12 @@ int main(int argc, char** argv) {
   // Frame layout: dofs positions, then dofs velocities.
   const int index =
       component < dim ? dim * particle + component : dofs + dim * particle + component - dim;
-  const std::int64_t offset =
-      frame * fosssim::trajectory_frame_bytes(dofs) + 8 * std::int64_t(index);
+  std::int64_t offset = frame * fosssim::trajectory_frame_bytes(dofs) + 8 * std::int64_t(index);
+  if (scene->model.rigid_bodies) {  // io/rigid_trajectory.h: frame 0 holds 16B + 1 doubles,
+    const std::int64_t bodies = scene->model.num_particles();  // later frames 12B + 1
+    const std::int64_t before = frame == 0 ? 0 : 16 * bodies + 1 + (12 * bodies + 1) * (frame - 1);
+    offset = 8 * (before + 6 * particle + component);
+  }
   std::fstream file(argv[2], std::ios::in | std::ios::out | std::ios::binary);
   double value = 0.0;
   if (!file.seekg(offset) || !file.read(reinterpret_cast<char*>(&value), sizeof(value))) {
