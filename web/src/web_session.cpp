@@ -144,7 +144,7 @@ class WebSession {
     simulation_.reset();
     grab_ = std::make_unique<ParticleGrab>(*scene_);
     StepAdditions additions = scripted_additions(*scene_);
-    additions.interaction_forces.push_back(&grab_->force());
+    additions.interaction_forces.push_back(&grab_->interaction_force());
     simulation_ =
         std::make_unique<Simulation>(scene_->model, scene_->initial, std::move(additions));
     view_ = std::make_unique<SceneView>(*scene_, simulation_->state(), width_, height_);
