@@ -33,7 +33,7 @@
 #include "core/forces/rigid_body_gravity_force.h"
 #include "core/integrators/integrator_registry.h"
 #include "core/rigid/rigid_contact_detection.h"
-#include "core/rigid/rigid_contact_method.h"
+#include "core/collisions/contact_registry.h"
 #include "core/rigid/rigid_contact_response.h"
 #include "core/scene_model.h"
 #include "core/state.h"
@@ -69,7 +69,7 @@ void add_body(const std::vector<Vec2>& points, double radius, bool fixed, const 
 /// and n / kRows columns, at random angles, falling at about 1 m/s into a box of three fixed
 /// bodies (a floor just under the lowest row and two walls), in gravity (0, −10), stepped by
 /// symplectic Euler with h = 0.005 and `method`'s contact response.
-std::pair<SceneModel, State> make_pile(int n, const RigidContactMethod* method) {
+std::pair<SceneModel, State> make_pile(int n, const ContactMethod& method) {
   std::mt19937 rng(20260);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const int columns = (n + kRows - 1) / kRows;
@@ -98,7 +98,6 @@ std::pair<SceneModel, State> make_pile(int n, const RigidContactMethod* method) 
            mass, qs, vs);
   add_body(box(width - 0.3, -0.7, width + 0.5, height), 0.06, true, Vec<3>::Zero(),
            Vec<3>::Zero(), *bodies, mass, qs, vs);
-  bodies->contact.method = method;
   bodies->contact.max_group_contacts = 1 << 30;  // the bench measures, it does not refuse
 
   SceneModel model;
@@ -115,6 +114,7 @@ std::pair<SceneModel, State> make_pile(int n, const RigidContactMethod* method) 
     model.particle_radius.push_back(bodies->bodies[b].radius);
   }
   model.rigid_bodies = std::move(bodies);
+  model.collisions.method = &method;
   model.forces.push_back(std::make_unique<RigidBodyGravityForce>(Vec2(0.0, -10.0)));
   model.integrator.use(integrator_method("symplectic-euler"));
   model.integrator.dt = kStep;
@@ -236,9 +236,10 @@ int main(int argc, char** argv) {
   std::printf("%7s  %-24s %10s %9s %8s %17s  %s\n", "bodies", "response (detection)", "ms/step",
               "contacts", "largest", "end state", "scaling per 10x bodies");
   std::vector<std::string> names;
-  for (const RigidContactMethod& method : rigid_contact_methods()) {
-    if (only.empty() || std::find(only.begin(), only.end(), method.name) != only.end()) {
-      names.emplace_back(method.name);
+  for (const ContactMethod* method : contact_methods()) {
+    if (!method->scope.handles(BodyKind::kPlanarRigidBodies) || method->name == "none") continue;
+    if (only.empty() || std::find(only.begin(), only.end(), method->name) != only.end()) {
+      names.emplace_back(method->name);
     }
   }
   if (only.empty() || std::find(only.begin(), only.end(), "all-pairs") != only.end()) {
@@ -251,7 +252,7 @@ int main(int argc, char** argv) {
     for (std::size_t m = 0; m < names.size(); ++m) {
       RunTimes t;
       if (names[m] != "lcp (all pairs)") {
-        auto [model, state] = make_pile(n, find_rigid_contact_method(names[m]));
+        auto [model, state] = make_pile(n, contact_method(names[m]));
         StepPipeline pipeline(model);
         t = run(model, pipeline, std::move(state), steps, measured);
         if (names[m] == "lcp" && t.failure.empty()) {
@@ -260,12 +261,7 @@ int main(int argc, char** argv) {
         }
       } else {
         if (!have_lcp_end) continue;
-        auto [model, state] = make_pile(n, nullptr);  // no stage of its own
-        model.rigid_bodies = std::make_shared<RigidBodies>([&] {
-          RigidBodies b = *model.rigid_bodies;
-          b.contact.method = nullptr;
-          return b;
-        }());
+        auto [model, state] = make_pile(n, no_contact_method());  // no stage of its own
         StepPipeline pipeline(model);
         pipeline.add_stage(StagePhase::kResponse, std::make_unique<AllPairsLcpStage>(model));
         const int k = all_pairs_steps > 0 ? all_pairs_steps : (n < 10000 ? 20 : 2);
