@@ -9,17 +9,24 @@ set -eu
 # returns, pytest runs its tests, matplotlib draws the examples' plots (examples/python/).
 # bubblewrap confines the candidates fosssim-oracle grades; parallel (GNU parallel) runs the
 # autograder kit's recipe for many submissions (autograder/grade-many.sh).
+# librapidxml-dev (header-only) parses XML scenes (io/xml_tree); tinyxml2 writes the oracle's
+# JUnit report.
 # dpkg-dev: dpkg-shlibdeps finds the .deb's library dependencies (cpack -G DEB, tests/install).
 # clang, libclang-rt-14-dev (libFuzzer and clang's sanitizer runtimes) and llvm (the symbolizer
 # of sanitizer reports) build and run the fuzz targets of fuzz/.
 PACKAGES="cmake ninja-build g++ pkg-config
-  libeigen3-dev libtinyxml2-dev libcli11-dev nlohmann-json3-dev libsuitesparse-dev libopenblas-dev
+  libeigen3-dev libtinyxml2-dev librapidxml-dev libcli11-dev nlohmann-json3-dev libsuitesparse-dev libopenblas-dev
   libmumps-seq-dev libdart-external-odelcpsolver-dev
   libgtest-dev libbenchmark-dev python3
   pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib dpkg-dev
   libcairo2-dev libssl-dev freeglut3-dev ffmpeg xvfb xauth
   clang libclang-rt-14-dev llvm
   bubblewrap parallel"
+# What the WebAssembly build and its tests need (cmake --workflow --preset web; docs/web.md):
+# Emscripten's em++, Debian's header-only fast_float (std::from_chars for doubles) and
+# chromium (the page's tests in a headless browser). The test workflow builds and tests the web
+# preset too (ci-web), so they are installed without a flag; --web is kept as a synonym.
+PACKAGES="$PACKAGES emscripten libfast-float-dev chromium"
 
 missing=""
 for package in $PACKAGES; do

@@ -27,8 +27,8 @@ struct Limits {
   /// Corners of one OBJ face: a face of n corners becomes n (n - 1) / 2 springs
   /// (--max-face-corners).
   std::int64_t max_face_corners = 64;
-  /// Attributes of one XML element: tinyxml2 checks each new attribute against the earlier
-  /// ones, so an element of n attributes costs n² (--max-attributes).
+  /// Attributes of one XML element: the XML reader checks each new attribute against the
+  /// earlier ones, so an element of n attributes costs n² (--max-attributes).
   std::int64_t max_attributes = 100;
   /// Impulse passes of one step of hybrid collision handling: a larger `maxiters` is read as
   /// this many, with a warning. Each pass tests and logs every pair, so the default is a

@@ -1,6 +1,6 @@
 #include "io/collision_elements.h"
 
-#include <tinyxml2.h>
+#include "io/xml_tree.h"
 
 #include <algorithm>
 #include <array>
@@ -18,7 +18,6 @@ namespace fosssim {
 
 namespace {
 
-using tinyxml2::XMLElement;
 
 constexpr std::array<std::string_view, 6> kElements = {
     "halfplane", "halfplanecolor", "sphere", "spherecolor", "collision", "collisiondetection"};
@@ -59,12 +58,8 @@ class CollisionAttributes final : public OptionSource {
   const ContactMethod& method_;
 };
 
-std::vector<const XMLElement*> children(const XMLElement& root, const char* name) {
-  std::vector<const XMLElement*> found;
-  for (const XMLElement* e = root.FirstChildElement(name); e; e = e->NextSiblingElement(name)) {
-    found.push_back(e);
-  }
-  return found;
+std::vector<const XmlElement*> children(const XmlElement& root, const char* name) {
+  return root.children_named(name);
 }
 
 class CollisionReader {
@@ -76,7 +71,7 @@ class CollisionReader {
   /// Reads every element, each in errors_.attempt(). The colours of half-planes (spheres) are
   /// read only when every half-plane (sphere) could be: the numbering of the others depends on
   /// it.
-  void read(const XMLElement& root) {
+  void read(const XmlElement& root) {
     const auto half_planes = children(root, "halfplane");
     bool planes_read = true;
     for (int k = 0; k < static_cast<int>(half_planes.size()); ++k) {
@@ -106,7 +101,7 @@ class CollisionReader {
       warn(r,
            "a second <collision> element is ignored, as the course ignores it (the first, "
            "at line " +
-               std::to_string(collisions[0]->GetLineNum()) + ", applies)");
+               std::to_string(collisions[0]->line()) + ", applies)");
       r.text_or_empty("type");  // its attributes are not reported one by one
       for (const ContactMethod* method : contact_methods()) {
         if (!method->scope.particles) continue;
@@ -117,15 +112,15 @@ class CollisionReader {
     }
     const auto detections = children(root, "collisiondetection");
     if (detections.size() > 1) {
-      errors_.add(SceneError(file_, detections[1]->GetLineNum(), "<collisiondetection>",
+      errors_.add(SceneError(file_, detections[1]->line(), "<collisiondetection>",
                              "may appear only once (first at line " +
-                                 std::to_string(detections[0]->GetLineNum()) + ")"));
+                                 std::to_string(detections[0]->line()) + ")"));
     }
     if (!detections.empty()) errors_.attempt([&] { read_detection(*detections[0]); });
   }
 
  private:
-  ElementReader reader(const XMLElement& e, int index) {
+  ElementReader reader(const XmlElement& e, int index) {
     return ElementReader(e, file_, index, scene_.model.num_particles(),
                          static_cast<int>(scene_.model.edges.size()));
   }
@@ -136,7 +131,7 @@ class CollisionReader {
     for (auto& warning : r.finish()) scene_.warnings.push_back(warning);
   }
 
-  void read_half_plane(const XMLElement& e, int index) {
+  void read_half_plane(const XmlElement& e, int index) {
     ElementReader r = reader(e, index);
     const int dim = scene_.model.dim;
     HalfPlane plane;
@@ -154,12 +149,12 @@ class CollisionReader {
     keep_warnings(r);
   }
 
-  void read_color(const XMLElement& e, int index) {
+  void read_color(const XmlElement& e, int index) {
     read_obstacle_color(e, index, "half-plane", scene_.appearance.half_plane_color);
   }
 
   /// <halfplanecolor> and <spherecolor>: i names an obstacle of `colors`, one per obstacle.
-  void read_obstacle_color(const XMLElement& e, int index, const std::string& what,
+  void read_obstacle_color(const XmlElement& e, int index, const std::string& what,
                            std::vector<Color>& colors) {
     ElementReader r = reader(e, index);
     const int count = static_cast<int>(colors.size());
@@ -175,7 +170,7 @@ class CollisionReader {
     keep_warnings(r);
   }
 
-  void read_sphere(const XMLElement& e, int index) {
+  void read_sphere(const XmlElement& e, int index) {
     ElementReader r = reader(e, index);
     if (scene_.model.dim != 3) {
       r.fail("spheres are obstacles of 3D scenes only (<scene dim=\"3\">)");
@@ -192,14 +187,14 @@ class CollisionReader {
     keep_warnings(r);
   }
 
-  void read_sphere_color(const XMLElement& e, int index) {
+  void read_sphere_color(const XmlElement& e, int index) {
     read_obstacle_color(e, index, "sphere", scene_.appearance.sphere_color);
   }
 
   /// <collision>: the method, its options (ContactMethod::options, read in their order), and
   /// the particle methods' settings taken from them, with warnings where the course accepts a
   /// value that is probably a mistake.
-  void read_collision(const XMLElement& e) {
+  void read_collision(const XmlElement& e) {
     ElementReader r = reader(e, -1);
     CollisionSettings& s = scene_.model.collisions;
     const std::string type = r.text("type");
@@ -284,7 +279,7 @@ class CollisionReader {
     }
   }
 
-  void read_detection(const XMLElement& e) {
+  void read_detection(const XmlElement& e) {
     ElementReader r = reader(e, -1);
     const std::string type = r.text("type");
     CollisionSettings& s = scene_.model.collisions;
@@ -326,7 +321,7 @@ bool is_collision_element(std::string_view name) {
 
 std::span<const std::string_view> collision_element_names() { return kElements; }
 
-void read_collision_elements(const XMLElement& root, Scene& scene, const std::string& file,
+void read_collision_elements(const XmlElement& root, Scene& scene, const std::string& file,
                              const Limits& limits, SceneErrorList& errors) {
   CollisionReader(scene, file, limits, errors).read(root);
 }

@@ -8,10 +8,8 @@
 
 #include "core/limits.h"
 #include "core/scene.h"
+#include "io/xml_tree.h"
 
-namespace tinyxml2 {
-class XMLElement;
-}
 
 namespace fosssim {
 
@@ -31,7 +29,7 @@ std::span<const std::string_view> collision_element_names();
 /// fractional or negative maxiters) become warnings. Each element's problem (a SceneError
 /// naming file, line and element) goes into `errors`, and reading goes on with the next one.
 /// A `maxiters` above limits.max_hybrid_passes is read as that many, with a warning.
-void read_collision_elements(const tinyxml2::XMLElement& root, Scene& scene,
+void read_collision_elements(const XmlElement& root, Scene& scene,
                              const std::string& file, const Limits& limits, SceneErrorList& errors);
 
 /// Inserts the blank that is missing between two attributes written one after the other,

@@ -1,10 +1,9 @@
 #include "io/elastic_body_element.h"
 
-#include <tinyxml2.h>
-
 #include <algorithm>
 #include <filesystem>
 #include <set>
+#include <vector>
 
 #include "core/force_registry.h"
 #include "core/text.h"
@@ -12,13 +11,13 @@
 #include "io/obj_reader.h"
 #include "io/scene_error.h"
 #include "io/text_lines.h"
+#include "io/xml_tree.h"
 #include "mesh/elastic_body.h"
 
 namespace fosssim {
 
 namespace {
 
-using tinyxml2::XMLElement;
 
 /// A required integer of at least `minimum`.
 int integer_at_least(ElementReader& r, const char* name, int minimum) {
@@ -276,7 +275,7 @@ ElasticBodyDescription read_description(ElementReader& r, const std::string& fil
 
 /// Reads one <elasticbody> and, when it is sound, adds it to the scene and its forces to
 /// `forces`. The scene is left unchanged when the element has a problem.
-void read_elastic_body(const XMLElement& e, int index, Scene& scene, const std::string& file,
+void read_elastic_body(const XmlElement& e, int index, Scene& scene, const std::string& file,
                        InputFiles& files, ForcesByTag& forces) {
   SceneModel& model = scene.model;
   ElementReader r(e, file, index, model.num_particles(), static_cast<int>(model.edges.size()));
@@ -395,12 +394,11 @@ ElasticShape read_elastic_obj(const std::string& name, InputFiles& files,
   return make_triangle_shape(std::move(vertices), triangles);
 }
 
-ForcesByTag read_elastic_bodies(const XMLElement& root, Scene& scene, const std::string& file,
+ForcesByTag read_elastic_bodies(const XmlElement& root, Scene& scene, const std::string& file,
                                 InputFiles& files, SceneErrorList& errors) {
   ForcesByTag forces;
   int index = 0;
-  for (const XMLElement* e = root.FirstChildElement(); e; e = e->NextSiblingElement()) {
-    if (std::string_view(e->Name()) != kElasticBodyElement) continue;
+  for (const XmlElement* e : root.children_named(kElasticBodyElement)) {
     const int k = index++;
     errors.attempt([&] { read_elastic_body(*e, k, scene, file, files, forces); });
   }
@@ -409,13 +407,16 @@ ForcesByTag read_elastic_bodies(const XMLElement& root, Scene& scene, const std:
 
 ElasticBodyText read_elastic_body_text(std::string_view element, const std::string& name,
                                        InputFiles& files) {
-  tinyxml2::XMLDocument doc;
-  if (doc.Parse(element.data(), element.size()) != tinyxml2::XML_SUCCESS ||
-      doc.RootElement() == nullptr ||
-      std::string_view(doc.RootElement()->Name()) != kElasticBodyElement) {
+  std::vector<XmlElement> parsed;
+  try {
+    parsed = parse_xml(element, name);
+  } catch (const SceneError&) {
+    parsed.clear();  // a syntax error: the message below says what is expected
+  }
+  if (parsed.empty() || parsed.front().name() != kElasticBodyElement) {
     throw SceneError(name, 0, "", "not one <elasticbody .../> element");
   }
-  ElementReader r(*doc.RootElement(), name, -1, 0, 0);
+  ElementReader r(parsed.front(), name, -1, 0, 0);
   ElasticBodyText out;
   out.body = read_description(r, name, files, 0);
   out.warnings = r.finish();

@@ -14,13 +14,10 @@
 #include "io/input_files.h"
 #include "mesh/elastic_body.h"
 
-namespace tinyxml2 {
-class XMLElement;
-}
-
 namespace fosssim {
 
 class SceneErrorList;
+class XmlElement;
 
 /// The element's name, "elasticbody".
 inline constexpr std::string_view kElasticBodyElement = "elasticbody";
@@ -68,7 +65,7 @@ ElasticBodyText read_elastic_body_text(std::string_view element, const std::stri
 ElasticShape read_elastic_obj(const std::string& path, InputFiles& files,
                               const std::string& context);
 
-ForcesByTag read_elastic_bodies(const tinyxml2::XMLElement& root, Scene& scene,
+ForcesByTag read_elastic_bodies(const XmlElement& root, Scene& scene,
                                 const std::string& file, InputFiles& files, SceneErrorList& errors);
 
 }  // namespace fosssim

@@ -1,6 +1,6 @@
 #include "io/element_reader.h"
 
-#include <tinyxml2.h>
+#include "io/xml_tree.h"
 
 #include <algorithm>
 #include <charconv>
@@ -28,7 +28,7 @@ std::string_view trimmed(const char* text) {
 
 }  // namespace
 
-ElementReader::ElementReader(const tinyxml2::XMLElement& element, const std::string& file,
+ElementReader::ElementReader(const XmlElement& element, const std::string& file,
                              int index, int num_particles, int num_edges)
     : element_(element),
       file_(file),
@@ -38,10 +38,10 @@ ElementReader::ElementReader(const tinyxml2::XMLElement& element, const std::str
   asked_.reserve(16);  // one allocation for the names an element is asked for
 }
 
-int ElementReader::line() const { return element_.GetLineNum(); }
+int ElementReader::line() const { return element_.line(); }
 
 std::string ElementReader::location() const {
-  std::string where = std::string("<") + element_.Name() + ">";
+  std::string where = std::string("<") + element_.name() + ">";
   if (index_ >= 0) where += " " + std::to_string(index_);
   return where;
 }
@@ -54,7 +54,7 @@ void ElementReader::fail(const char* name, const std::string& problem) {
   fail(std::string("attribute \"") + name + "\" " + problem);
 }
 
-bool ElementReader::has(const char* name) const { return element_.Attribute(name) != nullptr; }
+bool ElementReader::has(const char* name) const { return element_.attribute(name) != nullptr; }
 
 bool ElementReader::was_asked(const char* name) const {
   const std::string_view wanted(name);  // compared by length first
@@ -70,7 +70,7 @@ void ElementReader::remember(const char* name) {
 
 const char* ElementReader::raw(const char* name) {
   remember(name);
-  const char* value = element_.Attribute(name);
+  const char* value = element_.attribute(name);
   if (value == nullptr) {
     if (const char* typo = likely_misspelling_of(name)) {
       fail(name, std::string("is missing (the element has \"") + typo +
@@ -85,7 +85,13 @@ template <typename T>
 bool ElementReader::parse_prefix(const char* name, const char* text, T& value) {
   std::string_view s = trimmed(text);
   if (s.size() > 1 && s.front() == '+' && s[1] != '-') s.remove_prefix(1);
-  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
+  const auto [end, error] = [&] {
+    if constexpr (std::is_floating_point_v<T>) {
+      return double_from_chars(s.data(), s.data() + s.size(), value);
+    } else {
+      return std::from_chars(s.data(), s.data() + s.size(), value);
+    }
+  }();
   if (error != std::errc()) return false;
   if constexpr (std::is_floating_point_v<T>) {
     if (!std::isfinite(value)) return false;
@@ -176,7 +182,7 @@ std::string ElementReader::text(const char* name) { return raw(name); }
 
 std::string ElementReader::text_or_empty(const char* name) {
   remember(name);
-  const char* value = element_.Attribute(name);
+  const char* value = element_.attribute(name);
   return value ? value : "";
 }
 
@@ -214,8 +220,8 @@ const std::string* ElementReader::likely_meant(std::string_view unknown) const {
 }
 
 const char* ElementReader::likely_misspelling_of(std::string_view name) const {
-  for (const auto* a = element_.FirstAttribute(); a != nullptr; a = a->Next()) {
-    if (!was_asked(a->Name()) && looks_like_misspelling(a->Name(), name)) return a->Name();
+  for (const XmlAttribute& a : element_.attributes()) {
+    if (!was_asked(a.name.c_str()) && looks_like_misspelling(a.name, name)) return a.name.c_str();
   }
   return nullptr;
 }
@@ -224,17 +230,17 @@ std::vector<std::string> ElementReader::finish() const {
   std::vector<std::string> warnings = notes_;
   std::string misspelt;  // "attribute "raduis" (did you mean "radius"?)", one per misspelling
   int count = 0;
-  for (const auto* a = element_.FirstAttribute(); a != nullptr; a = a->Next()) {
-    if (was_asked(a->Name())) continue;
-    const std::string* meant = likely_meant(a->Name());
+  for (const XmlAttribute& a : element_.attributes()) {
+    if (was_asked(a.name.c_str())) continue;
+    const std::string* meant = likely_meant(a.name);
     if (meant != nullptr && !misspellings_are_errors_) {
-      warnings.push_back(warning(std::string("unknown attribute \"") + a->Name() +
+      warnings.push_back(warning(std::string("unknown attribute \"") + a.name +
                                  "\" ignored (did you mean \"" + *meant + "\"?)"));
     } else if (meant != nullptr) {
       if (count++ > 0) misspelt += ", ";
-      misspelt += std::string("\"") + a->Name() + "\" (did you mean \"" + *meant + "\"?)";
+      misspelt += std::string("\"") + a.name + "\" (did you mean \"" + *meant + "\"?)";
     } else {
-      warnings.push_back(warning(std::string("unknown attribute \"") + a->Name() + "\" ignored"));
+      warnings.push_back(warning(std::string("unknown attribute \"") + a.name + "\" ignored"));
     }
   }
   if (count > 0) {

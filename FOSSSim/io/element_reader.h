@@ -8,10 +8,8 @@
 #include "core/force_parameters.h"
 #include "core/misspelling.h"  // looks_like_misspelling, for the did-you-mean of attributes
 #include "core/scene.h"
+#include "io/xml_tree.h"
 
-namespace tinyxml2 {
-class XMLElement;
-}
 
 namespace fosssim {
 
@@ -28,7 +26,7 @@ struct BrokenElements {
 class ElementReader final : public ForceParameters {
  public:
   /// index: the element's 0-based position among elements of its kind, or -1 for singletons.
-  ElementReader(const tinyxml2::XMLElement& element, const std::string& file, int index,
+  ElementReader(const XmlElement& element, const std::string& file, int index,
                 int num_particles, int num_edges);
 
   double number(const char* name) override;
@@ -79,7 +77,7 @@ class ElementReader final : public ForceParameters {
   const char* raw(const char* name);  // required, records the name
   std::string location() const;
 
-  const tinyxml2::XMLElement& element_;
+  const XmlElement& element_;
   const std::string& file_;
   int index_;
   int num_particles_;

@@ -1,6 +1,6 @@
 #include "io/mesh_elements.h"
 
-#include <tinyxml2.h>
+#include "io/xml_tree.h"
 
 #include <algorithm>
 #include <array>
@@ -19,7 +19,6 @@ namespace fosssim {
 
 namespace {
 
-using tinyxml2::XMLElement;
 
 constexpr std::array<std::string_view, 3> kMeshElements = {"clothmesh", "tetmesh", "generate"};
 
@@ -163,14 +162,15 @@ bool is_mesh_element(std::string_view name) {
 
 std::span<const std::string_view> mesh_element_names() { return kMeshElements; }
 
-std::vector<std::unique_ptr<Force>> read_mesh_elements(const XMLElement& root, Scene& scene,
+std::vector<std::unique_ptr<Force>> read_mesh_elements(const XmlElement& root, Scene& scene,
                                                        const std::string& file, InputFiles& files,
                                                        SceneErrorList& errors) {
   const std::int64_t max_particles = files.limits().max_particles;
   std::vector<std::unique_ptr<Force>> forces;
   std::map<std::string, int> count;
-  for (const XMLElement* e = root.FirstChildElement(); e; e = e->NextSiblingElement()) {
-    const std::string kind = e->Name();
+  for (const XmlElement& element : root.children()) {
+    const XmlElement* e = &element;
+    const std::string kind = e->name();
     if (!is_mesh_element(kind)) continue;
     const int index = count[kind]++;
     errors.attempt([&] {
@@ -204,10 +204,10 @@ std::vector<std::unique_ptr<Force>> read_mesh_elements(const XMLElement& root, S
       material.mass = read_mass_rule(r);
       material.velocity =
           Eigen::Vector3d(r.number_or("vx", 0.0), r.number_or("vy", 0.0), r.number_or("vz", 0.0));
-      for (const XMLElement* child = e->FirstChildElement(); child;
-           child = child->NextSiblingElement()) {
-        if (std::string_view(child->Name()) != "pin") {
-          throw SceneError(file, child->GetLineNum(), std::string("<") + child->Name() + ">",
+      for (const XmlElement& pin_element : e->children()) {
+        const XmlElement* child = &pin_element;
+        if (std::string_view(child->name()) != "pin") {
+          throw SceneError(file, child->line(), std::string("<") + child->name() + ">",
                            "unknown element inside <" + kind + "> (only <pin> may appear there)");
         }
         ElementReader pin(*child, file, -1, 0, 0);

@@ -10,10 +10,8 @@
 #include "core/force.h"
 #include "core/scene.h"
 #include "io/input_files.h"
+#include "io/xml_tree.h"
 
-namespace tinyxml2 {
-class XMLElement;
-}
 
 namespace fosssim {
 
@@ -32,7 +30,7 @@ std::span<const std::string_view> mesh_element_names();
 /// generator is refused before it takes the scene past files.limits().max_particles. Each
 /// element's problem (a SceneError naming the scene file, line and element, or the mesh file and
 /// its line) goes into `errors`, and reading goes on with the next element.
-std::vector<std::unique_ptr<Force>> read_mesh_elements(const tinyxml2::XMLElement& root,
+std::vector<std::unique_ptr<Force>> read_mesh_elements(const XmlElement& root,
                                                        Scene& scene, const std::string& file,
                                                        InputFiles& files, SceneErrorList& errors);
 

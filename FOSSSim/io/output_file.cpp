@@ -1,7 +1,6 @@
 #include "io/output_file.h"
 
 #include <fcntl.h>
-#include <sys/random.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -32,7 +31,8 @@ std::string reason(int error) { return std::strerror(error); }
 std::string random_tag() {
   static constexpr char kAlphabet[] = "abcdefghijklmnopqrstuvwxyz0123456789";
   unsigned char bytes[6];
-  if (::getrandom(bytes, sizeof bytes, 0) != static_cast<ssize_t>(sizeof bytes)) {
+  // getentropy, not getrandom: Emscripten's C library (the WebAssembly build) has only it.
+  if (::getentropy(bytes, sizeof bytes) != 0) {
     std::random_device device;
     for (unsigned char& b : bytes) b = static_cast<unsigned char>(device());
   }

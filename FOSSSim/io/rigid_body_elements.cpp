@@ -1,6 +1,6 @@
 #include "io/rigid_body_elements.h"
 
-#include <tinyxml2.h>
+#include "io/xml_tree.h"
 
 #include <array>
 #include <cmath>
@@ -17,7 +17,6 @@ namespace fosssim {
 
 namespace {
 
-using tinyxml2::XMLElement;
 
 constexpr std::array<std::string_view, 8> kRigidBodyElements = {"simtype",
                                                                 "rigidbodyintegrator",
@@ -37,8 +36,8 @@ constexpr std::array<std::string_view, 9> kParticleElements = {
 constexpr std::array<std::string_view, 2> kRigidBodyIntegrators = {"explicit-euler",
                                                                    "symplectic-euler"};
 
-const std::vector<const XMLElement*>& all(const ElementGroups& groups, std::string_view name) {
-  static const std::vector<const XMLElement*> none;
+const std::vector<const XmlElement*>& all(const ElementGroups& groups, std::string_view name) {
+  static const std::vector<const XmlElement*> none;
   const auto found = groups.find(name);
   return found == groups.end() ? none : found->second;
 }
@@ -61,7 +60,7 @@ class RigidBodySceneReader {
   }
 
  private:
-  ElementReader reader(const XMLElement& element, int index) {
+  ElementReader reader(const XmlElement& element, int index) {
     ElementReader r(element, file_, index, scene_.model.num_particles(), 0);
     r.read_numbers_as_course();
     r.warn_about_misspellings();  // course files may hold them: warned, never refused
@@ -70,13 +69,13 @@ class RigidBodySceneReader {
   void keep_warnings(const ElementReader& r) {
     for (auto& warning : r.finish()) scene_.warnings.push_back(warning);
   }
-  std::string warning_at(const XMLElement& e, const std::string& text) const {
-    return file_ + ":" + std::to_string(e.GetLineNum()) + ": warning: <" + e.Name() + ">: " + text;
+  std::string warning_at(const XmlElement& e, const std::string& text) const {
+    return file_ + ":" + std::to_string(e.line()) + ": warning: <" + e.name() + ">: " + text;
   }
 
   /// The first element `name`; a later one is ignored with a warning, as the course reads only
   /// the first. Throws when a required one is missing.
-  const XMLElement* first(std::string_view name, bool required) {
+  const XmlElement* first(std::string_view name, bool required) {
     const auto& found = all(groups_, name);
     if (found.empty()) {
       if (!required) return nullptr;
@@ -92,14 +91,14 @@ class RigidBodySceneReader {
 
   void warn_ignored_elements() {
     for (std::string_view name : kParticleElements) {
-      for (const XMLElement* e : all(groups_, name)) {
+      for (const XmlElement* e : all(groups_, name)) {
         scene_.warnings.push_back(
             warning_at(*e, "ignored: a rigid-body scene reads no particle elements"));
       }
     }
     for (const ForceKind& kind : force_kinds()) {
       if (kind.course_theme == 3) continue;
-      for (const XMLElement* e : all(groups_, kind.tag)) {
+      for (const XmlElement* e : all(groups_, kind.tag)) {
         scene_.warnings.push_back(
             warning_at(*e, "ignored: a particle force in a rigid-body scene"));
       }
@@ -128,32 +127,32 @@ class RigidBodySceneReader {
       model.duration = r.non_negative("time");
       keep_warnings(r);
     }
-    if (const XMLElement* e = first("maxsimfreq", false)) {
+    if (const XmlElement* e = first("maxsimfreq", false)) {
       ElementReader r = reader(*e, -1);
       scene_.max_sim_frequency = r.positive("max");
       keep_warnings(r);
     }
-    if (const XMLElement* e = first("description", false)) {
+    if (const XmlElement* e = first("description", false)) {
       ElementReader r = reader(*e, -1);
       scene_.description = r.text("text");
       keep_warnings(r);
     }
-    if (const XMLElement* e = first("backgroundcolor", false)) {
+    if (const XmlElement* e = first("backgroundcolor", false)) {
       ElementReader r = reader(*e, -1);
       scene_.appearance.background = r.color();
       keep_warnings(r);
     }
-    if (const XMLElement* e = first("viewport", false)) {
+    if (const XmlElement* e = first("viewport", false)) {
       ElementReader r = reader(*e, -1);
       scene_.appearance.viewport = Viewport{r.number("cx"), r.number("cy"), r.positive("size")};
       keep_warnings(r);
     }
   }
 
-  void check_count(const std::vector<const XMLElement*>& elements, const char* what) {
+  void check_count(const std::vector<const XmlElement*>& elements, const char* what) {
     if (static_cast<std::int64_t>(elements.size()) > limits_.max_particles) {
-      throw SceneError(file_, elements.front()->GetLineNum(),
-                       std::string("<") + elements.front()->Name() + ">",
+      throw SceneError(file_, elements.front()->line(),
+                       std::string("<") + elements.front()->name() + ">",
                        "the scene declares " + std::to_string(elements.size()) + " " + what + ", " +
                            over_limit(limits_.max_particles, what, "--max-particles"));
     }
@@ -275,7 +274,7 @@ class RigidBodySceneReader {
   /// maxgroupcontacts="..." (its limits) go to model.rigid_bodies->contact.
   RigidContactSettings read_contact(const RigidBodies& bodies) {
     RigidContactSettings settings;
-    const XMLElement* e = first("rigidbodycollisionhandling", false);
+    const XmlElement* e = first("rigidbodycollisionhandling", false);
     if (e == nullptr) return settings;  // no contact: model.collisions keeps "none"
     ElementReader r = reader(*e, -1);
     if (!r.has("detection")) {
@@ -431,7 +430,7 @@ bool is_rigid_body_scene(const ElementGroups& groups, const std::string& file) {
   const auto& simtypes = all(groups, "simtype");
   if (simtypes.empty()) return false;
   if (simtypes.size() > 1) {
-    throw SceneError(file, simtypes[1]->GetLineNum(), "<simtype>", "may appear only once");
+    throw SceneError(file, simtypes[1]->line(), "<simtype>", "may appear only once");
   }
   ElementReader r(*simtypes[0], file, -1, 0, 0);
   const std::string type = r.text("type");

@@ -10,15 +10,13 @@
 
 #include "core/limits.h"
 #include "core/scene.h"
+#include "io/xml_tree.h"
 
-namespace tinyxml2 {
-class XMLElement;
-}
 
 namespace fosssim {
 
 /// The root's elements grouped by name, in document order.
-using ElementGroups = std::map<std::string, std::vector<const tinyxml2::XMLElement*>, std::less<>>;
+using ElementGroups = std::map<std::string, std::vector<const XmlElement*>, std::less<>>;
 
 /// True for the elements that only rigid-body scenes hold (and <simtype>).
 bool is_rigid_body_element(std::string_view name);

@@ -1,6 +1,6 @@
 #include "io/scene_loader.h"
 
-#include <tinyxml2.h>
+#include "io/xml_tree.h"
 
 #include <algorithm>
 #include <array>
@@ -24,7 +24,6 @@ namespace fosssim {
 
 namespace {
 
-using tinyxml2::XMLElement;
 
 constexpr std::array<const char*, 3> kPositionNames = {"px", "py", "pz"};
 constexpr std::array<const char*, 3> kVelocityNames = {"vx", "vy", "vz"};
@@ -60,42 +59,6 @@ std::string element_suggestion(std::string_view unknown) {
   return "";
 }
 
-/// The element tinyxml2 names in its error text ("... XMLElement name=particle"), as "<particle>".
-std::string element_in_xml_error(const tinyxml2::XMLDocument& doc) {
-  const std::string text = doc.ErrorStr() ? doc.ErrorStr() : "";
-  const auto at = text.find("name=");
-  if (at == std::string::npos) return "";
-  return "<" + text.substr(at + 5) + ">";
-}
-
-SceneError xml_syntax_error(const std::string& file, const tinyxml2::XMLDocument& doc) {
-  std::string problem;
-  switch (doc.ErrorID()) {
-    case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT:
-      problem = "this element is not closed, or is closed with a different name";
-      break;
-    case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE:
-      problem = "a malformed or repeated attribute (values need quotes: name=\"value\")";
-      break;
-    case tinyxml2::XML_ERROR_PARSING_ELEMENT:
-      problem = "a malformed element";
-      break;
-    case tinyxml2::XML_ERROR_PARSING_TEXT:
-      problem = "text outside of any element (is this an XML scene file?)";
-      break;
-    case tinyxml2::XML_ERROR_PARSING:
-      problem = "an element opened on this line is never closed (the file ends inside it)";
-      break;
-    case tinyxml2::XML_ERROR_PARSING_COMMENT:
-      problem = "a comment is not closed (missing -->)";
-      break;
-    default:
-      problem = std::string("unreadable (") + doc.ErrorName() + ")";
-  }
-  return SceneError(file, doc.ErrorLineNum(), element_in_xml_error(doc),
-                    "not well-formed XML: " + problem);
-}
-
 /// An integrator's options as attributes of its <integrator> element.
 class AttributeOptions final : public OptionSource {
  public:
@@ -127,17 +90,17 @@ class SceneParser {
     scene_.warnings = std::move(warnings);
   }
 
-  Scene parse(const XMLElement& root) {
+  Scene parse(const XmlElement& root) {
     scene_.source = file_;
     read_root(root);
     group_children(root);
     if (is_rigid_body_scene(elements_, file_)) {
       if (scene_.model.dim != 2) {
-        throw SceneError(file_, root.GetLineNum(), "<scene>",
+        throw SceneError(file_, root.line(), "<scene>",
                          "rigid bodies are planar: a rigid-body scene cannot be dim=\"3\"");
       }
       if (const auto& bodies = all(std::string(kElasticBodyElement)); !bodies.empty()) {
-        throw SceneError(file_, bodies[0]->GetLineNum(), "<elasticbody>",
+        throw SceneError(file_, bodies[0]->line(), "<elasticbody>",
                          "an elastic body is made of particles: a rigid-body scene cannot hold "
                          "one");
       }
@@ -146,7 +109,7 @@ class SceneParser {
     }
     for (const char* tag : {"rigidbodyvertex", "rigidbody", "rigidbodyintegrator"}) {
       if (!all(tag).empty()) {
-        throw SceneError(file_, all(tag)[0]->GetLineNum(), std::string("<") + tag + ">",
+        throw SceneError(file_, all(tag)[0]->line(), std::string("<") + tag + ">",
                          "belongs to rigid-body scenes, which start with <simtype "
                          "type=\"rigid-body\"/>");
       }
@@ -164,7 +127,7 @@ class SceneParser {
   }
 
  private:
-  ElementReader reader(const XMLElement& element, int index) {
+  ElementReader reader(const XmlElement& element, int index) {
     ElementReader r(element, file_, index, scene_.model.num_particles(),
                     static_cast<int>(scene_.model.edges.size()));
     r.skip_broken(&broken_);
@@ -182,9 +145,9 @@ class SceneParser {
     for (auto& warning : r.finish()) scene_.warnings.push_back(warning);
   }
 
-  void read_root(const XMLElement& root) {
-    if (std::string_view(root.Name()) != "scene") {
-      throw SceneError(file_, root.GetLineNum(), std::string("<") + root.Name() + ">",
+  void read_root(const XmlElement& root) {
+    if (std::string_view(root.name()) != "scene") {
+      throw SceneError(file_, root.line(), std::string("<") + root.name() + ">",
                        "the root element must be <scene>");
     }
     ElementReader r = reader(root, -1);
@@ -200,50 +163,51 @@ class SceneParser {
     }
   }
 
-  void group_children(const XMLElement& root) {
-    for (const XMLElement* e = root.FirstChildElement(); e; e = e->NextSiblingElement()) {
-      if (!is_known_element(e->Name())) {
-        errors_.add(SceneError(file_, e->GetLineNum(), std::string("<") + e->Name() + ">",
-                               "unknown element" + element_suggestion(e->Name())));
+  void group_children(const XmlElement& root) {
+    for (const XmlElement& element : root.children()) {
+      const XmlElement* e = &element;
+      if (!is_known_element(e->name())) {
+        errors_.add(SceneError(file_, e->line(), std::string("<") + e->name() + ">",
+                               "unknown element" + element_suggestion(e->name())));
         continue;
       }
       // Only the mesh elements hold elements (<pin>, read with them); anything inside another
       // element would otherwise be dropped without a word.
-      const XMLElement* child = e->FirstChildElement();
-      if (child != nullptr && !is_mesh_element(e->Name())) {
-        errors_.add(SceneError(file_, child->GetLineNum(), std::string("<") + child->Name() + ">",
-                               std::string("inside <") + e->Name() +
-                                   ">, which holds no elements: close <" + e->Name() +
+      const XmlElement* child = e->children().empty() ? nullptr : &e->children().front();
+      if (child != nullptr && !is_mesh_element(e->name())) {
+        errors_.add(SceneError(file_, child->line(), std::string("<") + child->name() + ">",
+                               std::string("inside <") + e->name() +
+                                   ">, which holds no elements: close <" + e->name() +
                                    " .../> before it"));
       }
-      elements_[e->Name()].push_back(e);
+      elements_[e->name()].push_back(e);
     }
   }
 
-  const std::vector<const XMLElement*>& all(const std::string& name) { return elements_[name]; }
+  const std::vector<const XmlElement*>& all(const std::string& name) { return elements_[name]; }
 
   /// The element that may appear at most once, or nullptr; required ones must appear.
-  const XMLElement* single(const XMLElement& root, const char* name, bool required) {
+  const XmlElement* single(const XmlElement& root, const char* name, bool required) {
     const auto& found = all(name);
     if (found.empty()) {
       if (required) {
-        errors_.add(SceneError(file_, root.GetLineNum(), "<scene>",
+        errors_.add(SceneError(file_, root.line(), "<scene>",
                                std::string("the required element <") + name + "> is missing"));
       }
       return nullptr;
     }
     if (found.size() > 1) {
       errors_.add(SceneError(
-          file_, found[1]->GetLineNum(), std::string("<") + name + ">",
-          "may appear only once (first at line " + std::to_string(found[0]->GetLineNum()) + ")"));
+          file_, found[1]->line(), std::string("<") + name + ">",
+          "may appear only once (first at line " + std::to_string(found[0]->line()) + ")"));
     }
     return found[0];
   }
 
   /// Reads the element `name` (at most one; `required` ones must appear) with `read`.
   template <class Read>
-  void read_single(const XMLElement& root, const char* name, bool required, Read&& read) {
-    if (const XMLElement* e = single(root, name, required)) {
+  void read_single(const XmlElement& root, const char* name, bool required, Read&& read) {
+    if (const XmlElement* e = single(root, name, required)) {
       errors_.attempt([&] {
         ElementReader r = reader(*e, -1);
         read(r);
@@ -252,7 +216,7 @@ class SceneParser {
     }
   }
 
-  void read_settings(const XMLElement& root) {
+  void read_settings(const XmlElement& root) {
     SceneModel& model = scene_.model;
     read_single(root, "integrator", true, [&](ElementReader& r) {
       const std::string type = r.text("type");
@@ -282,13 +246,13 @@ class SceneParser {
     read_single(root, "viewport", false, [&](ElementReader& r) {
       scene_.appearance.viewport = Viewport{r.number("cx"), r.number("cy"), r.positive("size")};
     });
-    if (const XMLElement* e = single(root, "camera3d", false)) {
+    if (const XmlElement* e = single(root, "camera3d", false)) {
       errors_.attempt([&] { read_camera3d(*e); });
     }
   }
 
   /// <camera3d yaw pitch distance tx ty tz fov projection>, every attribute optional.
-  void read_camera3d(const XMLElement& e) {
+  void read_camera3d(const XmlElement& e) {
     ElementReader r = reader(e, -1);
     if (scene_.model.dim != 3) r.fail("applies to 3D scenes only (<scene dim=\"3\">)");
     OrbitViewSettings view;
@@ -320,7 +284,7 @@ class SceneParser {
     const auto& particles = all("particle");
     if (static_cast<std::int64_t>(particles.size()) > files_.limits().max_particles) {
       stop(SceneError(
-          file_, particles.front()->GetLineNum(), "<particle>",
+          file_, particles.front()->line(), "<particle>",
           "the scene declares " + std::to_string(particles.size()) + " particles, " +
               over_limit(files_.limits().max_particles, "particles", "--max-particles")));
     }
@@ -442,9 +406,9 @@ class SceneParser {
   BrokenElements broken_;
 };
 
-/// Refuses, before tinyxml2 reads it, an element of more than `limit` attributes (counted as the
-/// '=' signs outside quotes within its tag), in one linear pass: tinyxml2's own check for
-/// repeated attributes takes quadratic time (60,000 attributes took 16 s).
+/// Refuses, before the XML parser reads it, an element of more than `limit` attributes (counted
+/// as the '=' signs outside quotes within its tag), in one linear pass: the check for repeated
+/// attributes (io/xml_tree) takes quadratic time in them.
 void check_attribute_counts(std::string_view text, const std::string& name, std::int64_t limit) {
   int line = 1, tag_line = 1;
   bool in_tag = false;
@@ -486,7 +450,7 @@ Scene load_scene_text(std::string_view text, const std::string& name, InputFiles
     throw SceneError(name, 0, "", "the file is empty (expected a <scene> element)");
   }
   if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
-    // tinyxml2 would stop reading there and ignore the rest of the file.
+    // The parser reads up to a NUL and would ignore the rest of the file.
     const auto line =
         1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
     throw SceneError(name, static_cast<int>(line), "",
@@ -501,17 +465,14 @@ Scene load_scene_text(std::string_view text, const std::string& name, InputFiles
   if (fixed.find("<rigidbody") != std::string::npos) {
     fixed = number_repeated_hull_attributes(fixed);
   }
-  tinyxml2::XMLDocument doc;
-  if (doc.Parse(fixed.data(), fixed.size()) != tinyxml2::XML_SUCCESS) {
-    throw xml_syntax_error(name, doc);
-  }
-  const XMLElement* root = doc.RootElement();
-  if (root == nullptr) throw SceneError(name, 0, "", "the file holds no XML element");
-  if (const XMLElement* second = root->NextSiblingElement()) {
-    throw SceneError(name, second->GetLineNum(), std::string("<") + second->Name() + ">",
+  const std::vector<XmlElement> top = parse_xml(fixed, name);
+  if (top.empty()) throw SceneError(name, 0, "", "the file holds no XML element");
+  if (top.size() > 1) {
+    const XmlElement& second = top[1];
+    throw SceneError(name, second.line(), std::string("<") + second.name() + ">",
                      "a second top-level element; a scene file holds one <scene>");
   }
-  Scene scene = SceneParser(name, files, std::move(warnings)).parse(*root);
+  Scene scene = SceneParser(name, files, std::move(warnings)).parse(top.front());
   scene.files = files.paths();
   return scene;
 }

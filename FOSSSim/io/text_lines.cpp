@@ -3,6 +3,10 @@
 #include <charconv>
 #include <cmath>
 
+#if defined(__EMSCRIPTEN__)
+#include <fast_float/fast_float.h>
+#endif
+
 namespace fosssim {
 
 namespace {
@@ -53,10 +57,19 @@ std::string_view without_plus(std::string_view text) {
 }
 }  // namespace
 
+std::from_chars_result double_from_chars(const char* first, const char* last, double& value) {
+#if defined(__EMSCRIPTEN__)
+  const fast_float::from_chars_result result = fast_float::from_chars(first, last, value);
+  return {result.ptr, result.ec};
+#else
+  return std::from_chars(first, last, value);
+#endif
+}
+
 bool parse_finite(std::string_view text, double& value) {
   text = without_plus(text);
   if (text.empty()) return false;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  const auto [end, error] = double_from_chars(text.data(), text.data() + text.size(), value);
   return error == std::errc() && end == text.data() + text.size() && std::isfinite(value);
 }
 

@@ -2,6 +2,7 @@
 // Small helpers for line-oriented text formats (OBJ, MEDIT): words with their line numbers,
 // strict number parsing; whole-file reads come from io/input_files.h.
 
+#include <charconv>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,6 +24,10 @@ std::vector<Word> split_words(std::string_view text, char comment = '#');
 
 /// The words of one line (no comment handling).
 std::vector<std::string_view> split_line(std::string_view line);
+
+/// std::from_chars for a double in the general format, in every build: Emscripten 3.1.6's C++
+/// library lacks it, and fast_float (correctly rounded too, so with the same result) stands in.
+std::from_chars_result double_from_chars(const char* first, const char* last, double& value);
 
 /// Parses the whole of `text` as one finite decimal number (locale-independent).
 bool parse_finite(std::string_view text, double& value);

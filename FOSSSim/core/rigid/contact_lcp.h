@@ -61,6 +61,8 @@ bool is_degenerate(const Eigen::MatrixXd& A);
 /// then check_contact_solution. The library's "LCP internal error" message is caught, not
 /// printed, and makes the answer invalid. Call it on non-degenerate problems only: on singular
 /// ones the method has no iteration limit.
+/// The WebAssembly build has no build of that library: there it answers with solve_contact_qp
+/// (the same solution to round-off on these problems; contact_lcp_dantzig_web.cpp).
 ContactSolveResult solve_contact_lcp_dantzig(const ContactProblem& problem);
 
 /// Goldfarb and Idnani's dual active-set method (1983) for the quadratic program above,

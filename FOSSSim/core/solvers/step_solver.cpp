@@ -6,6 +6,13 @@
 namespace fosssim {
 
 namespace {
+#ifdef FOSSSIM_NO_SPARSE_DIRECT
+/// A build without SuiteSparse and MUMPS (WebAssembly) keeps large systems on the Eigen path
+/// too; only a scene that names the sparse direct solvers reaches their (refusing) classes.
+constexpr bool kHaveSparseDirect = false;
+#else
+constexpr bool kHaveSparseDirect = true;
+#endif
 /// Accept a solution when its residual is this small relative to the system's scale.
 constexpr double kResidualTolerance = 1e-12;
 /// GMRES never keeps more directions than this; a factor that needs more is replaced.
@@ -69,7 +76,8 @@ void StepSolver::take_pattern(const SparseMatrix& A) {
   refactor_due_ = true;
   suitesparse_ = false;
   if (choice_ != SolverChoice::kEigen && A.rows() > 0 &&
-      (choice_ == SolverChoice::kSparseDirect || A.rows() >= kSparseDirectFromSize)) {
+      (choice_ == SolverChoice::kSparseDirect ||
+       (kHaveSparseDirect && A.rows() >= kSparseDirectFromSize))) {
     // A pattern that is not structurally symmetric has no symmetric part of its own pattern;
     // step matrices always are (pair blocks come in pairs).
     suitesparse_ = symmetric_ ? UpperSymmetricPart::is_structurally_symmetric(A)

@@ -1,0 +1,356 @@
+#!/usr/bin/env python3
+"""The page's tests in a real browser: Debian's headless Chromium against build/web/page.
+
+Each test serves the page over HTTP on 127.0.0.1 (a free port; /fixtures/ serves the test's
+work folder), opens it with a ?test=... query (web/page/fosssim-page.js, runTest), lets
+Chromium run it and reads the result the page writes into <pre id="test-result"> from the DOM
+Chromium dumps (--dump-dom), or takes a screenshot (--screenshot). Every browser run is bounded
+by `timeout -k`.
+
+Chromium runs with --no-sandbox: as root (CI, containers) it refuses to start otherwise, since
+its sandbox relies on unprivileged user namespaces. Here that is acceptable: it loads only our
+own static page from a server this script started on the loopback interface, with no other
+site or network access, in a throwaway profile.
+
+  browser_test.py digests  --page DIR --browser chromium --manifest golden.tsv SCENE...
+  browser_test.py error    --page DIR --browser chromium
+  browser_test.py grade    --page DIR --browser chromium --native FOSSSim --work DIR SCENE
+  browser_test.py picture  --page DIR --browser chromium --native FOSSSim --work DIR SCENE STEPS
+  browser_test.py timing   --page DIR --browser chromium [--native FOSSSim] SCENE_FILE
+      (a measurement, not a test: the page's load time and the time per step of SCENE_FILE in
+       the browser, and with --native the native program's time per step on the same scene)
+
+Exit 0 on success, 1 on failure; a test that needs a native FOSSSim prints "skipped" and
+exits 0 when there is none (ctest's SKIP_REGULAR_EXPRESSION).
+"""
+
+import argparse
+import functools
+import html
+import http.server
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import urllib.parse
+import xml.etree.ElementTree as ElementTree
+import zlib
+
+BROWSER_SECONDS = 300  # the longest browser run: the digests of a set of scenes
+
+
+class Handler(http.server.SimpleHTTPRequestHandler):
+    """The page's folder, and /fixtures/NAME from the test's work folder."""
+
+    fixtures = None
+
+    def translate_path(self, path):
+        route = urllib.parse.urlsplit(path).path
+        if route.startswith("/fixtures/") and self.fixtures:
+            return os.path.join(self.fixtures, os.path.basename(route))
+        return super().translate_path(path)
+
+    def do_POST(self):
+        """The timing page posts its figures here (virtual time would stop its clock)."""
+        body = self.rfile.read(int(self.headers["Content-Length"])).decode()
+        self.send_response(204)
+        self.end_headers()
+        self.server.posted = body
+        self.server.arrived.set()
+
+    def log_message(self, *args):
+        pass
+
+
+class Server:
+    def __init__(self, page, fixtures=None):
+        handler = type("TestHandler", (Handler,), {"fixtures": fixtures})
+        self.httpd = http.server.ThreadingHTTPServer(
+            ("127.0.0.1", 0), functools.partial(handler, directory=page))
+        self.httpd.arrived = threading.Event()
+        self.httpd.posted = None
+        self.thread = threading.Thread(target=self.httpd.serve_forever, daemon=True)
+
+    def __enter__(self):
+        self.thread.start()
+        return f"http://127.0.0.1:{self.httpd.server_address[1]}/"
+
+    def __exit__(self, *args):
+        self.httpd.shutdown()
+        self.httpd.server_close()
+
+
+def run_browser(browser, url, extra, seconds=BROWSER_SECONDS, real_time=False):
+    """Chromium's standard output for `url` (the DOM with --dump-dom). With real_time, the
+    page's clock is the wall clock and Chromium stops after `seconds` - 20 s instead of when
+    virtual time runs out (virtual time stands still while a script runs)."""
+    with tempfile.TemporaryDirectory(prefix="fosssim-chromium-") as profile:
+        command = ["timeout", "-k", "10", str(seconds), browser, "--headless", "--no-sandbox",
+                   "--disable-gpu", "--hide-scrollbars", "--no-first-run",
+                   f"--user-data-dir={profile}",
+                   # Chromium dumps the DOM or takes the screenshot once this much virtual time
+                   # has passed with nothing left to load: the page's work runs before that.
+                   f"--timeout={1000 * (seconds - 20)}" if real_time
+                   else "--virtual-time-budget=600000", *extra, url]
+        done = subprocess.run(command, capture_output=True, text=True)
+        if done.returncode != 0:
+            raise SystemExit(f"FAILED: {' '.join(command)} exited {done.returncode}:\n"
+                             f"{done.stderr[-2000:]}")
+        return done.stdout
+
+
+def page_result(browser, url, **options):
+    """The text the page wrote into #test-result, or a failure when it never finished."""
+    dom = run_browser(browser, url, ["--dump-dom"], **options)
+    found = re.search(r'<pre id="test-result"( data-done="1")?>(.*?)</pre>', dom, re.S)
+    if not found:
+        raise SystemExit(f"FAILED: no #test-result in the page's DOM:\n{dom[:2000]}")
+    if not found.group(1):
+        raise SystemExit("FAILED: the page did not finish the test (no data-done)")
+    return html.unescape(found.group(2))
+
+
+def fail(message):
+    print(f"FAILED: {message}")
+    sys.exit(1)
+
+
+def native_or_skip(native):
+    if not native or not os.path.exists(native):
+        print(f"skipped: no native FOSSSim at {native} to compare with")
+        sys.exit(0)
+
+
+def test_digests(args, browser):
+    """The trajectory digests computed in the page equal the native manifest's."""
+    manifest = {}
+    with open(args.manifest) as lines:
+        for line in lines:
+            fields = line.rstrip("\n").split("\t")
+            if len(fields) >= 5:
+                manifest[fields[0]] = (fields[3], fields[4])
+    with Server(args.page) as base:
+        text = page_result(browser, f"{base}index.html?test=digests&scenes={','.join(args.items)}")
+    rows = {row.split("\t")[0]: row.split("\t")[1:] for row in text.splitlines() if row}
+    bad = 0
+    for scene in args.items:
+        expected = manifest.get(scene)
+        got = rows.get(scene)
+        if expected is None:
+            fail(f"{scene}: no entry in {args.manifest}")
+        if got is None or tuple(got) != expected:
+            print(f"{scene}: the page gave {got}, the manifest has {list(expected)}")
+            bad += 1
+        else:
+            print(f"{scene}: same bytes in the browser ({got[0]} bytes, sha256 {got[1]})")
+    if bad:
+        fail(f"{bad} of {len(args.items)} scenes differ from the native manifest")
+
+
+BROKEN_SCENE = ('<scene>\n<duration time="1"/>\n'
+                '<particle m="1" px="0" py="0" vx="0" vy="0" fixde="0"/>\n</scene>\n')
+
+
+def test_error(args, browser):
+    """A scene with errors shows each with file, line and message, as the command line."""
+    query = urllib.parse.urlencode({"test": "error", "scene": BROKEN_SCENE})
+    with Server(args.page) as base:
+        text = page_result(browser, f"{base}index.html?{query}")
+    print(text)
+    for expected in [
+            "scene.xml:1: error: <scene>: the required element <integrator> is missing",
+            'scene.xml:3: error: <particle> 0: attribute "fixed" is missing (the element has '
+            '"fixde", which is not read: a misspelling?)']:
+        if expected not in text.splitlines():
+            fail(f"the page does not show the line {expected!r}")
+
+
+def run_native(native, arguments):
+    return subprocess.run(["timeout", "-k", "10", "600", native, *arguments],
+                          capture_output=True, text=True)
+
+
+def test_grade(args, browser):
+    """Grading an uploaded trajectory in the page gives the native -i report and verdict: the
+    native run's own trajectory (passes) and one with a byte of its last frame changed."""
+    native_or_skip(args.native)
+    scene = args.items[0]
+    source = os.path.join(args.source, scene)
+    os.makedirs(args.work, exist_ok=True)
+    good = os.path.join(args.work, "good.bin")
+    bad = os.path.join(args.work, "bad.bin")
+    made = run_native(args.native, ["-s", source, "-d", "0", "-q", "-o", good])
+    if made.returncode != 0:
+        fail(f"the native run failed: {made.stderr}")
+    data = bytearray(open(good, "rb").read())
+    data[-3] ^= 0x40  # a mantissa byte of the last double: a change of about 1e-5 relative
+    with open(bad, "wb") as out:
+        out.write(data)
+    with Server(args.page, fixtures=args.work) as base:
+        for upload in (good, bad):
+            native = run_native(args.native, ["-s", source, "-d", "0", "-q", "-i", upload])
+            passed = native.returncode == 0
+            expected = (native.stdout + native.stderr +
+                        ("verdict: passed" if passed else "verdict: failed"))
+            query = urllib.parse.urlencode(
+                {"test": "grade", "scene": scene, "upload": "fixtures/" + os.path.basename(upload)})
+            text = page_result(browser, f"{base}index.html?{query}")
+            if text != expected:
+                fail(f"{os.path.basename(upload)}: the page's report\n{text}\n"
+                     f"differs from the native -i output\n{expected}")
+            print(f"{os.path.basename(upload)}: the native report and verdict "
+                  f"({'passed' if passed else 'failed'}, exit {native.returncode})")
+    if not expected.endswith("verdict: failed"):
+        fail("the changed trajectory passed: the test checks nothing")
+
+
+def read_png(path):
+    """(width, height, rows of (r, g, b)) of an 8-bit RGB or RGBA PNG without interlacing."""
+    data = open(path, "rb").read()
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        fail(f"{path}: not a PNG")
+    at, chunks, header = 8, [], None
+    while at < len(data):
+        length = int.from_bytes(data[at:at + 4], "big")
+        kind = data[at + 4:at + 8]
+        body = data[at + 8:at + 8 + length]
+        if kind == b"IHDR":
+            header = body
+        elif kind == b"IDAT":
+            chunks.append(body)
+        at += 12 + length
+    width, height = int.from_bytes(header[0:4], "big"), int.from_bytes(header[4:8], "big")
+    depth, color, interlace = header[8], header[9], header[12]
+    if depth != 8 or color not in (2, 6) or interlace != 0:
+        fail(f"{path}: depth {depth}, colour type {color}, interlace {interlace} not read here")
+    channels = 3 if color == 2 else 4
+    raw = zlib.decompress(b"".join(chunks))
+    stride = width * channels
+    rows, previous = [], bytearray(stride)
+    for y in range(height):
+        kind = raw[y * (stride + 1)]
+        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - channels] if i >= channels else 0
+            b = previous[i]
+            c = previous[i - channels] if i >= channels else 0
+            if kind == 1:
+                line[i] = (line[i] + a) & 255
+            elif kind == 2:
+                line[i] = (line[i] + b) & 255
+            elif kind == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append([tuple(line[x * channels:x * channels + 3]) for x in range(width)])
+        previous = line
+    return width, height, rows
+
+
+def foreground(rows, top):
+    """The pixels (x, y), y >= top, that differ from the background (the bottom-right pixel)."""
+    background = rows[-1][-1]
+    return {(x, y) for y in range(top, len(rows)) for x, pixel in enumerate(rows[y])
+            if sum(abs(p - q) for p, q in zip(pixel, background)) > 60}
+
+
+def test_picture(args, browser):
+    """A screenshot of the page's canvas after K steps is not blank and has its drawing where
+    the native picture of the same state (FOSSSim -g 1) has it."""
+    native_or_skip(args.native)
+    scene, steps = args.items[0], int(args.items[1])
+    source = os.path.join(args.source, scene)
+    dt = float(ElementTree.parse(source).getroot().find("integrator").get("dt"))
+    os.makedirs(args.work, exist_ok=True)
+    folder = os.path.join(args.work, "native")
+    made = run_native(args.native, ["-s", source, "-d", "0", "-q", "-g", "1", "--png-dir", folder,
+                                    "--size", "640x480", "--duration", repr(steps * dt)])
+    if made.returncode != 0:
+        fail(f"the native pictures failed: {made.stderr}")
+    native_png = os.path.join(folder, f"frame_{steps:05d}.png")
+    page_png = os.path.join(args.work, "page.png")
+    if os.path.exists(page_png):
+        os.remove(page_png)
+    query = urllib.parse.urlencode({"test": "picture", "scene": scene, "steps": steps})
+    with Server(args.page) as base:
+        run_browser(browser, f"{base}index.html?{query}",
+                    [f"--screenshot={page_png}", "--window-size=640,480"])
+    _, _, page_rows = read_png(page_png)
+    _, _, native_rows = read_png(native_png)
+    # The native picture writes the time at the top-left corner; the page shows it beside the
+    # canvas. Rows above 40 are left out of the comparison.
+    page, native = foreground(page_rows, 40), foreground(native_rows, 40)
+    if len(page) < 50:
+        fail(f"the page's picture is blank ({len(page)} pixels of drawing)")
+    # Chromium and Cairo smooth edges differently, so a pixel of one picture's drawing counts
+    # as placed when the other picture has drawing within one pixel of it.
+    def near(pixels, other):
+        return sum(any((x + i, y + j) in other for i in (-1, 0, 1) for j in (-1, 0, 1))
+                   for x, y in pixels) / len(pixels)
+    page_placed, native_placed = near(page, native), near(native, page)
+    print(f"{len(page)} pixels of drawing in the page, {len(native)} in the native picture; "
+          f"{100 * page_placed:.1f} % of the page's within a pixel of the native drawing, "
+          f"{100 * native_placed:.1f} % of the native within a pixel of the page's")
+    if min(page_placed, native_placed) < 0.98:
+        fail("the page does not draw the particles where the native picture has them")
+
+
+def test_timing(args, browser):
+    """Prints the page's load time and a scene's time per step, in the browser and natively."""
+    scene = os.path.abspath(args.items[0])
+    query = urllib.parse.urlencode({"test": "timing", "url": "fixtures/" + os.path.basename(scene)})
+    server = Server(args.page, fixtures=os.path.dirname(scene))
+    with server as base, tempfile.TemporaryDirectory(prefix="fosssim-chromium-") as profile:
+        # Real time: no --virtual-time-budget (its clock stands still while a script runs);
+        # the page posts its figures and Chromium is stopped then.
+        browser_run = subprocess.Popen(
+            ["timeout", "-k", "10", "300", browser, "--headless", "--no-sandbox", "--disable-gpu",
+             "--no-first-run", f"--user-data-dir={profile}", f"{base}index.html?{query}"],
+            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        arrived = server.httpd.arrived.wait(280)
+        browser_run.terminate()
+        browser_run.wait()
+    if not arrived:
+        fail("the timing page posted nothing")
+    text = server.httpd.posted
+    figures = dict(line.split("\t") for line in text.splitlines())
+    print(f"page load (navigation start to FOSSSim ready): {figures['load_ms']} ms")
+    print(f"browser: {figures['steps']} steps, {figures['ms_per_step']} ms per step")
+    if args.native and os.path.exists(args.native):
+        start = time.perf_counter()
+        done = run_native(args.native, ["-s", scene, "-d", "0", "-q"])
+        elapsed = time.perf_counter() - start
+        if done.returncode != 0:
+            fail(f"the native run failed: {done.stderr}")
+        native = 1000 * elapsed / int(figures["steps"])
+        print(f"native: {native:.3f} ms per step (the whole run, loading included); "
+              f"browser / native = {float(figures['ms_per_step']) / native:.2f}")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("test", choices=["digests", "error", "grade", "picture", "timing"])
+    parser.add_argument("items", nargs="*")
+    parser.add_argument("--page", required=True)
+    parser.add_argument("--browser", required=True)
+    parser.add_argument("--source", default=".")
+    parser.add_argument("--manifest")
+    parser.add_argument("--native")
+    parser.add_argument("--work")
+    args = parser.parse_intermixed_args()
+    if shutil.which(args.browser) is None:
+        fail(f"no browser {args.browser}; tools/install-deps.sh --web installs Debian's chromium")
+    {"digests": test_digests, "error": test_error, "grade": test_grade,
+     "picture": test_picture, "timing": test_timing}[args.test](args, args.browser)
+    if args.test != "timing":
+        print("passed")
+
+
+if __name__ == "__main__":
+    main()
