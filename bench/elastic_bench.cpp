@@ -5,8 +5,9 @@
 // than wall time on the shared 2-core machine, and every solver runs on this thread (BLAS and
 // OpenMP are set to one thread).
 //
-// Usage: bench_elastic [--quick] [--steps N] [--dense-max-unknowns N] [--solvers a,b,...]
+// Usage: bench_elastic [--quick] [--profile-amg] [--steps N] [--dense-max-unknowns N] [--solvers a,b,...]
 //   --quick                sheets of 10² to 10⁴ triangles, no cloth
+//   --profile-amg          only BoomerAMG's setup, V-cycle and CG times on the sheets
 //   --steps N              steps timed after the first (5)
 //   --dense-max-unknowns N the largest system the dense baseline factors (12000: 1.2 GB)
 //   --solvers LIST         the `solver` option values compared (auto,amg)
@@ -26,6 +27,7 @@
 #include "bench_scenes.h"
 #include "core/force_set.h"
 #include "core/integrators/implicit_euler.h"
+#include "core/solvers/amg_solver.h"
 #include "core/integrators/integrator.h"
 #include "core/integrators/linearized_implicit_euler.h"
 #include "core/solvers/memory_policy.h"
@@ -115,6 +117,8 @@ const char* path_name(Factorization f) {
     case Factorization::kCholesky: return "GMRES+CHOLMOD";
     case Factorization::kUmfpack: return "GMRES+UMFPACK";
     case Factorization::kMumps: return "GMRES+MUMPS";
+    case Factorization::kAmgCg: return "CG+BoomerAMG";
+    case Factorization::kAmgGmres: return "GMRES+BoomerAMG";
   }
   return "?";
 }
@@ -144,7 +148,7 @@ Timing time_steps(const Scene& scene, Integrator& integrator, int steps) {
   if (solver) {
     t.krylov = static_cast<double>(solver->statistics().krylov_iterations - before.krylov_iterations) /
                steps;
-    t.fallbacks = solver->statistics().direct_fallbacks;
+    t.fallbacks = solver->statistics().direct_fallbacks + solver->statistics().amg_failures;
     t.path = path_name(solver->last_factorization());
   } else {
     t.path = "dense LU";
@@ -176,6 +180,7 @@ double dense_iteration_ms(const Scene& scene) {
 
 struct Options {
   bool quick = false;
+  bool profile = false;  // --profile-amg: only where multigrid's time goes
   int steps = 5;
   long dense_max_unknowns = 12000;
   long dense_full_max_unknowns = 3000;  // above: one iteration timed, times FOSSSim's count
@@ -261,6 +266,42 @@ void sheets(const Options& options) {
   }
 }
 
+/// Where multigrid's time goes on the sheets' first step matrices: one BoomerAMG setup, one
+/// V-cycle, one CG solve to 1e-12, each timed (thread CPU), in V-cycles.
+void amg_profile(const Options& options) {
+  std::printf("\nBoomerAMG on the sheet's first step matrix (thread CPU ms)\n\n"
+              "| triangles | unknowns | setup | V-cycle | setup / V-cycle | CG iterations | CG "
+              "solve |\n|---|---|---|---|---|---|---|\n");
+  for (const int ny : {16, 50, 158}) {
+    if (options.quick && ny > 50) break;
+    const Scene scene = load_scene_text(sheet_scene(ny, "amg"), "sheet");
+    const ForceSet forces(scene.model);
+    StepMatrix matrix(forces, FixedParticleRule::kIdentityRows);
+    const double h = scene.model.integrator.dt;
+    const State& s = scene.initial;
+    const SparseMatrix& A = matrix.assemble(s.q + h * s.v, s.v, h);
+    const Vector b = A * Vector::Ones(A.rows());
+    AmgSolver amg;
+    double start = thread_cpu_milliseconds();
+    if (!amg.setup(A, 2)) {
+      std::printf("(no hypre)\n");
+      return;
+    }
+    const double setup = thread_cpu_milliseconds() - start;
+    Vector z(b.size());
+    start = thread_cpu_milliseconds();
+    for (int k = 0; k < 10; ++k) amg.apply(b.data(), z.data());
+    const double cycle = (thread_cpu_milliseconds() - start) / 10;
+    Vector x = Vector::Zero(b.size());
+    start = thread_cpu_milliseconds();
+    const KrylovResult r = amg.conjugate_gradients(b, x, 1e-12, 200);
+    const double cg = thread_cpu_milliseconds() - start;
+    std::printf("| %d | %ld | %.1f | %.2f | %.1f | %d | %.1f |\n", 4 * ny * ny,
+                static_cast<long>(A.rows()), setup, cycle, setup / cycle, r.iterations, cg);
+    std::fflush(stdout);
+  }
+}
+
 void cloths(const Options& options) {
   std::printf("\n2D damped cloth (bench_implicit's), linearized-implicit-euler, ms per step "
               "(thread CPU), mean of %d steps after the first\n\n",
@@ -297,6 +338,8 @@ int main(int argc, char** argv) {
     const std::string arg = argv[k];
     if (arg == "--quick") {
       options.quick = true;
+    } else if (arg == "--profile-amg") {
+      options.profile = true;
     } else if (arg == "--steps" && k + 1 < argc) {
       options.steps = std::max(1, std::atoi(argv[++k]));
     } else if (arg == "--dense-max-unknowns" && k + 1 < argc) {
@@ -304,14 +347,19 @@ int main(int argc, char** argv) {
     } else if (arg == "--solvers" && k + 1 < argc) {
       options.solvers = split(argv[++k]);
     } else {
-      std::fprintf(stderr, "usage: bench_elastic [--quick] [--steps N] [--dense-max-unknowns N] "
-                           "[--solvers auto,amg,...]\n");
+      std::fprintf(stderr,
+                   "usage: bench_elastic [--quick] [--profile-amg] [--steps N] "
+                   "[--dense-max-unknowns N] [--solvers auto,amg,...]\n");
       return 2;
     }
   }
   std::printf("bench_elastic: load average %s; one thread (BLAS, OpenMP, Eigen)\n",
               load_average().c_str());
   try {
+    if (options.profile) {
+      amg_profile(options);
+      return 0;
+    }
     sheets(options);
     if (!options.quick) cloths(options);
   } catch (const std::exception& error) {
