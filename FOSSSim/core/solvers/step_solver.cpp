@@ -35,9 +35,11 @@ constexpr int kLongestBackoff = 16;
 /// (bench_elastic); more means A is indefinite or too far from what multigrid handles.
 constexpr int kMaxAmgIterations = 100;
 /// A BoomerAMG setup costs about as much as this many Krylov iterations with its hierarchy
-/// (bench_elastic --profile-amg): a kept hierarchy is replaced once the iterations it needed
-/// beyond a fresh one's have cost as much (the rent-or-buy rule of the factors above).
-constexpr double kAmgSetupIterations = 8.0;
+/// (bench_elastic --profile-amg: a setup is 26 to 30 V-cycles on the sheets of 10⁴ and 10⁵
+/// triangles, an iteration a V-cycle and a product with A): a kept hierarchy is replaced once
+/// the iterations it needed beyond a fresh one's have cost as much (the rent-or-buy rule of the
+/// factors above).
+constexpr double kAmgSetupIterations = 24.0;
 
 /// The cost charged for a numeric factorization, in the operations GMRES iterations are counted in.
 double factorization_cost(double flops, double factor_entries, double flop_weight) {
@@ -80,7 +82,7 @@ void StepSolver::take_pattern(const SparseMatrix& A) {
   amg_skip_length_ = 0;
   amg_ = A.rows() > 0 && amg_available() &&
          (choice_ == SolverChoice::kAmg ||
-          (choice_ == SolverChoice::kAuto && A.rows() >= kAmgFromSize));
+          (choice_ == SolverChoice::kAuto && !symmetric_ && A.rows() >= kAmgFromSize));
   if (choice_ != SolverChoice::kEigen && A.rows() > 0 &&
       (choice_ == SolverChoice::kSparseDirect || A.rows() >= kSparseDirectFromSize)) {
     // A pattern that is not structurally symmetric has no symmetric part of its own pattern;

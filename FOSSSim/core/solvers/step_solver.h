@@ -89,8 +89,8 @@ struct SolveStatistics {
 ///   change too much between solves, as for a cloth falling at h = 1/30 s), the next 1, 2, 4, ...
 ///   16 solves factor at once without trying it. The cost model counts operations, never clocks, so
 ///   the same input gives the same bits. Each library's symbolic analysis is done once per pattern.
-/// - Algebraic multigrid (SolverChoice::kAmg, and kAuto from kAmgFromSize unknowns when hypre is
-///   built in): a BoomerAMG hierarchy of A, kept across solves while it preconditions well (the
+/// - Algebraic multigrid (SolverChoice::kAmg, and kAuto for non-symmetric A from kAmgFromSize
+///   unknowns when hypre is built in): a BoomerAMG hierarchy of A, kept across solves while it preconditions well (the
 ///   rent-or-buy rule of the factors, in iterations), preconditions conjugate gradients (A
 ///   symmetric) or GMRES (A non-symmetric) to the same residual. An indefinite A
 ///   (compressed elements) can keep them from converging: iterations are bounded, the residual
@@ -104,10 +104,12 @@ class StepSolver {
   static constexpr int kSparseDirectFromSize = 1000;
 
   /// symmetric: whether A is known to be symmetric (SceneModel::has_symmetric_jacobians).
-  /// Systems of at least this many unknowns take algebraic multigrid under SolverChoice::kAuto
-  /// when hypre is built in (measured with bench_elastic: docs/solvers.md, "Algebraic
-  /// multigrid").
-  static constexpr int kAmgFromSize = 1 << 30;
+  /// Non-symmetric systems of at least this many unknowns take algebraic multigrid under
+  /// SolverChoice::kAuto when hypre is built in; symmetric ones never (measured with
+  /// bench_elastic: on the 2D damped cloth multigrid costs 1.5× CHOLMOD's path at 2·10⁴
+  /// unknowns and 0.58× at 2·10⁵; on CST sheets 1.3× to 1.7× MUMPS's up to 10⁵: docs/solvers.md,
+  /// "Algebraic multigrid").
+  static constexpr int kAmgFromSize = 100000;
 
   /// symmetric: whether A is known to be symmetric (SceneModel::has_symmetric_jacobians).
   /// components: unknowns per particle, interleaved (the dimension), for multigrid's coarsening.

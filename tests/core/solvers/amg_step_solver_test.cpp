@@ -168,7 +168,7 @@ TEST_F(AmgStepSolver, GivesTheSameBitsFromRunToRun) {
 
 TEST_F(AmgStepSolver, AutoSetsUpNoMultigridForSmallSystems) {
   const SparseMatrix A = grid_step_matrix(8, 0.5, 0.0, 0.1, 309);
-  ASSERT_LT(A.rows(), StepSolver::kAmgFromSize);
+  ASSERT_LT(A.rows(), StepSolver::kAmgFromSize);  // and A is symmetric: never under kAuto
   const Vector b = Random(310).uniform_vector(static_cast<int>(A.rows()), -1.0, 1.0);
   StepSolver solver(true, SolverChoice::kAuto, 2);
   ASSERT_TRUE(solver.solve(A, b).has_value());
