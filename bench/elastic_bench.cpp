@@ -241,7 +241,9 @@ void sheets(const Options& options) {
                   unknowns, options.solvers[s].c_str(), t.path.c_str(), t.iterations, t.krylov,
                   t.first_ms, t.step_ms,
                   dense_ms ? std::to_string(static_cast<long>(std::lround(*dense_ms))).c_str()
-                           : "does not fit",
+                  : 8.0 * static_cast<double>(unknowns) * static_cast<double>(unknowns) > 16e9
+                      ? "does not fit (over 16 GB)"
+                      : "not run (--dense-max-unknowns)",
                   dense_ms ? dense_note.c_str() : "",
                   dense_ms ? (std::to_string(std::lround(*dense_ms / t.step_ms)) + "×").c_str()
                            : "");
