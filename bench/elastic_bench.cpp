@@ -222,7 +222,7 @@ void sheets(const Options& options) {
       times[s].push_back(t.step_ms);
       if (s == 0) {
         reference = t.q;
-        if (unknowns <= options.dense_full_max_unknowns) {
+        if (unknowns <= std::min(options.dense_full_max_unknowns, options.dense_max_unknowns)) {
           DenseNewton dense;
           const Timing d = time_steps(scene, dense, options.steps);
           dense_ms = d.step_ms;
