@@ -42,3 +42,21 @@ if(NOT TARGET ODE::lcp)
   set_target_properties(ODE::lcp PROPERTIES IMPORTED_LOCATION ${ODE_LCP_LIBRARY}
                         INTERFACE_INCLUDE_DIRECTORIES ${ODE_LCP_INCLUDE_DIR})
 endif()
+
+if(NOT TARGET HYPRE::HYPRE)
+  # Optional: hypre's BoomerAMG (libhypre-dev), the algebraic multigrid of large step matrices
+  # (core/solvers/amg_solver.h). Debian builds hypre with OpenMPI, so it brings MPI::MPI_CXX. Left
+  # out when either is missing or FOSSSIM_USE_HYPRE is OFF (a browser build): the build works
+  # without it and StepSolver's solver="amg" then takes the sparse direct path.
+  if(NOT DEFINED FOSSSIM_USE_HYPRE OR FOSSSIM_USE_HYPRE)
+    find_path(HYPRE_INCLUDE_DIR HYPRE_parcsr_ls.h PATH_SUFFIXES hypre)
+    find_library(HYPRE_LIBRARY HYPRE)
+    find_package(MPI QUIET COMPONENTS CXX)
+    if(HYPRE_INCLUDE_DIR AND HYPRE_LIBRARY AND MPI_CXX_FOUND)
+      add_library(HYPRE::HYPRE UNKNOWN IMPORTED)
+      set_target_properties(HYPRE::HYPRE PROPERTIES IMPORTED_LOCATION ${HYPRE_LIBRARY}
+                            INTERFACE_INCLUDE_DIRECTORIES ${HYPRE_INCLUDE_DIR}
+                            INTERFACE_LINK_LIBRARIES MPI::MPI_CXX)
+    endif()
+  endif()
+endif()

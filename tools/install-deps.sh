@@ -4,6 +4,9 @@
 set -eu
 
 # libmumps-seq-dev: the symmetric indefinite factorization of step matrices (sequential MUMPS).
+# Not installed: libhypre-dev, BoomerAMG for the algebraic multigrid of very large step matrices
+# (core/solvers/amg_solver.h), opt-in with -DFOSSSIM_USE_HYPRE=ON (docs/solvers.md): Debian builds
+# it with OpenMPI, whose libraries every run would then load.
 # libdart-external-odelcpsolver-dev: ODE's LCP solver (rigid-body contact, core/rigid/contact_lcp.h).
 # pybind11-dev and python3-dev build the Python module (python/); NumPy and SciPy are what it
 # returns, pytest runs its tests, matplotlib draws the examples' plots (examples/python/).

@@ -11,7 +11,7 @@ namespace fosssim {
 
 void ImplicitEuler::prepare() {
   matrix_.emplace(forces(), FixedParticleRule::kIdentityRows);
-  solver_.emplace(forces().has_symmetric_jacobians(), settings_.solver);
+  solver_.emplace(forces().has_symmetric_jacobians(), settings_.solver, model().dim);
   course_ = uses_course_lu(settings_.solver, model().dim, matrix_->size());
 }
 

@@ -11,7 +11,7 @@ namespace fosssim {
 
 void LinearizedImplicitEuler::prepare() {
   matrix_.emplace(forces(), FixedParticleRule::kIdentityRows);
-  solver_.emplace(forces().has_symmetric_jacobians(), choice_);
+  solver_.emplace(forces().has_symmetric_jacobians(), choice_, model().dim);
   course_ = uses_course_lu(choice_, model().dim, matrix_->size());
 }
 

@@ -11,7 +11,7 @@ namespace fosssim {
 
 void LinearlyImplicitEuler::prepare() {
   matrix_.emplace(forces(), FixedParticleRule::kElimination, project_hessian_);
-  solver_.emplace(forces().has_symmetric_jacobians(), choice_);
+  solver_.emplace(forces().has_symmetric_jacobians(), choice_, model().dim);
 }
 
 void LinearlyImplicitEuler::advance(State& state) {

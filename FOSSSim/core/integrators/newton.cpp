@@ -14,7 +14,7 @@ namespace fosssim {
 
 void Newton::prepare() {
   matrix_.emplace(forces(), FixedParticleRule::kElimination);
-  solver_.emplace(forces().has_symmetric_jacobians(), options_.solver);
+  solver_.emplace(forces().has_symmetric_jacobians(), options_.solver, model().dim);
 }
 
 Vector Newton::solve(const SparseMatrix& A, const Vector& rhs, int step) {

@@ -35,8 +35,18 @@ constexpr double kSinglePrecisionSpeedup = 2.0;
 /// After a Cholesky factorization fails (A is not positive definite), this many
 /// factorizations go straight to LU before Cholesky is tried again.
 constexpr int kLuAfterIndefinite = 4;
-/// The longest run of solves that factor at once after kept factors failed.
+/// The longest run of solves that factor at once after kept factors failed (or that skip
+/// multigrid after it missed).
 constexpr int kLongestBackoff = 16;
+/// Krylov iterations with BoomerAMG take 10 to 30 iterations on the step matrices measured
+/// (bench_elastic); more means A is indefinite or too far from what multigrid handles.
+constexpr int kMaxAmgIterations = 100;
+/// A BoomerAMG setup costs about as much as this many Krylov iterations with its hierarchy
+/// (bench_elastic --profile-amg: a setup is 26 to 30 V-cycles on the sheets of 10⁴ and 10⁵
+/// triangles, an iteration a V-cycle and a product with A): a kept hierarchy is replaced once
+/// the iterations it needed beyond a fresh one's have cost as much (the rent-or-buy rule of the
+/// factors above).
+constexpr double kAmgSetupIterations = 24.0;
 
 /// The cost charged for a numeric factorization, in the operations GMRES iterations are counted in.
 double factorization_cost(double flops, double factor_entries, double flop_weight) {
@@ -75,6 +85,11 @@ void StepSolver::take_pattern(const SparseMatrix& A) {
   skip_cholesky_ = 0;
   refactor_due_ = true;
   suitesparse_ = false;
+  amg_skip_ = 0;
+  amg_skip_length_ = 0;
+  amg_ = A.rows() > 0 && amg_available() &&
+         (choice_ == SolverChoice::kAmg ||
+          (choice_ == SolverChoice::kAuto && !symmetric_ && A.rows() >= kAmgFromSize));
   if (choice_ != SolverChoice::kEigen && A.rows() > 0 &&
       (choice_ == SolverChoice::kSparseDirect ||
        (kHaveSparseDirect && A.rows() >= kSparseDirectFromSize))) {
@@ -98,6 +113,9 @@ std::optional<Vector> StepSolver::solve(const SparseMatrix& A, const Vector& b) 
   if (A.rows() == 0) return Vector(0);
   ++statistics_.solves;
   if (!same_pattern(A)) take_pattern(A);
+  if (amg_) {
+    if (auto x = solve_amg(A, b)) return x;
+  }
   if (suitesparse_) return solve_suitesparse(A, b);
   return solve_eigen(A, b);
 }
@@ -298,6 +316,89 @@ std::optional<Vector> StepSolver::solve_suitesparse(const SparseMatrix& A, const
   ++statistics_.direct_fallbacks;
   refactor_due_ = true;
   return solve_eigen(A, b);
+}
+
+std::optional<Vector> StepSolver::solve_amg(const SparseMatrix& A, const Vector& b) {
+  if (amg_skip_ > 0) {
+    --amg_skip_;
+    return std::nullopt;
+  }
+  const double b_norm = b.norm();
+  const double a_norm = A.norm();
+  Vector x(b.size());
+  bool fresh = !amg_solver_.ready() || amg_setup_due_;
+  for (;;) {
+    if (fresh) {
+      ++statistics_.amg_setups;
+      amg_setup_due_ = false;
+      amg_charged_ = 0.0;
+      if (!amg_solver_.setup(A, components_)) {
+        amg_ = false;  // hypre cannot take this pattern (or MPI did not start): not again
+        return std::nullopt;
+      }
+    } else if (symmetric_ && !amg_solver_.set_matrix(A)) {
+      amg_ = false;
+      return std::nullopt;
+    }
+    // A kept hierarchy may take as many iterations more than a fresh one as a setup costs.
+    const int most = fresh ? kMaxAmgIterations
+                           : std::min(kMaxAmgIterations,
+                                      amg_fresh_iterations_ + static_cast<int>(kAmgSetupIterations));
+    x.setZero();
+    int iterations = 0;
+    bool accurate = false;
+    if (symmetric_) {
+      // Hypre's CG stops at ‖r‖ ≤ tol ‖b‖; the promise is ‖r‖ ≤ 1e-12 (‖b‖ + ‖A‖ ‖x‖), in the
+      // scale of the last answer (of this one's first iterate for the first solve). Its
+      // recurrence may end a little above the true residual: then once more from there, asking
+      // for a hundredth. The residual decides, not CG's own verdict.
+      double ratio = scale_ratio_;
+      double tolerance = kResidualTolerance * (1.0 + ratio);
+      for (int attempt = 0; attempt < 3 && !accurate && iterations < most; ++attempt) {
+        const KrylovResult result =
+            amg_solver_.conjugate_gradients(b, x, tolerance, most - iterations);
+        iterations += result.iterations;
+        if (!x.allFinite()) break;
+        accurate = is_accurate(A, x, b);
+        if (!result.converged) break;
+        const double new_ratio = b_norm > 0.0 ? a_norm * x.norm() / b_norm : 0.0;
+        tolerance = new_ratio > ratio ? kResidualTolerance * (1.0 + new_ratio) : tolerance * 1e-2;
+        ratio = std::max(ratio, new_ratio);
+      }
+      last_ = Factorization::kAmgCg;
+    } else {
+      const AmgSolver& amg = amg_solver_;
+      const auto precondition = [&amg](const double* r, double* z) { amg.apply(r, z); };
+      amg.apply(b.data(), x.data());  // M⁻¹ b, GMRES's start
+      const double tolerance = kResidualTolerance * (b_norm + a_norm * x.norm());
+      const KrylovResult result =
+          gmres_.solve(A, b, x, precondition, tolerance, std::min(most, kMaxKrylovIterations), !fresh);
+      iterations = result.iterations + 1;
+      accurate = result.converged && is_accurate(A, x, b);
+      last_ = Factorization::kAmgGmres;
+    }
+    statistics_.krylov_iterations += iterations;
+    if (accurate) {
+      if (fresh) {
+        amg_fresh_iterations_ = iterations;
+      } else {
+        amg_charged_ += std::max(0, iterations - amg_fresh_iterations_);
+        amg_setup_due_ = amg_charged_ >= kAmgSetupIterations;
+      }
+      amg_skip_length_ = 0;
+      scale_ratio_ = b_norm > 0.0 ? a_norm * x.norm() / b_norm : 0.0;
+      return x;
+    }
+    if (!fresh) {  // the kept hierarchy no longer helps: a new one, once more
+      fresh = true;
+      continue;
+    }
+    ++statistics_.amg_failures;
+    amg_setup_due_ = true;
+    amg_skip_length_ = std::clamp(2 * amg_skip_length_, 1, kLongestBackoff);
+    amg_skip_ = amg_skip_length_;
+    return std::nullopt;
+  }
 }
 
 }  // namespace fosssim

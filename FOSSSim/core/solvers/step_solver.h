@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/solvers/amg_solver.h"
 #include "core/solvers/cholesky_factor.h"
 #include "core/solvers/course_lu.h"
 #include "core/solvers/gmres.h"
@@ -24,6 +25,8 @@ enum class SolverChoice {
            ///< unknowns, the sparse direct libraries from there on
   kEigen,  ///< Eigen's sparse LDLᵀ and LU, factored at every solve
   kSparseDirect,  ///< sparse direct libraries (MUMPS, CHOLMOD, UMFPACK), reused through GMRES
+  kAmg,  ///< a Krylov method preconditioned by algebraic multigrid (hypre's BoomerAMG), with
+         ///< the sparse direct libraries (Eigen's below 1000 unknowns) as the fallback
 };
 
 /// Whether an implicit integrator solves its step systems the course's way, with a dense
@@ -40,6 +43,8 @@ enum class Factorization {
   kCholesky,  ///< GMRES on A with a CHOLMOD Cholesky factor of A (or of a nearby matrix)
   kUmfpack,   ///< GMRES on A with an UMFPACK LU factor of A (or of a nearby matrix)
   kMumps,     ///< GMRES on A with a MUMPS LDLᵀ factor of A (or of a nearby matrix)
+  kAmgCg,     ///< conjugate gradients on A preconditioned by BoomerAMG (A symmetric)
+  kAmgGmres,  ///< GMRES on A preconditioned by BoomerAMG (A non-symmetric)
 };
 
 /// Counts of the work done so far, for tests and benchmarks.
@@ -52,6 +57,8 @@ struct SolveStatistics {
   std::int64_t ldlt_factorizations = 0;  ///< of them, MUMPS's (A symmetric)
   std::int64_t single_precision_factorizations = 0;  ///< of MUMPS's, in single precision
   std::int64_t direct_fallbacks = 0;  ///< GMRES did not converge: Eigen's LU or LDLᵀ solved
+  std::int64_t amg_setups = 0;        ///< BoomerAMG hierarchies built
+  std::int64_t amg_failures = 0;  ///< multigrid solves that missed the residual: another path solved
 };
 
 /// Solves the systems A x = b of an implicit integrator: one step matrix
@@ -59,7 +66,7 @@ struct SolveStatistics {
 /// change a little between Newton iterations and steps. Every answer it returns has a
 /// residual at round-off level, ‖A x - b‖ ≤ 1e-12 (‖b‖ + ‖A‖_F ‖x‖), whichever path made it.
 ///
-/// Two paths, chosen by SolverChoice and the size of A:
+/// Three paths, chosen by SolverChoice and the size of A:
 /// - Eigen (small systems, and the course's small scenes bit for bit): a symmetric A is
 ///   factored by Eigen's SimplicialLDLT, accepted only at round-off residual (a compressed
 ///   spring or Newtonian gravity can make A indefinite, where LDLᵀ without pivoting may lose
@@ -82,6 +89,13 @@ struct SolveStatistics {
 ///   change too much between solves, as for a cloth falling at h = 1/30 s), the next 1, 2, 4, ...
 ///   16 solves factor at once without trying it. The cost model counts operations, never clocks, so
 ///   the same input gives the same bits. Each library's symbolic analysis is done once per pattern.
+/// - Algebraic multigrid (SolverChoice::kAmg, and kAuto for non-symmetric A from kAmgFromSize
+///   unknowns when hypre is built in): a BoomerAMG hierarchy of A, kept across solves while it preconditions well (the
+///   rent-or-buy rule of the factors, in iterations), preconditions conjugate gradients (A
+///   symmetric) or GMRES (A non-symmetric) to the same residual. An indefinite A
+///   (compressed elements) can keep them from converging: iterations are bounded, the residual
+///   is checked, and a solve that misses it is done by the path above instead (Eigen's below
+///   kSparseDirectFromSize unknowns); the next 1, 2, 4, … 16 solves then go there at once.
 class StepSolver {
  public:
   /// Systems of at least this many unknowns go to SuiteSparse under SolverChoice::kAuto
@@ -90,8 +104,18 @@ class StepSolver {
   static constexpr int kSparseDirectFromSize = 1000;
 
   /// symmetric: whether A is known to be symmetric (SceneModel::has_symmetric_jacobians).
-  explicit StepSolver(bool symmetric, SolverChoice choice = SolverChoice::kAuto)
-      : symmetric_(symmetric), choice_(choice) {}
+  /// Non-symmetric systems of at least this many unknowns take algebraic multigrid under
+  /// SolverChoice::kAuto when hypre is built in; symmetric ones never (measured with
+  /// bench_elastic: on the 2D damped cloth multigrid costs 1.5× CHOLMOD's path at 2·10⁴
+  /// unknowns and 0.58× at 2·10⁵; on CST sheets 1.3× to 1.7× MUMPS's up to 10⁵: docs/solvers.md,
+  /// "Algebraic multigrid").
+  static constexpr int kAmgFromSize = 100000;
+
+  /// symmetric: whether A is known to be symmetric (SceneModel::has_symmetric_jacobians).
+  /// components: unknowns per particle, interleaved (the dimension), for multigrid's coarsening.
+  explicit StepSolver(bool symmetric, SolverChoice choice = SolverChoice::kAuto,
+                      int components = 1)
+      : symmetric_(symmetric), choice_(choice), components_(components) {}
 
   /// Returns x with A x = b, or nullopt when A is numerically singular.
   std::optional<Vector> solve(const SparseMatrix& A, const Vector& b);
@@ -107,6 +131,8 @@ class StepSolver {
   std::optional<Vector> solve_ldlt(const SparseMatrix& A, const Vector& b);
   std::optional<Vector> solve_lu(const SparseMatrix& A, const Vector& b);
   std::optional<Vector> solve_suitesparse(const SparseMatrix& A, const Vector& b);
+  /// nullopt when multigrid is skipped or misses the residual (another path solves then).
+  std::optional<Vector> solve_amg(const SparseMatrix& A, const Vector& b);
   /// Factors A (or its symmetric part) for GMRES to precondition with; false when singular.
   bool refactor(const SparseMatrix& A);
   bool factor_cholesky(const SparseMatrix& A);
@@ -119,6 +145,7 @@ class StepSolver {
 
   bool symmetric_;
   SolverChoice choice_;
+  int components_ = 1;
   Factorization last_ = Factorization::kLU;
   SolveStatistics statistics_;
   std::vector<SparseMatrix::StorageIndex> outer_,
@@ -149,6 +176,15 @@ class StepSolver {
   int backoff_ = 0;           // solves left that factor at once, after a kept factor failed
   int backoff_length_ = 0;    // the next backoff: doubles while kept factors keep failing
   double scale_ratio_ = 0.0;  // ‖A‖ ‖x‖ / ‖b‖ of the last answer
+
+  // The multigrid path.
+  bool amg_ = false;  // the pattern goes to BoomerAMG first
+  AmgSolver amg_solver_;
+  int amg_skip_ = 0;         // solves left that skip multigrid, after one missed
+  int amg_skip_length_ = 0;  // the next such run: doubles while multigrid keeps missing
+  bool amg_setup_due_ = true;
+  int amg_fresh_iterations_ = 0;  // Krylov iterations of the first solve with the hierarchy
+  double amg_charged_ = 0.0;      // iterations beyond those, since the hierarchy was set up
 };
 
 }  // namespace fosssim
