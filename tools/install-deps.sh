@@ -27,9 +27,10 @@ PACKAGES="cmake ninja-build g++ pkg-config
   bubblewrap parallel"
 # What the WebAssembly build and its tests need (cmake --workflow --preset web; docs/web.md):
 # Emscripten's em++, Debian's header-only fast_float (std::from_chars for doubles) and
-# chromium (the page's tests in a headless browser). The test workflow builds and tests the web
-# preset too (ci-web), so they are installed without a flag; --web is kept as a synonym.
-PACKAGES="$PACKAGES emscripten libfast-float-dev chromium"
+# chromium (the page's tests in a headless browser): about 1.3 GB, installed with --web only.
+if [ "${1:-}" = "--web" ]; then
+  PACKAGES="$PACKAGES emscripten libfast-float-dev chromium"
+fi
 
 missing=""
 for package in $PACKAGES; do
