@@ -133,7 +133,7 @@ class JsonSceneParser {
       fail("", "the file must hold a JSON object such as {\"obj\": \"cloth.obj\", \"k\": 1000}");
     for (const auto& [key, value] : root.items()) {
       if (std::find(kKnownKeys.begin(), kKnownKeys.end(), key) != kKnownKeys.end()) continue;
-      const auto meant = std::find_if(kKnownKeys.begin(), kKnownKeys.end(), [&](auto known) {
+      const auto meant = std::find_if(kKnownKeys.begin(), kKnownKeys.end(), [&key = key](auto known) {
         return looks_like_misspelling(key, known);
       });
       if (meant != kKnownKeys.end()) {
