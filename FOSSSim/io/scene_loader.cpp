@@ -459,9 +459,10 @@ Scene load_scene_text(std::string_view text, const std::string& name, InputFiles
   }
   check_attribute_counts(text, name, files.limits().max_attributes);
   std::vector<std::string> warnings;
-  const std::string fixed =
-      number_repeated_hull_attributes(separate_run_together_attributes(text, name, warnings));
-  const std::vector<XmlElement> top = parse_xml(fixed, name);
+  // The repaired text is freed once parsed: the document keeps its own copy.
+  const XmlDocument top = parse_xml(
+      number_repeated_hull_attributes(separate_run_together_attributes(text, name, warnings)),
+      name);
   if (top.empty()) throw SceneError(name, 0, "", "the file holds no XML element");
   if (top.size() > 1) {
     const XmlElement& second = top[1];

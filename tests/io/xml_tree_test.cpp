@@ -29,7 +29,7 @@ TEST(XmlTree, ElementsAttributesAndLines) {
       "  <particle m=\"&lt;&amp;&#65;\"\n px=\"0\"/>text\n"
       "  <mesh><pin i=\"3\"/><![CDATA[<notanelement/>]]></mesh>\n"
       "</scene>\n";
-  const std::vector<XmlElement> top = parse_xml(xml, "t.xml");
+  const XmlDocument top = parse_xml(xml, "t.xml");
   ASSERT_EQ(top.size(), 1u);
   const XmlElement& scene = top[0];
   EXPECT_EQ(scene.name(), "scene");
@@ -55,7 +55,7 @@ TEST(XmlTree, ElementsAttributesAndLines) {
 }
 
 TEST(XmlTree, SeveralTopLevelElementsAreReturned) {
-  const std::vector<XmlElement> top = parse_xml("<a/>\n\n<b/>", "t.xml");
+  const XmlDocument top = parse_xml("<a/>\n\n<b/>", "t.xml");
   ASSERT_EQ(top.size(), 2u);
   EXPECT_EQ(top[1].name(), "b");
   EXPECT_EQ(top[1].line(), 3);
