@@ -444,6 +444,11 @@ std::vector<const XmlElement*> XmlElement::children_named(std::string_view name)
 }
 
 XmlDocument parse_xml(std::string_view text, const std::string& file) {
+  if (text.size() > kMaxXmlBytes) {  // element and attribute counts are 32-bit
+    throw SceneError(file, 0, "",
+                     "the XML text is larger than " + std::to_string(kMaxXmlBytes >> 20) +
+                         " MiB, the most the XML reader reads");
+  }
   const XmlPlace whole = place_at(text, text.size());
   if (whole.too_deep) {
     const XmlPlace::Open& deepest = whole.open.back();
@@ -455,7 +460,7 @@ XmlDocument parse_xml(std::string_view text, const std::string& file) {
   // document keeps (its names and values stay where rapidxml put them).
   const auto with_text = [&] {
     XmlDocument document;
-    document.text_ = std::make_unique_for_overwrite<char[]>(text.size() + 1);
+    document.text_ = std::unique_ptr<char[]>(new char[text.size() + 1]);
     std::copy(text.begin(), text.end(), document.text_.get());
     document.text_[text.size()] = '\0';
     return document;

@@ -80,11 +80,15 @@ class XmlDocument {
 /// level; a scene needs three).
 constexpr int kMaxXmlDepth = 100;
 
+/// The longest XML text parse_xml reads (the file size limit, --max-file-size, is lower by
+/// default): it counts elements and attributes in 32 bits.
+constexpr std::size_t kMaxXmlBytes = (std::size_t{4} << 30) - 1;
+
 /// The elements of an XML text. `text` may hold anything but NUL bytes. Throws SceneError
 /// naming `file`, the line and, where one is to blame, the element, with a problem that starts "not well-formed XML: " for a
 /// syntax error (an element not closed or closed by another name, a malformed or repeated
 /// attribute, text outside of any element, a comment not closed, ...) and one for elements
-/// nested deeper than kMaxXmlDepth.
+/// nested deeper than kMaxXmlDepth, or for a text longer than kMaxXmlBytes.
 XmlDocument parse_xml(std::string_view text, const std::string& file);
 
 }  // namespace fosssim
