@@ -273,7 +273,8 @@ std::vector<std::string> ElementReader::finish() const {
       if (count++ > 0) misspelt += ", ";
       misspelt += "\"" + std::string(a.name) + "\" (did you mean \"" + *meant + "\"?)";
     } else {
-      warnings.push_back(warning(std::string("unknown attribute \"") + std::string(a.name) + "\" ignored"));
+      warnings.push_back(
+          warning(std::string("unknown attribute \"") + std::string(a.name) + "\" ignored"));
     }
   }
   if (count > 0) {

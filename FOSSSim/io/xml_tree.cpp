@@ -1,9 +1,8 @@
 #include "io/xml_tree.h"
 
-#include <rapidxml/rapidxml.hpp>
-
 #include <algorithm>
 #include <cstring>
+#include <rapidxml/rapidxml.hpp>
 #include <utility>
 
 #include "io/scene_error.h"
@@ -38,14 +37,14 @@ struct XmlPlace {
     std::string name;
     int line;
   };
-  std::vector<Open> open;     ///< elements opened and not yet closed, outermost first
-  bool in_tag = false;        ///< inside a start tag (`tag`, `tag_line`)
+  std::vector<Open> open;  ///< elements opened and not yet closed, outermost first
+  bool in_tag = false;     ///< inside a start tag (`tag`, `tag_line`)
   std::string tag;
   int tag_line = 0;
-  bool in_comment = false;    ///< inside a comment that began on `comment_line`
+  bool in_comment = false;  ///< inside a comment that began on `comment_line`
   int comment_line = 0;
-  bool too_deep = false;      ///< stopped at an element nested deeper than kMaxXmlDepth
-  int line = 1;               ///< the line reached
+  bool too_deep = false;  ///< stopped at an element nested deeper than kMaxXmlDepth
+  int line = 1;           ///< the line reached
 };
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
@@ -55,8 +54,9 @@ XmlPlace place_at(std::string_view text, std::size_t stop) {
   stop = std::min(stop, text.size());
   std::size_t k = 0;
   const auto advance = [&](std::size_t to) {
-    place.line += static_cast<int>(std::count(text.begin() + static_cast<std::ptrdiff_t>(k),
-                                              text.begin() + static_cast<std::ptrdiff_t>(to), '\n'));
+    place.line +=
+        static_cast<int>(std::count(text.begin() + static_cast<std::ptrdiff_t>(k),
+                                    text.begin() + static_cast<std::ptrdiff_t>(to), '\n'));
     k = to;
   };
   // The end of a construct that starts at k and ends with `close`, or npos when it does not end
@@ -333,8 +333,9 @@ class XmlDirectReader {
   }
 
   XmlDocument& document_;
-  std::vector<std::string_view> open_;              ///< names of the elements open, outermost first
-  std::vector<std::vector<XmlElement>> pending_;    ///< [d]: the elements read at depth d, not yet placed
+  std::vector<std::string_view> open_;  ///< names of the elements open, outermost first
+  std::vector<std::vector<XmlElement>>
+      pending_;  ///< [d]: the elements read at depth d, not yet placed
   const char* line_at_ = nullptr;
   int line_ = 1;
 };
@@ -379,8 +380,8 @@ class XmlTreeBuilder {
       for (const Node* c = first_element(node); c != nullptr; c = next_element(*c)) {
         nodes.push_back(c);
       }
-      e.child_count_ = static_cast<std::uint32_t>(document_.elements_.data() + nodes.size() -
-                                                  e.children_);
+      e.child_count_ =
+          static_cast<std::uint32_t>(document_.elements_.data() + nodes.size() - e.children_);
     }
   }
 
@@ -417,7 +418,9 @@ class XmlTreeBuilder {
     }
   }
 
-  const std::string& intern(std::string_view name) { return XmlDirectReader::intern(document_, name); }
+  const std::string& intern(std::string_view name) {
+    return XmlDirectReader::intern(document_, name);
+  }
 
   int line_of(const char* p) const {
     return lines_.line_of(static_cast<std::size_t>(p - document_.text_.get()));

@@ -54,7 +54,8 @@ class XmlElement {
 /// used like a vector of them. It owns everything its elements point to: the text, parsed in
 /// place (names and values are read where they are written), one array of all elements (the
 /// children of an element are adjacent), one array of all attributes and the distinct names.
-/// Each array is allocated once, at a size counted before. Moving a document keeps its elements valid.
+/// Each array is allocated once, at a size counted before. Moving a document keeps its elements
+/// valid.
 class XmlDocument {
  public:
   bool empty() const { return top_count_ == 0; }
@@ -85,10 +86,10 @@ constexpr int kMaxXmlDepth = 100;
 constexpr std::size_t kMaxXmlBytes = (std::size_t{4} << 30) - 1;
 
 /// The elements of an XML text. `text` may hold anything but NUL bytes. Throws SceneError
-/// naming `file`, the line and, where one is to blame, the element, with a problem that starts "not well-formed XML: " for a
-/// syntax error (an element not closed or closed by another name, a malformed or repeated
-/// attribute, text outside of any element, a comment not closed, ...) and one for elements
-/// nested deeper than kMaxXmlDepth, or for a text longer than kMaxXmlBytes.
+/// naming `file`, the line and, where one is to blame, the element, with a problem that starts "not
+/// well-formed XML: " for a syntax error (an element not closed or closed by another name, a
+/// malformed or repeated attribute, text outside of any element, a comment not closed, ...) and one
+/// for elements nested deeper than kMaxXmlDepth, or for a text longer than kMaxXmlBytes.
 XmlDocument parse_xml(std::string_view text, const std::string& file);
 
 }  // namespace fosssim

@@ -168,10 +168,10 @@ TEST(XmlTree, NestingDeeperThanTheLimitIsRefusedBeforeParsing) {
   std::string closed = deep;
   for (int k = 0; k < kMaxXmlDepth; ++k) closed += "</a>";
   EXPECT_EQ(parse_xml(closed, "t.xml").size(), 1u);
-  EXPECT_EQ(error_of(deep + "<b>" + "</b>"),
-            "t.xml:" + std::to_string(kMaxXmlDepth + 1) +
-                ": error: <b>: elements nested more than " + std::to_string(kMaxXmlDepth) +
-                " deep (a scene needs three)");
+  EXPECT_EQ(error_of(deep + "<b>" + "</b>"), "t.xml:" + std::to_string(kMaxXmlDepth + 1) +
+                                                 ": error: <b>: elements nested more than " +
+                                                 std::to_string(kMaxXmlDepth) +
+                                                 " deep (a scene needs three)");
 }
 
 }  // namespace
