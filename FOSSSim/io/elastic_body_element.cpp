@@ -407,11 +407,11 @@ ForcesByTag read_elastic_bodies(const XmlElement& root, Scene& scene, const std:
 
 ElasticBodyText read_elastic_body_text(std::string_view element, const std::string& name,
                                        InputFiles& files) {
-  std::vector<XmlElement> parsed;
+  XmlDocument parsed;
   try {
     parsed = parse_xml(element, name);
   } catch (const SceneError&) {
-    parsed.clear();  // a syntax error: the message below says what is expected
+    parsed = XmlDocument();  // a syntax error: the message below says what is expected
   }
   if (parsed.empty() || parsed.front().name() != kElasticBodyElement) {
     throw SceneError(name, 0, "", "not one <elasticbody .../> element");

@@ -221,7 +221,8 @@ const std::string* ElementReader::likely_meant(std::string_view unknown) const {
 
 const char* ElementReader::likely_misspelling_of(std::string_view name) const {
   for (const XmlAttribute& a : element_.attributes()) {
-    if (!was_asked(a.name.c_str()) && looks_like_misspelling(a.name, name)) return a.name.c_str();
+    // The name ends with a NUL in the document's text.
+    if (!was_asked(a.name.data()) && looks_like_misspelling(a.name, name)) return a.name.data();
   }
   return nullptr;
 }
@@ -231,16 +232,17 @@ std::vector<std::string> ElementReader::finish() const {
   std::string misspelt;  // "attribute "raduis" (did you mean "radius"?)", one per misspelling
   int count = 0;
   for (const XmlAttribute& a : element_.attributes()) {
-    if (was_asked(a.name.c_str())) continue;
+    if (was_asked(a.name.data())) continue;
     const std::string* meant = likely_meant(a.name);
     if (meant != nullptr && !misspellings_are_errors_) {
-      warnings.push_back(warning(std::string("unknown attribute \"") + a.name +
+      warnings.push_back(warning(std::string("unknown attribute \"") + std::string(a.name) +
                                  "\" ignored (did you mean \"" + *meant + "\"?)"));
     } else if (meant != nullptr) {
       if (count++ > 0) misspelt += ", ";
-      misspelt += std::string("\"") + a.name + "\" (did you mean \"" + *meant + "\"?)";
+      misspelt += "\"" + std::string(a.name) + "\" (did you mean \"" + *meant + "\"?)";
     } else {
-      warnings.push_back(warning(std::string("unknown attribute \"") + a.name + "\" ignored"));
+      warnings.push_back(
+          warning(std::string("unknown attribute \"") + std::string(a.name) + "\" ignored"));
     }
   }
   if (count > 0) {

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "core/force_registry.h"
@@ -465,7 +466,8 @@ Scene load_scene_text(std::string_view text, const std::string& name, InputFiles
   if (fixed.find("<rigidbody") != std::string::npos) {
     fixed = number_repeated_hull_attributes(fixed);
   }
-  const std::vector<XmlElement> top = parse_xml(fixed, name);
+  // The document keeps its own copy of the text: the repaired one is freed once parsed.
+  const XmlDocument top = parse_xml(std::exchange(fixed, std::string()), name);
   if (top.empty()) throw SceneError(name, 0, "", "the file holds no XML element");
   if (top.size() > 1) {
     const XmlElement& second = top[1];

@@ -1,9 +1,8 @@
 #include "io/xml_tree.h"
 
-#include <rapidxml/rapidxml.hpp>
-
 #include <algorithm>
 #include <cstring>
+#include <rapidxml/rapidxml.hpp>
 #include <utility>
 
 #include "io/scene_error.h"
@@ -38,14 +37,14 @@ struct XmlPlace {
     std::string name;
     int line;
   };
-  std::vector<Open> open;     ///< elements opened and not yet closed, outermost first
-  bool in_tag = false;        ///< inside a start tag (`tag`, `tag_line`)
+  std::vector<Open> open;  ///< elements opened and not yet closed, outermost first
+  bool in_tag = false;     ///< inside a start tag (`tag`, `tag_line`)
   std::string tag;
   int tag_line = 0;
-  bool in_comment = false;    ///< inside a comment that began on `comment_line`
+  bool in_comment = false;  ///< inside a comment that began on `comment_line`
   int comment_line = 0;
-  bool too_deep = false;      ///< stopped at an element nested deeper than kMaxXmlDepth
-  int line = 1;               ///< the line reached
+  bool too_deep = false;  ///< stopped at an element nested deeper than kMaxXmlDepth
+  int line = 1;           ///< the line reached
 };
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
@@ -55,8 +54,9 @@ XmlPlace place_at(std::string_view text, std::size_t stop) {
   stop = std::min(stop, text.size());
   std::size_t k = 0;
   const auto advance = [&](std::size_t to) {
-    place.line += static_cast<int>(std::count(text.begin() + static_cast<std::ptrdiff_t>(k),
-                                              text.begin() + static_cast<std::ptrdiff_t>(to), '\n'));
+    place.line +=
+        static_cast<int>(std::count(text.begin() + static_cast<std::ptrdiff_t>(k),
+                                    text.begin() + static_cast<std::ptrdiff_t>(to), '\n'));
     k = to;
   };
   // The end of a construct that starts at k and ends with `close`, or npos when it does not end
@@ -179,62 +179,279 @@ SceneError syntax_error(std::string_view text, const std::string& file, const st
 
 }  // namespace
 
-/// Copies rapidxml's nodes into XmlElements, with lines from the names' offsets in the buffer.
-class XmlTreeBuilder {
- public:
-  XmlTreeBuilder(const char* buffer, const LineTable& lines, const std::string& file)
-      : buffer_(buffer), lines_(lines), file_(file) {}
+bool is_name_char(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+         c == '-' || c == '.' || c == ':';
+}
 
-  std::vector<XmlElement> children_of(const rapidxml::xml_node<char>& node) const {
-    std::vector<XmlElement> children;
-    for (const auto* child = node.first_node(); child != nullptr; child = child->next_sibling()) {
-      if (child->type() == rapidxml::node_element) children.push_back(element(*child));
+/// Reads the plain XML that scenes are written in straight into an XmlDocument, without
+/// rapidxml's node pool (which costs about five times the text): elements whose names are
+/// letters, digits and _-.:, attributes whose values hold no '&', text without '&', comments,
+/// declarations and processing instructions. Anything else, well-formed or not (an entity, a
+/// CDATA section, a DOCTYPE, a repeated attribute, a syntax error, ...), makes read() return
+/// false, and the caller lets rapidxml read the text instead; what read() accepts, rapidxml
+/// accepts too and reads into the same tree (same names, values, lines and order).
+class XmlDirectReader {
+ public:
+  /// `text` is the document's own copy, NUL-terminated; read() writes NULs into it.
+  explicit XmlDirectReader(XmlDocument& document) : document_(document) {}
+
+  /// The name `name`, kept once in `document`.
+  static const std::string& intern(XmlDocument& document, std::string_view name) {
+    const auto found = document.names_.find(name);
+    return found != document.names_.end() ? *found : *document.names_.emplace(name).first;
+  }
+
+  bool read(std::size_t size) {
+    char* p = document_.text_.get();
+    line_at_ = p;
+    // Each element has its own '<' and each attribute its own '=': bounds known before
+    // allocating, so that the arrays never move and elements may point into them.
+    document_.elements_.reserve(static_cast<std::size_t>(std::count(p, p + size, '<')));
+    document_.attributes_.reserve(static_cast<std::size_t>(std::count(p, p + size, '=')));
+    pending_.resize(1);
+    while (true) {
+      skip_blanks(p);
+      if (*p == '\0') break;
+      if (*p != '<') {
+        if (open_.empty()) return false;  // text outside of any element
+        for (; *p != '<'; ++p) {
+          if (*p == '\0' || *p == '&') return false;
+        }
+        continue;
+      }
+      if (p[1] == '!') {
+        if (p[2] != '-' || p[3] != '-') return false;
+        p = std::strstr(p + 4, "-->");
+        if (p == nullptr) return false;
+        p += 3;
+      } else if (p[1] == '?') {
+        p = std::strstr(p + 2, "?>");
+        if (p == nullptr) return false;
+        p += 2;
+      } else if (p[1] == '/') {
+        if (!close(p)) return false;
+      } else if (!start_tag(p)) {
+        return false;
+      }
     }
-    return children;
+    if (!open_.empty()) return false;
+    const std::vector<XmlElement>& top = pending_[0];
+    if (document_.elements_.size() + top.size() > document_.elements_.capacity()) return false;
+    document_.top_ = document_.elements_.data() + document_.elements_.size();
+    document_.top_count_ = top.size();
+    document_.elements_.insert(document_.elements_.end(), top.begin(), top.end());
+    return true;
   }
 
  private:
-  XmlElement element(const rapidxml::xml_node<char>& node) const {
+  static void skip_blanks(char*& p) {
+    while (is_blank(*p)) ++p;
+  }
+
+  /// A start tag at p ('<'), with its attributes; an element that is not empty stays open.
+  bool start_tag(char*& p) {
+    char* name = p + 1;
+    char* q = name;
+    while (is_name_char(*q)) ++q;
+    if (q == name || !(is_blank(*q) || *q == '/' || *q == '>')) return false;
     XmlElement e;
-    e.name_.assign(node.name(), node.name_size());
-    e.line_ = line_of(node.name());
+    e.name_ = &intern(document_, {name, static_cast<std::size_t>(q - name)});
+    e.line_ = line_of(name);
+    std::vector<XmlAttribute>& attributes = document_.attributes_;
+    e.attributes_ = attributes.data() + attributes.size();
+    skip_blanks(q);
+    while (is_name_char(*q)) {
+      char* attribute = q;
+      while (is_name_char(*q)) ++q;
+      char* attribute_end = q;
+      skip_blanks(q);
+      if (*q != '=') return false;
+      ++q;
+      skip_blanks(q);
+      const char quote = *q;
+      if (quote != '"' && quote != '\'') return false;
+      char* value = ++q;
+      for (; *q != quote; ++q) {
+        if (*q == '\0' || *q == '&') return false;
+      }
+      *q++ = '\0';
+      *attribute_end = '\0';
+      const std::string_view attribute_name(attribute,
+                                            static_cast<std::size_t>(attribute_end - attribute));
+      for (const XmlAttribute* a = e.attributes_; a != attributes.data() + attributes.size(); ++a) {
+        if (a->name == attribute_name) return false;  // repeated: rapidxml's reading says so
+      }
+      if (attributes.size() == attributes.capacity()) return false;
+      attributes.push_back({attribute_name, value});
+      ++e.attribute_count_;
+      skip_blanks(q);
+    }
+    if (q[0] == '/' && q[1] == '>') {
+      pending_[open_.size()].push_back(e);
+      p = q + 2;
+      return true;
+    }
+    if (q[0] != '>') return false;
+    pending_[open_.size()].push_back(e);
+    open_.push_back({name, static_cast<std::size_t>(e.name_->size())});
+    if (open_.size() > static_cast<std::size_t>(kMaxXmlDepth)) return false;
+    if (pending_.size() <= open_.size()) pending_.resize(open_.size() + 1);
+    p = q + 1;
+    return true;
+  }
+
+  /// The closing tag at p ("</") of the innermost open element: its children join the
+  /// document's array, adjacent.
+  bool close(char*& p) {
+    if (open_.empty()) return false;
+    char* name = p + 2;
+    char* q = name;
+    while (is_name_char(*q)) ++q;
+    if (!(is_blank(*q) || *q == '>')) return false;
+    if (std::string_view(name, static_cast<std::size_t>(q - name)) != open_.back()) return false;
+    skip_blanks(q);
+    if (*q != '>') return false;
+    p = q + 1;
+    std::vector<XmlElement>& children = pending_[open_.size()];
+    std::vector<XmlElement>& all = document_.elements_;
+    if (all.size() + children.size() > all.capacity()) return false;
+    XmlElement& parent = pending_[open_.size() - 1].back();
+    parent.children_ = all.data() + all.size();
+    parent.child_count_ = static_cast<std::uint32_t>(children.size());
+    all.insert(all.end(), children.begin(), children.end());
+    children.clear();
+    open_.pop_back();
+    return true;
+  }
+
+  /// The line of p; p never goes back.
+  int line_of(const char* p) {
+    line_ += static_cast<int>(std::count(line_at_, p, '\n'));
+    line_at_ = p;
+    return line_;
+  }
+
+  XmlDocument& document_;
+  std::vector<std::string_view> open_;  ///< names of the elements open, outermost first
+  std::vector<std::vector<XmlElement>>
+      pending_;  ///< [d]: the elements read at depth d, not yet placed
+  const char* line_at_ = nullptr;
+  int line_ = 1;
+};
+
+/// Copies rapidxml's nodes into one XmlDocument: a first walk, in document order, counts the
+/// elements and attributes and refuses a repeated attribute; a second fills arrays of exactly
+/// that size, level by level, so that the children of an element are adjacent.
+class XmlTreeBuilder {
+ public:
+  using Node = rapidxml::xml_node<char>;
+
+  XmlTreeBuilder(XmlDocument& document, const LineTable& lines, const std::string& file)
+      : document_(document), lines_(lines), file_(file) {}
+
+  void build(const Node& root) {
+    std::size_t elements = 0;
+    std::size_t attributes = 0;
+    for (const Node* top = first_element(root); top != nullptr; top = next_element(*top)) {
+      ++document_.top_count_;
+      count(*top, elements, attributes);
+    }
+    document_.elements_.resize(elements);
+    document_.top_ = document_.elements_.data();
+    document_.attributes_.reserve(attributes);
+    std::vector<const Node*> nodes;  // nodes[k] is the source of element k
+    nodes.reserve(elements);
+    for (const Node* top = first_element(root); top != nullptr; top = next_element(*top)) {
+      nodes.push_back(top);
+    }
+    for (std::size_t k = 0; k < nodes.size(); ++k) {  // nodes grows behind k, level by level
+      const Node& node = *nodes[k];
+      XmlElement& e = document_.elements_[k];
+      e.name_ = &intern({node.name(), node.name_size()});
+      e.line_ = line_of(node.name());
+      e.attributes_ = document_.attributes_.data() + document_.attributes_.size();
+      for (const auto* a = node.first_attribute(); a != nullptr; a = a->next_attribute()) {
+        document_.attributes_.push_back({{a->name(), a->name_size()}, a->value()});
+      }
+      e.attribute_count_ = static_cast<std::uint32_t>(document_.attributes_.data() +
+                                                      document_.attributes_.size() - e.attributes_);
+      e.children_ = document_.elements_.data() + nodes.size();
+      for (const Node* c = first_element(node); c != nullptr; c = next_element(*c)) {
+        nodes.push_back(c);
+      }
+      e.child_count_ =
+          static_cast<std::uint32_t>(document_.elements_.data() + nodes.size() - e.children_);
+    }
+  }
+
+ private:
+  static const Node* first_element(const Node& parent) {
+    const Node* n = parent.first_node();
+    while (n != nullptr && n->type() != rapidxml::node_element) n = n->next_sibling();
+    return n;
+  }
+  static const Node* next_element(const Node& node) {
+    const Node* n = node.next_sibling();
+    while (n != nullptr && n->type() != rapidxml::node_element) n = n->next_sibling();
+    return n;
+  }
+
+  /// Counts `node` and the elements below it (the depth is at most kMaxXmlDepth), with their
+  /// attributes, and refuses the first repeated attribute in document order.
+  void count(const Node& node, std::size_t& elements, std::size_t& attributes) const {
+    ++elements;
     for (const auto* a = node.first_attribute(); a != nullptr; a = a->next_attribute()) {
-      XmlAttribute attribute{std::string(a->name(), a->name_size()),
-                             std::string(a->value(), a->value_size())};
-      if (e.attribute(attribute.name) != nullptr) {  // few: the loader bounds their number
+      ++attributes;
+      const std::string_view name(a->name(), a->name_size());
+      for (const auto* b = node.first_attribute(); b != a; b = b->next_attribute()) {
+        if (std::string_view(b->name(), b->name_size()) != name) continue;
+        // Few per element: the loader bounds their number.
         throw SceneError(
-            file_, line_of(a->name()), "<" + e.name_ + ">",
+            file_, line_of(a->name()), "<" + std::string(node.name(), node.name_size()) + ">",
             "not well-formed XML: a malformed or repeated attribute (values need quotes: "
             "name=\"value\")");
       }
-      e.attributes_.push_back(std::move(attribute));
     }
-    e.children_ = children_of(node);
-    return e;
+    for (const Node* c = first_element(node); c != nullptr; c = next_element(*c)) {
+      count(*c, elements, attributes);
+    }
   }
-  int line_of(const char* p) const { return lines_.line_of(static_cast<std::size_t>(p - buffer_)); }
 
-  const char* buffer_;
+  const std::string& intern(std::string_view name) {
+    return XmlDirectReader::intern(document_, name);
+  }
+
+  int line_of(const char* p) const {
+    return lines_.line_of(static_cast<std::size_t>(p - document_.text_.get()));
+  }
+
+  XmlDocument& document_;
   const LineTable& lines_;
   const std::string& file_;
 };
 
 const char* XmlElement::attribute(std::string_view name) const {
-  for (const XmlAttribute& a : attributes_) {
-    if (a.name == name) return a.value.c_str();
+  for (const XmlAttribute& a : attributes()) {
+    if (a.name == name) return a.value;
   }
   return nullptr;
 }
 
 std::vector<const XmlElement*> XmlElement::children_named(std::string_view name) const {
   std::vector<const XmlElement*> found;
-  for (const XmlElement& child : children_) {
-    if (child.name_ == name) found.push_back(&child);
+  for (const XmlElement& child : children()) {
+    if (*child.name_ == name) found.push_back(&child);
   }
   return found;
 }
 
-std::vector<XmlElement> parse_xml(std::string_view text, const std::string& file) {
+XmlDocument parse_xml(std::string_view text, const std::string& file) {
+  if (text.size() > kMaxXmlBytes) {  // element and attribute counts are 32-bit
+    throw SceneError(file, 0, "",
+                     "the XML text is larger than " + std::to_string(kMaxXmlBytes >> 20) +
+                         " MiB, the most the XML reader reads");
+  }
   const XmlPlace whole = place_at(text, text.size());
   if (whole.too_deep) {
     const XmlPlace::Open& deepest = whole.open.back();
@@ -242,21 +459,35 @@ std::vector<XmlElement> parse_xml(std::string_view text, const std::string& file
                      "elements nested more than " + std::to_string(kMaxXmlDepth) +
                          " deep (a scene needs three)");
   }
-  // rapidxml parses in place and reads up to a terminating NUL: it gets a copy.
-  std::vector<char> buffer(text.begin(), text.end());
-  buffer.push_back('\0');
+  // rapidxml parses in place and reads up to a terminating NUL: it gets a copy, which the
+  // document keeps (its names and values stay where rapidxml put them).
+  const auto with_text = [&] {
+    XmlDocument document;
+    document.text_ = std::unique_ptr<char[]>(new char[text.size() + 1]);
+    std::copy(text.begin(), text.end(), document.text_.get());
+    document.text_[text.size()] = '\0';
+    return document;
+  };
+  XmlDocument direct = with_text();
+  if (XmlDirectReader(direct).read(text.size())) return direct;
+  direct = XmlDocument();
+  // Something the direct reading leaves to rapidxml, on a fresh copy of the text.
+  XmlDocument out = with_text();
   const LineTable lines(text);
   constexpr int kFlags = rapidxml::parse_validate_closing_tags | rapidxml::parse_no_data_nodes |
                          rapidxml::parse_no_element_values;
-  rapidxml::xml_document<char> document;
-  try {
-    document.parse<kFlags>(buffer.data());
-  } catch (const rapidxml::parse_error& e) {
-    const char* where = e.where<char>() != nullptr ? e.where<char>() : buffer.data();
-    const auto offset = static_cast<std::size_t>(where - buffer.data());
-    throw syntax_error(text, file, e.what(), offset, lines);
+  {  // rapidxml's nodes are freed as soon as the document is built
+    rapidxml::xml_document<char> parsed;
+    try {
+      parsed.parse<kFlags>(out.text_.get());
+    } catch (const rapidxml::parse_error& e) {
+      const char* where = e.where<char>() != nullptr ? e.where<char>() : out.text_.get();
+      const auto offset = static_cast<std::size_t>(where - out.text_.get());
+      throw syntax_error(text, file, e.what(), offset, lines);
+    }
+    XmlTreeBuilder(out, lines, file).build(parsed);
   }
-  return XmlTreeBuilder(buffer.data(), lines, file).children_of(document);
+  return out;
 }
 
 }  // namespace fosssim

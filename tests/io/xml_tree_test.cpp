@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 
 #include "io/scene_error.h"
 
@@ -29,7 +30,7 @@ TEST(XmlTree, ElementsAttributesAndLines) {
       "  <particle m=\"&lt;&amp;&#65;\"\n px=\"0\"/>text\n"
       "  <mesh><pin i=\"3\"/><![CDATA[<notanelement/>]]></mesh>\n"
       "</scene>\n";
-  const std::vector<XmlElement> top = parse_xml(xml, "t.xml");
+  const XmlDocument top = parse_xml(xml, "t.xml");
   ASSERT_EQ(top.size(), 1u);
   const XmlElement& scene = top[0];
   EXPECT_EQ(scene.name(), "scene");
@@ -55,7 +56,7 @@ TEST(XmlTree, ElementsAttributesAndLines) {
 }
 
 TEST(XmlTree, SeveralTopLevelElementsAreReturned) {
-  const std::vector<XmlElement> top = parse_xml("<a/>\n\n<b/>", "t.xml");
+  const XmlDocument top = parse_xml("<a/>\n\n<b/>", "t.xml");
   ASSERT_EQ(top.size(), 2u);
   EXPECT_EQ(top[1].name(), "b");
   EXPECT_EQ(top[1].line(), 3);
@@ -96,16 +97,81 @@ TEST(XmlTree, SyntaxErrorsNameLineAndElement) {
             "with a different name");
 }
 
+/// Whether two trees have the same names, lines, attributes (in order) and children.
+void expect_same_tree(const XmlElement& a, const XmlElement& b) {
+  EXPECT_EQ(a.name(), b.name());
+  EXPECT_EQ(a.line(), b.line()) << a.name();
+  ASSERT_EQ(a.attributes().size(), b.attributes().size()) << a.name();
+  for (std::size_t k = 0; k < a.attributes().size(); ++k) {
+    EXPECT_EQ(a.attributes()[k].name, b.attributes()[k].name);
+    EXPECT_STREQ(a.attributes()[k].value, b.attributes()[k].value);
+  }
+  ASSERT_EQ(a.children().size(), b.children().size()) << a.name();
+  for (std::size_t k = 0; k < a.children().size(); ++k) {
+    expect_same_tree(a.children()[k], b.children()[k]);
+  }
+}
+
+TEST(XmlTree, PlainXmlReadsAsRapidxmlReadsIt) {
+  // Plain scene XML is read without rapidxml; an entity reference anywhere sends the whole text
+  // to rapidxml. "&#49;" is "1", so both texts hold the same tree, read two ways.
+  const std::string plain =
+      "<?xml version=\"1.0\"?>\n<!-- a <comment/> -->\n"
+      "<scene a=\"1\" b = 'two' c=\"\"\n   d=\"x y\">text <?pi x?>\n"
+      "  <particle m=\"0.5\"\n px=\"0\"/>\n"
+      "  <mesh><pin i=\"3\"/>\n<pin i=\"4\"><x/></pin  ></mesh>\n"
+      "  <edge i=\"0\" j=\"1\"/>\n"
+      "</scene>\n<second last=\"LAST\"/>\n";
+  std::string via_rapidxml = plain;
+  via_rapidxml.replace(via_rapidxml.find("LAST"), 4, "&#49;");
+  std::string direct_text = plain;
+  direct_text.replace(direct_text.find("LAST"), 4, "1");
+  const XmlDocument direct = parse_xml(direct_text, "t.xml");
+  const XmlDocument rapid = parse_xml(via_rapidxml, "t.xml");
+  ASSERT_EQ(direct.size(), 2u);
+  ASSERT_EQ(rapid.size(), 2u);
+  expect_same_tree(direct[0], rapid[0]);
+  expect_same_tree(direct[1], rapid[1]);
+  // What the scene readers rely on, checked on the direct reading.
+  const XmlElement& scene = direct[0];
+  EXPECT_EQ(scene.line(), 3);
+  EXPECT_STREQ(scene.attribute("b"), "two");
+  EXPECT_STREQ(scene.attribute("c"), "");
+  EXPECT_STREQ(scene.attribute("d"), "x y");
+  for (const XmlAttribute& a : scene.attributes()) {
+    EXPECT_EQ(a.name.data()[a.name.size()], '\0') << "names end with a NUL";
+  }
+  ASSERT_EQ(scene.children().size(), 3u);
+  EXPECT_EQ(scene.children()[1].children().size(), 2u);
+  EXPECT_EQ(scene.children()[1].children()[1].children()[0].name(), "x");
+  EXPECT_EQ(scene.children()[2].line(), 9);
+  EXPECT_EQ(&scene.children()[0].name(), &direct[0].children()[0].name());
+  EXPECT_EQ(&scene.children()[1].children()[0].name(), &scene.children()[1].children()[1].name())
+      << "a name is kept once";
+  // Moving the document keeps its elements where they are.
+  XmlDocument moved = parse_xml(direct_text, "t.xml");
+  const XmlElement* moved_before = &moved[0];
+  const XmlDocument kept = std::move(moved);
+  EXPECT_EQ(&kept[0], moved_before);
+  EXPECT_STREQ(kept[1].attribute("last"), "1");
+}
+
+TEST(XmlTree, ARepeatedAttributeIsAnErrorInPlainXmlToo) {
+  EXPECT_EQ(error_of("<scene>\n<a x=\"1\"\n x=\"2\"/>\n</scene>"),
+            "t.xml:3: error: <a>: not well-formed XML: a malformed or repeated attribute (values "
+            "need quotes: name=\"value\")");
+}
+
 TEST(XmlTree, NestingDeeperThanTheLimitIsRefusedBeforeParsing) {
   std::string deep;
   for (int k = 0; k < kMaxXmlDepth; ++k) deep += "<a>\n";
   std::string closed = deep;
   for (int k = 0; k < kMaxXmlDepth; ++k) closed += "</a>";
   EXPECT_EQ(parse_xml(closed, "t.xml").size(), 1u);
-  EXPECT_EQ(error_of(deep + "<b>" + "</b>"),
-            "t.xml:" + std::to_string(kMaxXmlDepth + 1) +
-                ": error: <b>: elements nested more than " + std::to_string(kMaxXmlDepth) +
-                " deep (a scene needs three)");
+  EXPECT_EQ(error_of(deep + "<b>" + "</b>"), "t.xml:" + std::to_string(kMaxXmlDepth + 1) +
+                                                 ": error: <b>: elements nested more than " +
+                                                 std::to_string(kMaxXmlDepth) +
+                                                 " deep (a scene needs three)");
 }
 
 }  // namespace
