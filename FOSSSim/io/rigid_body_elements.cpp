@@ -410,11 +410,6 @@ class RigidBodySceneReader {
   std::vector<const Force*> springs_;
 };
 
-bool is_name_char(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.' ||
-         c == ':';
-}
-
 }  // namespace
 
 std::span<const std::string_view> rigid_body_element_names() { return kRigidBodyElements; }
@@ -455,7 +450,7 @@ std::string number_repeated_hull_attributes(std::string_view text) {
     const std::size_t after = open + 10;
     out.append(text.substr(k, after - k));
     k = after;
-    if (after < text.size() && is_name_char(text[after])) continue;  // <rigidbodyvertex ...
+    if (after < text.size() && is_xml_name_char(text[after])) continue;  // <rigidbodyvertex ...
     // Inside the tag: count the attributes named "p" outside quotes.
     int count = 0;
     char quote = 0;
@@ -474,9 +469,9 @@ std::string number_repeated_hull_attributes(std::string_view text) {
         ++k;
         continue;
       }
-      if (is_name_char(c)) {
+      if (is_xml_name_char(c)) {
         std::size_t end = k;
-        while (end < text.size() && is_name_char(text[end])) ++end;
+        while (end < text.size() && is_xml_name_char(text[end])) ++end;
         std::size_t eq = end;
         while (eq < text.size() && std::isspace(static_cast<unsigned char>(text[eq]))) ++eq;
         const std::string_view name = text.substr(k, end - k);

@@ -179,7 +179,7 @@ SceneError syntax_error(std::string_view text, const std::string& file, const st
 
 }  // namespace
 
-bool is_name_char(char c) {
+bool is_xml_name_char(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
          c == '-' || c == '.' || c == ':';
 }
@@ -253,7 +253,7 @@ class XmlDirectReader {
   bool start_tag(char*& p) {
     char* name = p + 1;
     char* q = name;
-    while (is_name_char(*q)) ++q;
+    while (is_xml_name_char(*q)) ++q;
     if (q == name || !(is_blank(*q) || *q == '/' || *q == '>')) return false;
     XmlElement e;
     e.name_ = &intern(document_, {name, static_cast<std::size_t>(q - name)});
@@ -261,9 +261,9 @@ class XmlDirectReader {
     std::vector<XmlAttribute>& attributes = document_.attributes_;
     e.attributes_ = attributes.data() + attributes.size();
     skip_blanks(q);
-    while (is_name_char(*q)) {
+    while (is_xml_name_char(*q)) {
       char* attribute = q;
-      while (is_name_char(*q)) ++q;
+      while (is_xml_name_char(*q)) ++q;
       char* attribute_end = q;
       skip_blanks(q);
       if (*q != '=') return false;
@@ -307,7 +307,7 @@ class XmlDirectReader {
     if (open_.empty()) return false;
     char* name = p + 2;
     char* q = name;
-    while (is_name_char(*q)) ++q;
+    while (is_xml_name_char(*q)) ++q;
     if (!(is_blank(*q) || *q == '>')) return false;
     if (std::string_view(name, static_cast<std::size_t>(q - name)) != open_.back()) return false;
     skip_blanks(q);

@@ -81,6 +81,10 @@ class XmlDocument {
 /// level; a scene needs three).
 constexpr int kMaxXmlDepth = 100;
 
+/// True for the characters of the element and attribute names of plain scene XML: ASCII letters
+/// and digits, '_', '-', '.' and ':'.
+bool is_xml_name_char(char c);
+
 /// The longest XML text parse_xml reads (the file size limit, --max-file-size, is lower by
 /// default): it counts elements and attributes in 32 bits.
 constexpr std::size_t kMaxXmlBytes = (std::size_t{4} << 30) - 1;
