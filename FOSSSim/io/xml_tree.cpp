@@ -9,7 +9,9 @@
 
 namespace fosssim {
 
-namespace {
+// Named, not anonymous: XmlTreeBuilder (declared in the header) holds one, and in a unity
+// build a member of an anonymous-namespace type is a linkage warning.
+namespace xml_tree_detail {
 
 /// The 1-based line of each offset of one text, by binary search over its line ends.
 class LineTable {
@@ -27,6 +29,11 @@ class LineTable {
  private:
   std::vector<std::size_t> newlines_;
 };
+
+}  // namespace xml_tree_detail
+using xml_tree_detail::LineTable;
+
+namespace {
 
 /// Where a position of the text is, as the markup before it says: the elements still open, the
 /// start tag or comment being read. A plain linear reading of the tags, used only to check the

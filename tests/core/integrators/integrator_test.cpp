@@ -153,8 +153,10 @@ TEST(SolverOption, SparseDirectAndItsOldNameCholmodChooseTheSparseDirectLibrarie
   EXPECT_EQ(solver_choice(values), SolverChoice::kSparseDirect);
   values.set("solver", "eigen");
   EXPECT_EQ(solver_choice(values), SolverChoice::kEigen);
+  values.set("solver", "amg");
+  EXPECT_EQ(solver_choice(values), SolverChoice::kAmg);
   EXPECT_EQ(kSolverOption.describe_values(),
-            "\"auto\", \"eigen\", \"sparse-direct\" or \"cholmod\"");
+            "\"auto\", \"eigen\", \"sparse-direct\", \"cholmod\" or \"amg\"");
 }
 
 }  // namespace fosssim::testing
