@@ -26,24 +26,15 @@ constexpr std::array<std::string_view, 6> kElements = {
 /// method is asked for, given or not, so that a misspelt one is named ("thicknes": did you mean
 /// "thickness"?). A choice given as "" is read as not given (penalty-jacobian="" is the
 /// course's "none"); an empty number is an error.
-class CollisionAttributes final : public OptionSource {
+class CollisionAttributes final : public AttributeOptions {
  public:
   CollisionAttributes(ElementReader& reader, const ContactMethod& method)
-      : reader_(reader), method_(method) {}
+      : AttributeOptions(reader), method_(method) {}
   bool has(std::string_view name) override {
     const std::string attribute(name);
     const std::string value = reader_.text_or_empty(attribute.c_str());  // asked for, given or not
     if (value.empty() && is_choice(name)) return false;
     return reader_.has(attribute.c_str());
-  }
-  double number(std::string_view name) override {
-    return reader_.number(std::string(name).c_str());
-  }
-  std::string text(std::string_view name) override {
-    return reader_.text(std::string(name).c_str());
-  }
-  [[noreturn]] void fail(std::string_view name, const std::string& problem) override {
-    reader_.fail(std::string(name).c_str(), problem);
   }
 
  private:
@@ -54,7 +45,6 @@ class CollisionAttributes final : public OptionSource {
     return false;
   }
 
-  ElementReader& reader_;
   const ContactMethod& method_;
 };
 

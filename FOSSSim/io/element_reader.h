@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/force_parameters.h"
+#include "core/integrators/integrator_options.h"  // OptionSource
 #include "core/misspelling.h"  // looks_like_misspelling, for the did-you-mean of attributes
 #include "core/scene.h"
 #include "io/xml_tree.h"
@@ -99,6 +100,26 @@ class ElementReader final : public ForceParameters {
   /// false when there is none.
   template <typename T>
   bool parse_prefix(const char* name, const char* text, T& value);
+};
+
+/// A registry entry's options (an integrator's, a contact method's) as attributes of the element
+/// `reader` reads: has/number/text/fail by the option's name.
+class AttributeOptions : public OptionSource {
+ public:
+  explicit AttributeOptions(ElementReader& reader) : reader_(reader) {}
+  bool has(std::string_view name) override { return reader_.has(std::string(name).c_str()); }
+  double number(std::string_view name) override {
+    return reader_.number(std::string(name).c_str());
+  }
+  std::string text(std::string_view name) override {
+    return reader_.text(std::string(name).c_str());
+  }
+  [[noreturn]] void fail(std::string_view name, const std::string& problem) override {
+    reader_.fail(std::string(name).c_str(), problem);
+  }
+
+ protected:
+  ElementReader& reader_;
 };
 
 }  // namespace fosssim

@@ -60,25 +60,6 @@ std::string element_suggestion(std::string_view unknown) {
   return "";
 }
 
-/// An integrator's options as attributes of its <integrator> element.
-class AttributeOptions final : public OptionSource {
- public:
-  explicit AttributeOptions(ElementReader& reader) : reader_(reader) {}
-  bool has(std::string_view name) override { return reader_.has(std::string(name).c_str()); }
-  double number(std::string_view name) override {
-    return reader_.number(std::string(name).c_str());
-  }
-  std::string text(std::string_view name) override {
-    return reader_.text(std::string(name).c_str());
-  }
-  [[noreturn]] void fail(std::string_view name, const std::string& problem) override {
-    reader_.fail(std::string(name).c_str(), problem);
-  }
-
- private:
-  ElementReader& reader_;
-};
-
 /// Turns a parsed document into a Scene. Every element is read in errors_.attempt(), so that
 /// one run reports the problems of every element (at most SceneErrorList::kMaxReported of
 /// them); the problems that leave nothing sensible to go on with (the root, the dimension, a
