@@ -27,14 +27,14 @@
 namespace fosssim::testing {
 namespace {
 
-constexpr double kDt = 1.0 / 30.0;
+constexpr double kNewtonDt = 1.0 / 30.0;
 
 /// A 12×12 cloth of 1000 N/m springs (structural, shear and bend), squeezed around its centre
 /// to `squeeze_x` of its size along x and `squeeze_z` along z, with a small out-of-plane
 /// ripple that lets it buckle, at rest, held at two corners, in gravity; newton with `hessian`.
 TestScene squeezed_cloth(double squeeze_x, double squeeze_z, const std::string& hessian,
                          double b = 0.0) {
-  TestScene scene = cloth(12, 1000.0, "newton", kDt, /*horizontal=*/true, "corners", b);
+  TestScene scene = cloth(12, 1000.0, "newton", kNewtonDt, /*horizontal=*/true, "corners", b);
   scene.model.integrator.options.set("hessian", hessian);
   scene.model.integrator.options.set("max-iterations", 1000);
   Vector& q = scene.initial.q;
@@ -99,7 +99,7 @@ struct StepCheck {
 
 StepCheck check_step(const TestScene& scene, const State& end) {
   const ForceSet forces(scene.model);
-  const BackwardEulerStep problem{forces, scene.initial, kDt};
+  const BackwardEulerStep problem{forces, scene.initial, kNewtonDt};
   const Vector dv = end.v - scene.initial.v;
   const Vector zero = Vector::Zero(dv.size());
   return {problem.residual(dv).lpNorm<Eigen::Infinity>() /
@@ -116,7 +116,8 @@ TEST(NewtonTest, EveryChoiceEndsAtAnImplicitEulerStepOfLowerPotential) {
     EXPECT_LT(check.residual, 1e-9);
     EXPECT_LT(check.potential_end, check.potential_start);
     // Positions follow the new velocities (implicit Euler).
-    EXPECT_LT((out.state.q - scene.initial.q - kDt * out.state.v).lpNorm<Eigen::Infinity>(), 1e-15);
+    EXPECT_LT((out.state.q - scene.initial.q - kNewtonDt * out.state.v).lpNorm<Eigen::Infinity>(),
+              1e-15);
   }
 }
 
