@@ -200,7 +200,9 @@ bool is_xml_name_char(char c) {
 /// accepts too and reads into the same tree (same names, values, lines and order).
 class XmlDirectReader {
  public:
-  /// `text` is the document's own copy, NUL-terminated; read() writes NULs into it.
+  /// The document's text is its own and NUL-terminated. read() leaves it as it is until it
+  /// has read it all: only then does it end each name and value with a NUL, so that on a
+  /// false return rapidxml gets the text as it was, without a copy.
   explicit XmlDirectReader(XmlDocument& document) : document_(document) {}
 
   /// The name `name`, kept once in `document`.
@@ -210,7 +212,7 @@ class XmlDirectReader {
   }
 
   bool read(std::size_t size) {
-    char* p = document_.text_.get();
+    char* p = document_.text_->data();
     line_at_ = p;
     // Each element has its own '<' and each attribute its own '=': bounds known before
     // allocating, so that the arrays never move and elements may point into them.
@@ -248,6 +250,7 @@ class XmlDirectReader {
     document_.top_ = document_.elements_.data() + document_.elements_.size();
     document_.top_count_ = top.size();
     document_.elements_.insert(document_.elements_.end(), top.begin(), top.end());
+    end_names_and_values();
     return true;
   }
 
@@ -282,8 +285,7 @@ class XmlDirectReader {
       for (; *q != quote; ++q) {
         if (*q == '\0' || *q == '&') return false;
       }
-      *q++ = '\0';
-      *attribute_end = '\0';
+      ++q;
       const std::string_view attribute_name(attribute,
                                             static_cast<std::size_t>(attribute_end - attribute));
       for (const XmlAttribute* a = e.attributes_; a != attributes.data() + attributes.size(); ++a) {
@@ -330,6 +332,18 @@ class XmlDirectReader {
     children.clear();
     open_.pop_back();
     return true;
+  }
+
+  /// Ends every attribute's name and value with a NUL, where the '=' (or a blank) after the
+  /// name and the closing quote of the value were: the text has been read whole.
+  void end_names_and_values() {
+    for (XmlAttribute& a : document_.attributes_) {
+      char* const name_end = const_cast<char*>(a.name.data()) + a.name.size();
+      char* const value = const_cast<char*>(a.value);
+      const char quote = value[-1];  // the value holds no such quote (start_tag)
+      *std::strchr(value, quote) = '\0';
+      *name_end = '\0';
+    }
   }
 
   /// The line of p; p never goes back.
@@ -430,7 +444,7 @@ class XmlTreeBuilder {
   }
 
   int line_of(const char* p) const {
-    return lines_.line_of(static_cast<std::size_t>(p - document_.text_.get()));
+    return lines_.line_of(static_cast<std::size_t>(p - document_.text_->data()));
   }
 
   XmlDocument& document_;
@@ -454,43 +468,47 @@ std::vector<const XmlElement*> XmlElement::children_named(std::string_view name)
 }
 
 XmlDocument parse_xml(std::string_view text, const std::string& file) {
+  return parse_xml_text(std::string(text), file);
+}
+
+XmlDocument parse_xml_text(std::string text, const std::string& file) {
   if (text.size() > kMaxXmlBytes) {  // element and attribute counts are 32-bit
     throw SceneError(file, 0, "",
                      "the XML text is larger than " + std::to_string(kMaxXmlBytes >> 20) +
                          " MiB, the most the XML reader reads");
   }
-  const XmlPlace whole = place_at(text, text.size());
+  // The document keeps the text: names and values are read where they are written. The
+  // string is held through a pointer, so that moving the document never moves its characters
+  // (a short string's are inside the string object).
+  XmlDocument direct;
+  direct.text_ = std::make_unique<std::string>(std::move(text));
+  if (XmlDirectReader(direct).read(direct.text_->size())) return direct;
+  // Something the direct reading leaves to rapidxml (which reads in place, up to the string's
+  // terminating NUL), on the same text, untouched by the direct reading; the original stays
+  // for the messages.
+  XmlDocument out;
+  out.text_ = std::move(direct.text_);
+  direct = XmlDocument();
+  const std::string original = *out.text_;
+  const XmlPlace whole = place_at(original, original.size());
   if (whole.too_deep) {
     const XmlPlace::Open& deepest = whole.open.back();
     throw SceneError(file, deepest.line, element_name(deepest.name),
                      "elements nested more than " + std::to_string(kMaxXmlDepth) +
                          " deep (a scene needs three)");
   }
-  // rapidxml parses in place and reads up to a terminating NUL: it gets a copy, which the
-  // document keeps (its names and values stay where rapidxml put them).
-  const auto with_text = [&] {
-    XmlDocument document;
-    document.text_ = std::unique_ptr<char[]>(new char[text.size() + 1]);
-    std::copy(text.begin(), text.end(), document.text_.get());
-    document.text_[text.size()] = '\0';
-    return document;
-  };
-  XmlDocument direct = with_text();
-  if (XmlDirectReader(direct).read(text.size())) return direct;
-  direct = XmlDocument();
-  // Something the direct reading leaves to rapidxml, on a fresh copy of the text.
-  XmlDocument out = with_text();
-  const LineTable lines(text);
+  const LineTable lines(original);
   constexpr int kFlags = rapidxml::parse_validate_closing_tags | rapidxml::parse_no_data_nodes |
                          rapidxml::parse_no_element_values;
   {  // rapidxml's nodes are freed as soon as the document is built
     rapidxml::xml_document<char> parsed;
+    char* const start = out.text_->data();
     try {
-      parsed.parse<kFlags>(out.text_.get());
+      parsed.parse<kFlags>(start);
     } catch (const rapidxml::parse_error& e) {
-      const char* where = e.where<char>() != nullptr ? e.where<char>() : out.text_.get();
-      const auto offset = static_cast<std::size_t>(where - out.text_.get());
-      throw syntax_error(text, file, e.what(), offset, lines);
+      const char* where = e.where<char>() != nullptr ? e.where<char>() : start;
+      const auto offset = static_cast<std::size_t>(where - start);
+      throw syntax_error(original, file, e.what(), offset, lines);
     }
     XmlTreeBuilder(out, lines, file).build(parsed);
   }
