@@ -7,6 +7,8 @@
 #include <cerrno>
 #include <cstring>
 
+#include "io/page_population.h"
+
 namespace fosssim {
 
 namespace {
@@ -66,7 +68,10 @@ std::string read_text_file(const std::string& path, std::int64_t max_bytes) {
   if (file.size > max_bytes) refuse_input(path, file_limit_problem(max_bytes));
   // Read straight into the string, at the size stat() gave (one copy of a 2.6 MB scene instead
   // of two through a buffer); a file that grew since is read on in chunks, within max_bytes.
-  std::string content(static_cast<std::size_t>(file.size), '\0');
+  std::string content;
+  content.reserve(static_cast<std::size_t>(file.size));
+  populate_pages(content.data(), content.capacity());
+  content.resize(static_cast<std::size_t>(file.size));
   content.resize(std::fread(content.data(), 1, content.size(), file.stream.get()));
   for (std::size_t chunk = 1 << 16; !std::ferror(file.stream.get());) {
     const std::size_t at = content.size();

@@ -5,6 +5,7 @@
 #include <rapidxml/rapidxml.hpp>
 #include <utility>
 
+#include "io/page_population.h"
 #include "io/scene_error.h"
 
 namespace fosssim {
@@ -216,8 +217,13 @@ class XmlDirectReader {
     line_at_ = p;
     // Each element has its own '<' and each attribute its own '=': bounds known before
     // allocating, so that the arrays never move and elements may point into them.
+    // Both are written whole: their pages are mapped at once (io/page_population.h).
     document_.elements_.reserve(static_cast<std::size_t>(std::count(p, p + size, '<')));
     document_.attributes_.reserve(static_cast<std::size_t>(std::count(p, p + size, '=')));
+    populate_pages(document_.elements_.data(),
+                   document_.elements_.capacity() * sizeof(XmlElement));
+    populate_pages(document_.attributes_.data(),
+                   document_.attributes_.capacity() * sizeof(XmlAttribute));
     pending_.resize(1);
     while (true) {
       skip_blanks(p);
