@@ -21,14 +21,16 @@
 // its own start-up later resets it to the process's initial block, so a setenv made there is
 // lost. The environment stays as it was, for the processes a program starts (ffmpeg, the
 // oracle's candidates). A value --threads refuses (not a number in 1..256) counts as 1 here;
-// CLI11 then rejects the command line. Nothing here allocates or needs libc's start-up.
+// CLI11 then rejects the command line. Before main nothing here allocates, and it calls no
+// libc function a sanitizer's runtime may intercept (strtol, strcmp, sched_getaffinity): the
+// affinity is asked of the kernel directly.
 
 #include <dirent.h>
 #include <sched.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
-#include <cerrno>
 #include <cstdlib>
-#include <cstring>
 
 namespace {
 
@@ -39,28 +41,38 @@ constexpr long kMaxBlasThreads = 256;
 cpu_set_t start_cpus;
 bool cpus_narrowed = false;
 
-/// `text` as a count in 1..kMaxBlasThreads, or 0.
+/// `text` as a count in 1..kMaxBlasThreads (decimal digits only, as CLI11 reads it), or 0.
 long thread_count(const char* text) {
   if (text == nullptr || *text == '\0') return 0;
-  char* end = nullptr;
-  errno = 0;
-  const long count = std::strtol(text, &end, 10);
-  if (errno != 0 || *end != '\0' || count < 1 || count > kMaxBlasThreads) return 0;
-  return count;
+  long count = 0;
+  for (; *text != '\0'; ++text) {
+    if (*text < '0' || *text > '9') return 0;
+    count = 10 * count + (*text - '0');
+    if (count > kMaxBlasThreads) return 0;
+  }
+  return count >= 1 ? count : 0;
+}
+
+/// Whether `argument` starts with `prefix`; the rest of it, or null.
+const char* after_prefix(const char* argument, const char* prefix) {
+  for (; *prefix != '\0'; ++argument, ++prefix) {
+    if (*argument != *prefix) return nullptr;
+  }
+  return argument;
 }
 
 /// The count of the last `--threads N` or `--threads=N` in argv; 1 when none is valid.
 long threads_option(int argc, char** argv) {
-  static constexpr char kOption[] = "--threads";
-  constexpr std::size_t kLength = sizeof(kOption) - 1;
   long count = 1;
   for (int i = 1; i < argc && argv[i] != nullptr; ++i) {
-    if (std::strcmp(argv[i], "--") == 0) break;
-    if (std::strncmp(argv[i], kOption, kLength) != 0) continue;
+    const char* rest = after_prefix(argv[i], "--");
+    if (rest != nullptr && *rest == '\0') break;  // "--": no options after it
+    rest = after_prefix(argv[i], "--threads");
+    if (rest == nullptr) continue;
     const char* value = nullptr;
-    if (argv[i][kLength] == '=') {
-      value = argv[i] + kLength + 1;
-    } else if (argv[i][kLength] == '\0' && i + 1 < argc) {
+    if (*rest == '=') {
+      value = rest + 1;
+    } else if (*rest == '\0' && i + 1 < argc) {
       value = argv[++i];
     } else {
       continue;  // --threadsX is another option
@@ -74,7 +86,9 @@ long threads_option(int argc, char** argv) {
 /// Runs before the shared libraries' constructors (.preinit_array).
 void narrow_cpus_before_libraries(int argc, char** argv, char** /*envp*/) {
   const long threads = threads_option(argc, argv);
-  if (::sched_getaffinity(0, sizeof(start_cpus), &start_cpus) != 0) return;
+  CPU_ZERO(&start_cpus);
+  // The system call returns the size of the mask it wrote (glibc's wrapper returns 0).
+  if (::syscall(SYS_sched_getaffinity, 0, sizeof(start_cpus), &start_cpus) <= 0) return;
   if (CPU_COUNT(&start_cpus) <= threads) return;
   cpu_set_t first;
   CPU_ZERO(&first);
@@ -85,7 +99,7 @@ void narrow_cpus_before_libraries(int argc, char** argv, char** /*envp*/) {
       ++kept;
     }
   }
-  cpus_narrowed = ::sched_setaffinity(0, sizeof(first), &first) == 0;
+  cpus_narrowed = ::syscall(SYS_sched_setaffinity, 0, sizeof(first), &first) == 0;
 }
 
 /// Runs after them (the executable's constructors come last): every thread gets the CPUs back,
