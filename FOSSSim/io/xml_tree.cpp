@@ -224,7 +224,9 @@ class XmlDirectReader {
                    document_.elements_.capacity() * sizeof(XmlElement));
     populate_pages(document_.attributes_.data(),
                    document_.attributes_.capacity() * sizeof(XmlAttribute));
-    pending_.resize(1);
+    // The elements not yet placed never outnumber the elements: one allocation, no copies.
+    pending_.reserve(document_.elements_.capacity());
+    populate_pages(pending_.data(), pending_.capacity() * sizeof(XmlElement));
     while (true) {
       skip_blanks(p);
       if (*p == '\0') break;
@@ -251,7 +253,7 @@ class XmlDirectReader {
       }
     }
     if (!open_.empty()) return false;
-    const std::vector<XmlElement>& top = pending_[0];
+    const std::vector<XmlElement>& top = pending_;  // all open elements are closed
     if (document_.elements_.size() + top.size() > document_.elements_.capacity()) return false;
     document_.top_ = document_.elements_.data() + document_.elements_.size();
     document_.top_count_ = top.size();
@@ -303,15 +305,15 @@ class XmlDirectReader {
       skip_blanks(q);
     }
     if (q[0] == '/' && q[1] == '>') {
-      pending_[open_.size()].push_back(e);
+      pending_.push_back(e);
       p = q + 2;
       return true;
     }
     if (q[0] != '>') return false;
-    pending_[open_.size()].push_back(e);
+    pending_.push_back(e);
     open_.push_back({name, static_cast<std::size_t>(e.name_->size())});
+    children_start_.push_back(pending_.size());
     if (open_.size() > static_cast<std::size_t>(kMaxXmlDepth)) return false;
-    if (pending_.size() <= open_.size()) pending_.resize(open_.size() + 1);
     p = q + 1;
     return true;
   }
@@ -328,14 +330,16 @@ class XmlDirectReader {
     skip_blanks(q);
     if (*q != '>') return false;
     p = q + 1;
-    std::vector<XmlElement>& children = pending_[open_.size()];
+    const std::size_t start = children_start_.back();
+    const auto children = pending_.begin() + static_cast<std::ptrdiff_t>(start);
     std::vector<XmlElement>& all = document_.elements_;
-    if (all.size() + children.size() > all.capacity()) return false;
-    XmlElement& parent = pending_[open_.size() - 1].back();
+    if (all.size() + (pending_.size() - start) > all.capacity()) return false;
+    XmlElement& parent = pending_[start - 1];
     parent.children_ = all.data() + all.size();
-    parent.child_count_ = static_cast<std::uint32_t>(children.size());
-    all.insert(all.end(), children.begin(), children.end());
-    children.clear();
+    parent.child_count_ = static_cast<std::uint32_t>(pending_.size() - start);
+    all.insert(all.end(), children, pending_.end());
+    pending_.resize(start);
+    children_start_.pop_back();
     open_.pop_back();
     return true;
   }
@@ -361,8 +365,11 @@ class XmlDirectReader {
 
   XmlDocument& document_;
   std::vector<std::string_view> open_;  ///< names of the elements open, outermost first
-  std::vector<std::vector<XmlElement>>
-      pending_;  ///< [d]: the elements read at depth d, not yet placed
+  /// The elements read and not yet placed: the top-level ones, then the children read so far
+  /// of each open element, outermost first (an element's children are placed, adjacent, when
+  /// it closes).
+  std::vector<XmlElement> pending_;
+  std::vector<std::size_t> children_start_;  ///< [k]: where open_[k]'s children start
   const char* line_at_ = nullptr;
   int line_ = 1;
 };
