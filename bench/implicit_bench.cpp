@@ -454,8 +454,6 @@ int main(int argc, char** argv) {
     return 2;
   }
   setenv("FOSSSIM_BENCH_CHILD", "1", 1);  // the children inherit it
-  setenv("OPENBLAS_NUM_THREADS", "1", 0);  // as FOSSSim's --threads 1, unless set
-  setenv("OMP_NUM_THREADS", "1", 0);
   bool quick = false;
   std::string bunny_file;
   std::vector<std::string> tables;
@@ -466,8 +464,8 @@ int main(int argc, char** argv) {
       "  by default; about an hour on 2 cores). --quick: small sizes and fewer steps only.\n"
       "  --bunny: also measure the goals' bunny case on this MEDIT mesh (the CSC417 coarse\n"
       "  bunny, which the repository does not hold). Run it on a quiet machine: every\n"
-      "  measurement is a process of its own, with one BLAS thread unless\n"
-      "  OPENBLAS_NUM_THREADS says otherwise (FOSSSim's default, --threads 1).\n";
+      "  measurement is a process of its own, with one BLAS thread (FOSSSim's default,\n"
+      "  --threads 1), set before OpenBLAS starts whatever the environment says.\n";
   for (int k = 1; k < argc; ++k) {
     const std::string argument = argv[k];
     if (argument == "--help" || argument == "-h") {
