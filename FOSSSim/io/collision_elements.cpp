@@ -316,7 +316,7 @@ void read_collision_elements(const XmlElement& root, Scene& scene, const std::st
   CollisionReader(scene, file, limits, errors).read(root);
 }
 
-std::string separate_run_together_attributes(std::string_view text, const std::string& file,
+std::string separate_run_together_attributes(std::string text, const std::string& file,
                                              std::vector<std::string>& warnings) {
   // One pass finds where a blank is missing; the text is copied once, with the blanks added.
   std::vector<std::size_t> missing;  // offsets after which a blank goes
@@ -341,7 +341,7 @@ std::string separate_run_together_attributes(std::string_view text, const std::s
       if (c == '"' || c == '\'') quote_char = c;
       if (c == '>') in_tag = false;
     } else if (c == '<') {
-      if (text.substr(k, 4) == "<!--") {  // a comment: skip it whole
+      if (text.compare(k, 4, "<!--") == 0) {  // a comment: skip it whole
         const std::size_t end = text.find("-->", k + 4);
         const std::size_t stop = end == std::string_view::npos ? text.size() : end + 3;
         line += static_cast<int>(std::count(text.begin() + k, text.begin() + stop, '\n'));
@@ -351,15 +351,17 @@ std::string separate_run_together_attributes(std::string_view text, const std::s
       in_tag = true;
     }
   }
+  if (missing.empty()) return text;
+  const std::string_view whole = text;
   std::string out;
   out.reserve(text.size() + missing.size());
   std::size_t from = 0;
   for (const std::size_t at : missing) {
-    out.append(text.substr(from, at - from));
+    out.append(whole.substr(from, at - from));
     out.push_back(' ');
     from = at;
   }
-  out.append(text.substr(from));
+  out.append(whole.substr(from));
   return out;
 }
 

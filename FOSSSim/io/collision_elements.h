@@ -36,8 +36,9 @@ void read_collision_elements(const XmlElement& root, Scene& scene,
 /// `vx="0"vy="0"`, which XML forbids and the course's parser reads as two attributes (an
 /// official course scene has it). Nothing else changes: only a quote that closes an attribute
 /// value inside a tag and is directly followed by a letter gets a blank after it. Appends a
-/// warning naming the line of each place fixed.
-std::string separate_run_together_attributes(std::string_view text, const std::string& file,
+/// warning naming the line of each place fixed. A text with no such place is returned as it
+/// came, not copied.
+std::string separate_run_together_attributes(std::string text, const std::string& file,
                                              std::vector<std::string>& warnings);
 
 }  // namespace fosssim

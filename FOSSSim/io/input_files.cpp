@@ -7,6 +7,8 @@
 #include <cerrno>
 #include <cstring>
 
+#include "io/page_population.h"
+
 namespace fosssim {
 
 namespace {
@@ -64,16 +66,20 @@ RegularFile open_regular_file(const std::string& path) {
 std::string read_text_file(const std::string& path, std::int64_t max_bytes) {
   const RegularFile file = open_regular_file(path);
   if (file.size > max_bytes) refuse_input(path, file_limit_problem(max_bytes));
+  // Read straight into the string, at the size stat() gave, its pages mapped at once (one
+  // copy of a 2.6 MB scene, not two through a buffer, and no page faults one by one); a file
+  // that grew since is read on through a buffer, within max_bytes.
   std::string content;
   content.reserve(static_cast<std::size_t>(file.size));
-  char buffer[1 << 16];
-  for (;;) {
-    const std::size_t n = std::fread(buffer, 1, sizeof buffer, file.stream.get());
-    if (n == 0) break;
+  populate_pages(content.data(), content.capacity());
+  content.resize(static_cast<std::size_t>(file.size));
+  content.resize(std::fread(content.data(), 1, content.size(), file.stream.get()));
+  char more[1 << 12];
+  for (std::size_t n; (n = std::fread(more, 1, sizeof more, file.stream.get())) > 0;) {
     if (static_cast<std::int64_t>(content.size() + n) > max_bytes) {
       refuse_input(path, file_limit_problem(max_bytes));
     }
-    content.append(buffer, n);
+    content.append(more, n);
   }
   if (std::ferror(file.stream.get())) {
     refuse_input(path, std::string("cannot read the file: ") + std::strerror(errno));

@@ -5,6 +5,7 @@
 #include <rapidxml/rapidxml.hpp>
 #include <utility>
 
+#include "io/page_population.h"
 #include "io/scene_error.h"
 
 namespace fosssim {
@@ -200,7 +201,9 @@ bool is_xml_name_char(char c) {
 /// accepts too and reads into the same tree (same names, values, lines and order).
 class XmlDirectReader {
  public:
-  /// `text` is the document's own copy, NUL-terminated; read() writes NULs into it.
+  /// The document's text is its own and NUL-terminated. read() leaves it as it is until it
+  /// has read it all: only then does it end each name and value with a NUL, so that on a
+  /// false return rapidxml gets the text as it was, without a copy.
   explicit XmlDirectReader(XmlDocument& document) : document_(document) {}
 
   /// The name `name`, kept once in `document`.
@@ -210,13 +213,20 @@ class XmlDirectReader {
   }
 
   bool read(std::size_t size) {
-    char* p = document_.text_.get();
+    char* p = document_.text_->data();
     line_at_ = p;
     // Each element has its own '<' and each attribute its own '=': bounds known before
     // allocating, so that the arrays never move and elements may point into them.
+    // Both are written whole: their pages are mapped at once (io/page_population.h).
     document_.elements_.reserve(static_cast<std::size_t>(std::count(p, p + size, '<')));
     document_.attributes_.reserve(static_cast<std::size_t>(std::count(p, p + size, '=')));
-    pending_.resize(1);
+    populate_pages(document_.elements_.data(),
+                   document_.elements_.capacity() * sizeof(XmlElement));
+    populate_pages(document_.attributes_.data(),
+                   document_.attributes_.capacity() * sizeof(XmlAttribute));
+    // The elements not yet placed never outnumber the elements: one allocation, no copies.
+    pending_.reserve(document_.elements_.capacity());
+    populate_pages(pending_.data(), pending_.capacity() * sizeof(XmlElement));
     while (true) {
       skip_blanks(p);
       if (*p == '\0') break;
@@ -243,11 +253,12 @@ class XmlDirectReader {
       }
     }
     if (!open_.empty()) return false;
-    const std::vector<XmlElement>& top = pending_[0];
+    const std::vector<XmlElement>& top = pending_;  // all open elements are closed
     if (document_.elements_.size() + top.size() > document_.elements_.capacity()) return false;
     document_.top_ = document_.elements_.data() + document_.elements_.size();
     document_.top_count_ = top.size();
     document_.elements_.insert(document_.elements_.end(), top.begin(), top.end());
+    end_names_and_values();
     return true;
   }
 
@@ -282,8 +293,7 @@ class XmlDirectReader {
       for (; *q != quote; ++q) {
         if (*q == '\0' || *q == '&') return false;
       }
-      *q++ = '\0';
-      *attribute_end = '\0';
+      ++q;
       const std::string_view attribute_name(attribute,
                                             static_cast<std::size_t>(attribute_end - attribute));
       for (const XmlAttribute* a = e.attributes_; a != attributes.data() + attributes.size(); ++a) {
@@ -295,15 +305,15 @@ class XmlDirectReader {
       skip_blanks(q);
     }
     if (q[0] == '/' && q[1] == '>') {
-      pending_[open_.size()].push_back(e);
+      pending_.push_back(e);
       p = q + 2;
       return true;
     }
     if (q[0] != '>') return false;
-    pending_[open_.size()].push_back(e);
+    pending_.push_back(e);
     open_.push_back({name, static_cast<std::size_t>(e.name_->size())});
+    children_start_.push_back(pending_.size());
     if (open_.size() > static_cast<std::size_t>(kMaxXmlDepth)) return false;
-    if (pending_.size() <= open_.size()) pending_.resize(open_.size() + 1);
     p = q + 1;
     return true;
   }
@@ -320,16 +330,30 @@ class XmlDirectReader {
     skip_blanks(q);
     if (*q != '>') return false;
     p = q + 1;
-    std::vector<XmlElement>& children = pending_[open_.size()];
+    const std::size_t start = children_start_.back();
+    const auto children = pending_.begin() + static_cast<std::ptrdiff_t>(start);
     std::vector<XmlElement>& all = document_.elements_;
-    if (all.size() + children.size() > all.capacity()) return false;
-    XmlElement& parent = pending_[open_.size() - 1].back();
+    if (all.size() + (pending_.size() - start) > all.capacity()) return false;
+    XmlElement& parent = pending_[start - 1];
     parent.children_ = all.data() + all.size();
-    parent.child_count_ = static_cast<std::uint32_t>(children.size());
-    all.insert(all.end(), children.begin(), children.end());
-    children.clear();
+    parent.child_count_ = static_cast<std::uint32_t>(pending_.size() - start);
+    all.insert(all.end(), children, pending_.end());
+    pending_.resize(start);
+    children_start_.pop_back();
     open_.pop_back();
     return true;
+  }
+
+  /// Ends every attribute's name and value with a NUL, where the '=' (or a blank) after the
+  /// name and the closing quote of the value were: the text has been read whole.
+  void end_names_and_values() {
+    for (XmlAttribute& a : document_.attributes_) {
+      char* const name_end = const_cast<char*>(a.name.data()) + a.name.size();
+      char* const value = const_cast<char*>(a.value);
+      const char quote = value[-1];  // the value holds no such quote (start_tag)
+      *std::strchr(value, quote) = '\0';
+      *name_end = '\0';
+    }
   }
 
   /// The line of p; p never goes back.
@@ -341,8 +365,11 @@ class XmlDirectReader {
 
   XmlDocument& document_;
   std::vector<std::string_view> open_;  ///< names of the elements open, outermost first
-  std::vector<std::vector<XmlElement>>
-      pending_;  ///< [d]: the elements read at depth d, not yet placed
+  /// The elements read and not yet placed: the top-level ones, then the children read so far
+  /// of each open element, outermost first (an element's children are placed, adjacent, when
+  /// it closes).
+  std::vector<XmlElement> pending_;
+  std::vector<std::size_t> children_start_;  ///< [k]: where open_[k]'s children start
   const char* line_at_ = nullptr;
   int line_ = 1;
 };
@@ -430,7 +457,7 @@ class XmlTreeBuilder {
   }
 
   int line_of(const char* p) const {
-    return lines_.line_of(static_cast<std::size_t>(p - document_.text_.get()));
+    return lines_.line_of(static_cast<std::size_t>(p - document_.text_->data()));
   }
 
   XmlDocument& document_;
@@ -454,43 +481,47 @@ std::vector<const XmlElement*> XmlElement::children_named(std::string_view name)
 }
 
 XmlDocument parse_xml(std::string_view text, const std::string& file) {
+  return parse_xml_text(std::string(text), file);
+}
+
+XmlDocument parse_xml_text(std::string text, const std::string& file) {
   if (text.size() > kMaxXmlBytes) {  // element and attribute counts are 32-bit
     throw SceneError(file, 0, "",
                      "the XML text is larger than " + std::to_string(kMaxXmlBytes >> 20) +
                          " MiB, the most the XML reader reads");
   }
-  const XmlPlace whole = place_at(text, text.size());
+  // The document keeps the text: names and values are read where they are written. The
+  // string is held through a pointer, so that moving the document never moves its characters
+  // (a short string's are inside the string object).
+  XmlDocument direct;
+  direct.text_ = std::make_unique<std::string>(std::move(text));
+  if (XmlDirectReader(direct).read(direct.text_->size())) return direct;
+  // Something the direct reading leaves to rapidxml (which reads in place, up to the string's
+  // terminating NUL), on the same text, untouched by the direct reading; the original stays
+  // for the messages.
+  XmlDocument out;
+  out.text_ = std::move(direct.text_);
+  direct = XmlDocument();
+  const std::string original = *out.text_;
+  const XmlPlace whole = place_at(original, original.size());
   if (whole.too_deep) {
     const XmlPlace::Open& deepest = whole.open.back();
     throw SceneError(file, deepest.line, element_name(deepest.name),
                      "elements nested more than " + std::to_string(kMaxXmlDepth) +
                          " deep (a scene needs three)");
   }
-  // rapidxml parses in place and reads up to a terminating NUL: it gets a copy, which the
-  // document keeps (its names and values stay where rapidxml put them).
-  const auto with_text = [&] {
-    XmlDocument document;
-    document.text_ = std::unique_ptr<char[]>(new char[text.size() + 1]);
-    std::copy(text.begin(), text.end(), document.text_.get());
-    document.text_[text.size()] = '\0';
-    return document;
-  };
-  XmlDocument direct = with_text();
-  if (XmlDirectReader(direct).read(text.size())) return direct;
-  direct = XmlDocument();
-  // Something the direct reading leaves to rapidxml, on a fresh copy of the text.
-  XmlDocument out = with_text();
-  const LineTable lines(text);
+  const LineTable lines(original);
   constexpr int kFlags = rapidxml::parse_validate_closing_tags | rapidxml::parse_no_data_nodes |
                          rapidxml::parse_no_element_values;
   {  // rapidxml's nodes are freed as soon as the document is built
     rapidxml::xml_document<char> parsed;
+    char* const start = out.text_->data();
     try {
-      parsed.parse<kFlags>(out.text_.get());
+      parsed.parse<kFlags>(start);
     } catch (const rapidxml::parse_error& e) {
-      const char* where = e.where<char>() != nullptr ? e.where<char>() : out.text_.get();
-      const auto offset = static_cast<std::size_t>(where - out.text_.get());
-      throw syntax_error(text, file, e.what(), offset, lines);
+      const char* where = e.where<char>() != nullptr ? e.where<char>() : start;
+      const auto offset = static_cast<std::size_t>(where - start);
+      throw syntax_error(original, file, e.what(), offset, lines);
     }
     XmlTreeBuilder(out, lines, file).build(parsed);
   }

@@ -68,8 +68,8 @@ class XmlDocument {
  private:
   friend class XmlTreeBuilder;
   friend class XmlDirectReader;
-  friend XmlDocument parse_xml(std::string_view text, const std::string& file);
-  std::unique_ptr<char[]> text_;
+  friend XmlDocument parse_xml_text(std::string text, const std::string& file);
+  std::unique_ptr<std::string> text_;
   std::set<std::string, std::less<>> names_;
   std::vector<XmlAttribute> attributes_;
   std::vector<XmlElement> elements_;  ///< all of them; the children of each are adjacent
@@ -95,5 +95,9 @@ constexpr std::size_t kMaxXmlBytes = (std::size_t{4} << 30) - 1;
 /// malformed or repeated attribute, text outside of any element, a comment not closed, ...) and one
 /// for elements nested deeper than kMaxXmlDepth, or for a text longer than kMaxXmlBytes.
 XmlDocument parse_xml(std::string_view text, const std::string& file);
+
+/// The same, taking over `text` instead of copying it (a scene file read whole, parsed where it
+/// lies: the document keeps it).
+XmlDocument parse_xml_text(std::string text, const std::string& file);
 
 }  // namespace fosssim

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "core/analysis/energy.h"
@@ -48,6 +49,20 @@ void RunSummary::add(const State& state, const StepRecord* record, const Integra
 namespace {
 
 using Json = nlohmann::ordered_json;
+
+/// The threads this process has now (the entries of /proc/self/task), or nothing where the
+/// system does not say (no /proc).
+std::optional<std::int64_t> process_threads() {
+  std::error_code error;
+  std::filesystem::directory_iterator task("/proc/self/task", error);
+  if (error) return std::nullopt;
+  std::int64_t count = 0;
+  for (; task != std::filesystem::directory_iterator(); task.increment(error)) {
+    if (error) return std::nullopt;
+    ++count;
+  }
+  return count;
+}
 
 /// A number, or null when it is not finite (JSON has no NaN or infinity).
 Json number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
@@ -134,7 +149,10 @@ std::string RunSummary::json() const {
 
   const double seconds =
       started_ ? std::chrono::duration<double>(last_ - *started_).count() : 0.0;
-  out["timings"] = {{"wall_seconds", seconds}, {"seconds_per_step", seconds / steps}};
+  const std::optional<std::int64_t> threads = process_threads();
+  out["timings"] = {{"wall_seconds", seconds},
+                    {"seconds_per_step", seconds / steps},
+                    {"threads", threads ? Json(*threads) : Json(nullptr)}};
   return out.dump(2) + "\n";
 }
 

@@ -1,7 +1,5 @@
 #include "pictures/cairo_painter.h"
 
-#include <cairo-svg.h>
-#include <cairo.h>
 
 #include <algorithm>
 #include <array>
@@ -16,11 +14,12 @@
 
 #include "core/error.h"
 #include "io/output_file.h"
+#include "pictures/cairo_library.h"
 #include "pictures/file_names.h"
 
 namespace fosssim {
 
-void set_color(cairo_t* cr, const Color& c) { cairo_set_source_rgb(cr, c.r, c.g, c.b); }
+void set_color(cairo_t* cr, const Color& c) { cairo().set_source_rgb(cr, c.r, c.g, c.b); }
 
 namespace {
 
@@ -31,25 +30,25 @@ constexpr double kSeamPixels = 0.5;
 constexpr double kSeamMiter = 1.5;
 
 struct SurfaceDeleter {
-  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
+  void operator()(cairo_surface_t* s) const { cairo().surface_destroy(s); }
 };
 struct ContextDeleter {
-  void operator()(cairo_t* cr) const { cairo_destroy(cr); }
+  void operator()(cairo_t* cr) const { cairo().destroy(cr); }
 };
 using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
 using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
 
 void paint_text(cairo_t* cr, const Drawing& drawing) {
   if (drawing.text.empty()) return;
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, drawing.font_size);
+  cairo().select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo().set_font_size(cr, drawing.font_size);
   cairo_font_extents_t font;
-  cairo_font_extents(cr, &font);
+  cairo().font_extents(cr, &font);
   set_color(cr, drawing.text_color);
   double baseline = kTextMargin + font.ascent;
   for (const std::string& line : drawing.text) {
-    cairo_move_to(cr, kTextMargin, baseline);
-    cairo_show_text(cr, line.c_str());
+    cairo().move_to(cr, kTextMargin, baseline);
+    cairo().show_text(cr, line.c_str());
     baseline += kLineSpacing * drawing.font_size;
   }
 }
@@ -74,7 +73,7 @@ struct Canvas {
 
 Canvas canvas_of(cairo_t* cr) {
   double x1 = 0, y1 = 0, x2 = 0, y2 = 0;
-  cairo_clip_extents(cr, &x1, &y1, &x2, &y2);
+  cairo().clip_extents(cr, &x1, &y1, &x2, &y2);
   return {{0.5 * (x1 + x2), 0.5 * (y1 + y2)}, 0.5 * std::hypot(x2 - x1, y2 - y1)};
 }
 
@@ -183,10 +182,10 @@ bool polygon_path(cairo_t* cr, const std::vector<Point2>& corners) {
   const Canvas canvas = canvas_of(cr);
   const std::vector<Point2> clipped =
       all_within_reach(corners, canvas) ? corners : clip_polygon(corners, canvas);
-  cairo_new_path(cr);
+  cairo().new_path(cr);
   if (clipped.size() < 3) return false;
-  for (const Point2& p : clipped) cairo_line_to(cr, p.x, p.y);
-  cairo_close_path(cr);
+  for (const Point2& p : clipped) cairo().line_to(cr, p.x, p.y);
+  cairo().close_path(cr);
   return true;
 }
 
@@ -196,20 +195,20 @@ double line_width(double width) {
 
 void paint_polyline(cairo_t* cr, const Polyline& line) {
   const Canvas canvas = canvas_of(cr);
-  cairo_new_path(cr);
+  cairo().new_path(cr);
   if (all_within_reach(line.points, canvas)) {
-    for (const Point2& p : line.points) cairo_line_to(cr, p.x, p.y);
+    for (const Point2& p : line.points) cairo().line_to(cr, p.x, p.y);
   } else {
     for (std::size_t k = 0; k + 1 < line.points.size(); ++k) {
       Point2 a = line.points[k], b = line.points[k + 1];
       if (!finite(a) || !finite(b) || !clip_segment(a, b, canvas)) continue;
-      cairo_move_to(cr, a.x, a.y);
-      cairo_line_to(cr, b.x, b.y);
+      cairo().move_to(cr, a.x, a.y);
+      cairo().line_to(cr, b.x, b.y);
     }
   }
-  cairo_set_line_width(cr, line_width(line.width));
+  cairo().set_line_width(cr, line_width(line.width));
   set_color(cr, line.color);
-  cairo_stroke(cr);
+  cairo().stroke(cr);
 }
 
 void paint_circle(cairo_t* cr, const Point2& centre, double radius, double stroke,
@@ -220,16 +219,16 @@ void paint_circle(cairo_t* cr, const Point2& centre, double radius, double strok
   if (circle.what == FittedCircle::kNothing) return;
   set_color(cr, color);
   if (circle.what == FittedCircle::kEverything) {
-    cairo_paint(cr);
+    cairo().paint(cr);
     return;
   }
-  cairo_new_path(cr);
-  cairo_arc(cr, circle.centre.x, circle.centre.y, circle.radius, 0.0, 2.0 * std::numbers::pi);
+  cairo().new_path(cr);
+  cairo().arc(cr, circle.centre.x, circle.centre.y, circle.radius, 0.0, 2.0 * std::numbers::pi);
   if (filled) {
-    cairo_fill(cr);
+    cairo().fill(cr);
   } else {
-    cairo_set_line_width(cr, line_width(stroke));
-    cairo_stroke(cr);
+    cairo().set_line_width(cr, line_width(stroke));
+    cairo().stroke(cr);
   }
 }
 
@@ -251,11 +250,11 @@ void paint_shape(cairo_t* cr, const Capsule& edge) {
   if ((!within_reach(a, canvas) || !within_reach(b, canvas)) && !clip_segment(a, b, canvas)) {
     return;
   }
-  cairo_move_to(cr, a.x, a.y);
-  cairo_line_to(cr, b.x, b.y);
-  cairo_set_line_width(cr, line_width(2.0 * edge.radius));
+  cairo().move_to(cr, a.x, a.y);
+  cairo().line_to(cr, b.x, b.y);
+  cairo().set_line_width(cr, line_width(2.0 * edge.radius));
   set_color(cr, edge.color);
-  cairo_stroke(cr);
+  cairo().stroke(cr);
 }
 
 void paint_shape(cairo_t* cr, const Disc& disc) {
@@ -288,30 +287,30 @@ void paint_shape(cairo_t* cr, const Triangle& triangle) {
   const Point2 ga = grown_corner(a, b, c), gb = grown_corner(b, c, a), gc = grown_corner(c, a, b);
   if (!polygon_path(cr, {ga, gb, gc})) return;
   set_color(cr, triangle.color);
-  cairo_fill(cr);
+  cairo().fill(cr);
   if (triangle.outline_width <= 0.0) return;
   if (!polygon_path(cr, {a, b, c})) return;
-  cairo_set_line_width(cr, line_width(triangle.outline_width));
+  cairo().set_line_width(cr, line_width(triangle.outline_width));
   set_color(cr, triangle.outline_color);
-  cairo_stroke(cr);
+  cairo().stroke(cr);
 }
 
 void check_status(cairo_status_t status, const std::string& what,
                   ErrorKind kind = ErrorKind::kCannotWrite) {
   if (status != CAIRO_STATUS_SUCCESS) {
-    throw Error(kind, what + ": " + cairo_status_to_string(status));
+    throw Error(kind, what + ": " + cairo().status_to_string(status));
   }
 }
 
 /// A copy of an ARGB32 image surface's pixels.
 Image copy_pixels(cairo_surface_t* surface) {
-  cairo_surface_flush(surface);
+  cairo().surface_flush(surface);
   Image image;
-  image.width = cairo_image_surface_get_width(surface);
-  image.height = cairo_image_surface_get_height(surface);
+  image.width = cairo().image_surface_get_width(surface);
+  image.height = cairo().image_surface_get_height(surface);
   image.pixels.resize(static_cast<std::size_t>(image.width) * image.height);
-  const unsigned char* data = cairo_image_surface_get_data(surface);
-  const int stride = cairo_image_surface_get_stride(surface);
+  const unsigned char* data = cairo().image_surface_get_data(surface);
+  const int stride = cairo().image_surface_get_stride(surface);
   for (int y = 0; y < image.height; ++y) {
     std::memcpy(&image.pixels[static_cast<std::size_t>(y) * image.width], data + y * stride,
                 sizeof(std::uint32_t) * image.width);
@@ -323,13 +322,13 @@ Image copy_pixels(cairo_surface_t* surface) {
 
 void paint_drawing(cairo_t* cr, const Drawing& drawing) {
   set_color(cr, drawing.background);
-  cairo_paint(cr);
+  cairo().paint(cr);
 
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  cairo().set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo().set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   for (const Region& region : drawing.regions) {
-    cairo_set_source_rgb(cr, region.color.r, region.color.g, region.color.b);
-    if (polygon_path(cr, region.corners)) cairo_fill(cr);
+    cairo().set_source_rgb(cr, region.color.r, region.color.g, region.color.b);
+    if (polygon_path(cr, region.corners)) cairo().fill(cr);
   }
   for (const Polyline& line : drawing.paths) paint_polyline(cr, line);
   for (const Shape& shape : drawing.shapes) {
@@ -344,29 +343,29 @@ void paint_drawing(cairo_t* cr, const Drawing& drawing) {
 
 Image render_image(const Drawing& drawing) {
   SurfacePtr surface(
-      cairo_image_surface_create(CAIRO_FORMAT_ARGB32, drawing.width, drawing.height));
-  check_status(cairo_surface_status(surface.get()), "cannot create a picture");
+      cairo().image_surface_create(CAIRO_FORMAT_ARGB32, drawing.width, drawing.height));
+  check_status(cairo().surface_status(surface.get()), "cannot create a picture");
   {
-    ContextPtr cr(cairo_create(surface.get()));
+    ContextPtr cr(cairo().create(surface.get()));
     paint_drawing(cr.get(), drawing);
   }
   return copy_pixels(surface.get());
 }
 
 void write_png(const Image& image, const std::string& path) {
-  const int stride = cairo_format_stride_for_width(CAIRO_FORMAT_ARGB32, image.width);
+  const int stride = cairo().format_stride_for_width(CAIRO_FORMAT_ARGB32, image.width);
   std::vector<unsigned char> data(static_cast<std::size_t>(stride) * image.height);
   for (int y = 0; y < image.height; ++y) {
     std::memcpy(&data[static_cast<std::size_t>(y) * stride],
                 &image.pixels[static_cast<std::size_t>(y) * image.width],
                 sizeof(std::uint32_t) * image.width);
   }
-  SurfacePtr source(cairo_image_surface_create_for_data(data.data(), CAIRO_FORMAT_ARGB32,
+  SurfacePtr source(cairo().image_surface_create_for_data(data.data(), CAIRO_FORMAT_ARGB32,
                                                         image.width, image.height, stride));
   write_picture(path, PictureFormat::kPng, image.width, image.height, [&source](cairo_t* cr) {
-    cairo_set_source_surface(cr, source.get(), 0, 0);
-    cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
-    cairo_paint(cr);
+    cairo().set_source_surface(cr, source.get(), 0, 0);
+    cairo().set_operator(cr, CAIRO_OPERATOR_SOURCE);
+    cairo().paint(cr);
   });
 }
 
@@ -388,19 +387,19 @@ void write_picture(const std::string& path, PictureFormat format, int width, int
   const bool svg = format == PictureFormat::kSvg;
   int write_error = 0;
   SurfacePtr surface(
-      svg ? cairo_svg_surface_create_for_stream(write_to_output, &output, width, height)
-          : cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
-  cairo_status_t status = cairo_surface_status(surface.get());
+      svg ? cairo().svg_surface_create_for_stream(write_to_output, &output, width, height)
+          : cairo().image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
+  cairo_status_t status = cairo().surface_status(surface.get());
   if (status == CAIRO_STATUS_SUCCESS) {
-    if (svg) cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
+    if (svg) cairo().svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
     {
-      ContextPtr cr(cairo_create(surface.get()));
+      ContextPtr cr(cairo().create(surface.get()));
       paint(cr.get());
     }
     errno = 0;
-    if (!svg) status = cairo_surface_write_to_png_stream(surface.get(), write_to_output, &output);
-    cairo_surface_finish(surface.get());
-    if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface.get());
+    if (!svg) status = cairo().surface_write_to_png_stream(surface.get(), write_to_output, &output);
+    cairo().surface_finish(surface.get());
+    if (status == CAIRO_STATUS_SUCCESS) status = cairo().surface_status(surface.get());
     write_error = errno;
   }
   surface.reset();
@@ -408,7 +407,7 @@ void write_picture(const std::string& path, PictureFormat format, int width, int
     output.discard();
     const std::string why = status == CAIRO_STATUS_WRITE_ERROR && write_error != 0
                                 ? std::strerror(write_error)
-                                : cairo_status_to_string(status);
+                                : cairo().status_to_string(status);
     throw Error(ErrorKind::kCannotWrite, "cannot write " + path + ": " + why);
   }
   output.commit();
@@ -425,15 +424,15 @@ void write_svg(const Drawing& drawing, const std::string& path) {
 }
 
 Image read_png(const std::string& path) {
-  SurfacePtr surface(cairo_image_surface_create_from_png(path.c_str()));
-  check_status(cairo_surface_status(surface.get()), "cannot read " + path, ErrorKind::kBadInput);
-  SurfacePtr argb(cairo_image_surface_create(CAIRO_FORMAT_ARGB32,
-                                             cairo_image_surface_get_width(surface.get()),
-                                             cairo_image_surface_get_height(surface.get())));
+  SurfacePtr surface(cairo().image_surface_create_from_png(path.c_str()));
+  check_status(cairo().surface_status(surface.get()), "cannot read " + path, ErrorKind::kBadInput);
+  SurfacePtr argb(cairo().image_surface_create(CAIRO_FORMAT_ARGB32,
+                                             cairo().image_surface_get_width(surface.get()),
+                                             cairo().image_surface_get_height(surface.get())));
   {
-    ContextPtr cr(cairo_create(argb.get()));
-    cairo_set_source_surface(cr.get(), surface.get(), 0, 0);
-    cairo_paint(cr.get());
+    ContextPtr cr(cairo().create(argb.get()));
+    cairo().set_source_surface(cr.get(), surface.get(), 0, 0);
+    cairo().paint(cr.get());
   }
   return copy_pixels(argb.get());
 }

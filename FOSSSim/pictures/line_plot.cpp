@@ -1,6 +1,5 @@
 #include "pictures/line_plot.h"
 
-#include <cairo.h>
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +7,7 @@
 #include <numbers>
 
 #include "pictures/cairo_painter.h"
+#include "pictures/cairo_library.h"
 
 namespace fosssim {
 
@@ -29,10 +29,10 @@ const Color kNote{0.33, 0.33, 0.33};
 double show_text(cairo_t* cr, const std::string& text, double x, double y, double align_x,
                  double align_y) {
   cairo_text_extents_t extents;
-  cairo_text_extents(cr, text.c_str(), &extents);
-  cairo_move_to(cr, x - align_x * extents.width - extents.x_bearing,
+  cairo().text_extents(cr, text.c_str(), &extents);
+  cairo().move_to(cr, x - align_x * extents.width - extents.x_bearing,
                 y - align_y * extents.height - extents.y_bearing);
-  cairo_show_text(cr, text.c_str());
+  cairo().show_text(cr, text.c_str());
   return extents.x_advance;
 }
 
@@ -52,100 +52,100 @@ std::string linear_tick_label(double value, double step) {
 }
 
 void draw_axes(cairo_t* cr, const LinePlot& plot, const PlotFrame& f) {
-  cairo_set_font_size(cr, 12.0);
-  cairo_set_line_width(cr, 1.0);
+  cairo().set_font_size(cr, 12.0);
+  cairo().set_line_width(cr, 1.0);
   for (const PlotTick& tick : axis_ticks(plot.x)) {
     const double x = std::round(f.x(tick.value)) + 0.5;
     set_color(cr, kGrid);
-    cairo_move_to(cr, x, f.top);
-    cairo_line_to(cr, x, f.bottom);
-    cairo_stroke(cr);
+    cairo().move_to(cr, x, f.top);
+    cairo().line_to(cr, x, f.bottom);
+    cairo().stroke(cr);
     set_color(cr, kText);
     show_text(cr, tick.label, f.x(tick.value), f.bottom + kTickLabelGap, 0.5, 0.0);
   }
   for (const PlotTick& tick : axis_ticks(plot.y)) {
     const double y = std::round(f.y(tick.value)) + 0.5;
     set_color(cr, kGrid);
-    cairo_move_to(cr, f.left, y);
-    cairo_line_to(cr, f.right, y);
-    cairo_stroke(cr);
+    cairo().move_to(cr, f.left, y);
+    cairo().line_to(cr, f.right, y);
+    cairo().stroke(cr);
     set_color(cr, kText);
     show_text(cr, tick.label, f.left - kTickLabelGap, f.y(tick.value), 1.0, 0.5);
   }
   set_color(cr, kText);
-  cairo_rectangle(cr, f.left + 0.5, f.top + 0.5, f.right - f.left - 1.0, f.bottom - f.top - 1.0);
-  cairo_stroke(cr);
-  cairo_set_font_size(cr, 13.0);
+  cairo().rectangle(cr, f.left + 0.5, f.top + 0.5, f.right - f.left - 1.0, f.bottom - f.top - 1.0);
+  cairo().stroke(cr);
+  cairo().set_font_size(cr, 13.0);
   show_text(cr, plot.x.title, 0.5 * (f.left + f.right), f.bottom + kAxisTitleOffset, 0.5, 0.0);
-  cairo_save(cr);
-  cairo_translate(cr, 18.0, 0.5 * (f.top + f.bottom));
-  cairo_rotate(cr, -std::numbers::pi / 2.0);
+  cairo().save(cr);
+  cairo().translate(cr, 18.0, 0.5 * (f.top + f.bottom));
+  cairo().rotate(cr, -std::numbers::pi / 2.0);
   show_text(cr, plot.y.title, 0.0, 0.0, 0.5, 0.5);
-  cairo_restore(cr);
+  cairo().restore(cr);
 }
 
 void draw_references(cairo_t* cr, const LinePlot& plot, const PlotFrame& f) {
-  cairo_set_font_size(cr, 12.0);
-  cairo_set_line_width(cr, 1.2);
+  cairo().set_font_size(cr, 12.0);
+  cairo().set_line_width(cr, 1.2);
   for (const ReferenceLine& line : plot.references) {
     set_color(cr, line.color);
-    cairo_set_dash(cr, line.dashes.data(), static_cast<int>(line.dashes.size()), 0.0);
+    cairo().set_dash(cr, line.dashes.data(), static_cast<int>(line.dashes.size()), 0.0);
     if (line.direction == ReferenceLine::Direction::kHorizontal) {
       const double y = std::round(f.y(line.value)) + 0.5;  // on a row of pixels, like the grid
-      cairo_move_to(cr, f.left, y);
-      cairo_line_to(cr, f.right, y);
-      cairo_stroke(cr);
+      cairo().move_to(cr, f.left, y);
+      cairo().line_to(cr, f.right, y);
+      cairo().stroke(cr);
       show_text(cr, line.label, f.right - 4.0, y - 4.0, 1.0, 1.0);  // above, at the right end
     } else {
       const double x = std::round(f.x(line.value)) + 0.5;
-      cairo_move_to(cr, x, f.top);
-      cairo_line_to(cr, x, f.bottom);
-      cairo_stroke(cr);
+      cairo().move_to(cr, x, f.top);
+      cairo().line_to(cr, x, f.bottom);
+      cairo().stroke(cr);
       // At the top, beside the line, on whichever side has room.
       const bool on_the_left = x > f.left + 0.7 * (f.right - f.left);
       show_text(cr, line.label, on_the_left ? x - 4.0 : x + 4.0, f.top + 4.0,
                 on_the_left ? 1.0 : 0.0, 0.0);
     }
   }
-  cairo_set_dash(cr, nullptr, 0, 0.0);
+  cairo().set_dash(cr, nullptr, 0, 0.0);
 }
 
 void draw_curves(cairo_t* cr, const LinePlot& plot, const PlotFrame& f) {
   // Clipped to the plot area and a margin, so that a curve on an edge is seen whole.
   constexpr double kMargin = 2.0;
-  cairo_save(cr);
-  cairo_rectangle(cr, f.left - kMargin, f.top - kMargin, f.right - f.left + 2 * kMargin,
+  cairo().save(cr);
+  cairo().rectangle(cr, f.left - kMargin, f.top - kMargin, f.right - f.left + 2 * kMargin,
                   f.bottom - f.top + 2 * kMargin);
-  cairo_clip(cr);
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo().clip(cr);
+  cairo().set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   for (const PlotCurve& curve : plot.curves) {
-    cairo_new_path(cr);
+    cairo().new_path(cr);
     for (const PlotPoint& p : curve.points) {
       if (std::isnan(p.x) || std::isnan(p.y)) {
-        cairo_new_sub_path(cr);  // the next point starts a new piece
+        cairo().new_sub_path(cr);  // the next point starts a new piece
       } else {
-        cairo_line_to(cr, f.x(p.x), f.y(p.y));
+        cairo().line_to(cr, f.x(p.x), f.y(p.y));
       }
     }
     set_color(cr, curve.color);
-    cairo_set_line_width(cr, curve.width);
-    cairo_stroke(cr);
+    cairo().set_line_width(cr, curve.width);
+    cairo().stroke(cr);
   }
-  cairo_restore(cr);
+  cairo().restore(cr);
 }
 
 /// One row below the axes: a sample of each named curve with its name, then the note.
 void draw_legend(cairo_t* cr, const LinePlot& plot, const PlotFrame& f) {
-  cairo_set_font_size(cr, 12.0);
+  cairo().set_font_size(cr, 12.0);
   const double y = plot.height - kLegendFromBottom;
   double x = f.left;
   for (const PlotCurve& curve : plot.curves) {
     if (curve.name.empty()) continue;
     set_color(cr, curve.color);
-    cairo_set_line_width(cr, std::max(curve.width, 2.0));
-    cairo_move_to(cr, x, y);
-    cairo_line_to(cr, x + 24.0, y);
-    cairo_stroke(cr);
+    cairo().set_line_width(cr, std::max(curve.width, 2.0));
+    cairo().move_to(cr, x, y);
+    cairo().line_to(cr, x + 24.0, y);
+    cairo().stroke(cr);
     set_color(cr, kText);
     x += 30.0 + show_text(cr, curve.name, x + 30.0, y, 0.0, 0.5) + 20.0;
   }
@@ -156,12 +156,12 @@ void draw_legend(cairo_t* cr, const LinePlot& plot, const PlotFrame& f) {
 }
 
 void paint_line_plot(cairo_t* cr, const LinePlot& plot) {
-  cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
-  cairo_paint(cr);
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo().set_source_rgb(cr, 1.0, 1.0, 1.0);
+  cairo().paint(cr);
+  cairo().select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   const PlotFrame f(plot);
   if (!plot.title.empty()) {
-    cairo_set_font_size(cr, 15.0);
+    cairo().set_font_size(cr, 15.0);
     set_color(cr, {0.1, 0.1, 0.1});
     show_text(cr, plot.title, 0.5 * (f.left + f.right), 14.0, 0.5, 0.0);
   }

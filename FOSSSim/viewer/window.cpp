@@ -1,8 +1,5 @@
 #include "viewer/window.h"
 
-#include <GL/freeglut.h>
-#include <X11/Xlib.h>
-
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -13,6 +10,7 @@
 #include "core/step/cancellation.h"
 #include "pictures/cairo_painter.h"
 #include "viewer/controls.h"
+#include "viewer/glut_library.h"
 #include "viewer/mouse_control.h"
 #include "viewer/throttle.h"
 
@@ -85,7 +83,7 @@ void Window::step_once() {
     // The caller asked a step in progress to stop (a signal): the step is abandoned unseen and
     // the window closes as it does when stop_requested says so between frames.
     cancelled_ = true;
-    glutLeaveMainLoop();
+    glut().glutLeaveMainLoop();
     return;
   }
   view_.record(stepper_.state());
@@ -103,7 +101,7 @@ void Window::set_paused(bool paused) {
 
 void Window::tick() {
   if (settings_.stop_requested && settings_.stop_requested()) {
-    glutLeaveMainLoop();
+    glut().glutLeaveMainLoop();
     return;
   }
   if (!paused_ && can_step() && !screenshot_due()) {
@@ -115,9 +113,9 @@ void Window::tick() {
       if (screenshot_due() || wall_seconds() - start > kStepBudgetSeconds) break;
     }
     // Only a step changes the picture here; keys, the mouse and resizing post their own redraw.
-    if (stepped) glutPostRedisplay();
+    if (stepped) glut().glutPostRedisplay();
   }
-  glutTimerFunc(
+  glut().glutTimerFunc(
       kTickMilliseconds, [](int) { g_window->tick(); }, 0);
 }
 
@@ -150,28 +148,28 @@ void Window::display() {
                 &image.pixels[static_cast<std::size_t>(y) * image.width],
                 sizeof(std::uint32_t) * image.width);
   }
-  glViewport(0, 0, image.width, image.height);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0.0, image.width, 0.0, image.height, -1.0, 1.0);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glRasterPos2i(0, 0);
-  glDrawPixels(image.width, image.height, GL_BGRA, GL_UNSIGNED_BYTE, flipped.data());
+  glut().glViewport(0, 0, image.width, image.height);
+  glut().glMatrixMode(GL_PROJECTION);
+  glut().glLoadIdentity();
+  glut().glOrtho(0.0, image.width, 0.0, image.height, -1.0, 1.0);
+  glut().glMatrixMode(GL_MODELVIEW);
+  glut().glLoadIdentity();
+  glut().glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glut().glRasterPos2i(0, 0);
+  glut().glDrawPixels(image.width, image.height, GL_BGRA, GL_UNSIGNED_BYTE, flipped.data());
   if (screenshot_due()) take_screenshot();
-  glutSwapBuffers();
+  glut().glutSwapBuffers();
 }
 
 void Window::take_screenshot() {
-  glFinish();
+  glut().glFinish();
   Image shot;
   shot.width = view_.width();
   shot.height = view_.height();
   std::vector<std::uint32_t> rows(static_cast<std::size_t>(shot.width) * shot.height);
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glReadBuffer(GL_BACK);
-  glReadPixels(0, 0, shot.width, shot.height, GL_BGRA, GL_UNSIGNED_BYTE, rows.data());
+  glut().glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glut().glReadBuffer(GL_BACK);
+  glut().glReadPixels(0, 0, shot.width, shot.height, GL_BGRA, GL_UNSIGNED_BYTE, rows.data());
   shot.pixels.resize(rows.size());
   for (int y = 0; y < shot.height; ++y) {
     for (int x = 0; x < shot.width; ++x) {
@@ -184,7 +182,7 @@ void Window::take_screenshot() {
   } catch (const Error& error) {
     std::cerr << "FOSSSim: error: " << error.what() << "\n";
   }
-  glutLeaveMainLoop();
+  glut().glutLeaveMainLoop();
 }
 
 void Window::key(unsigned char key) {
@@ -198,7 +196,7 @@ void Window::key(unsigned char key) {
       if (can_step()) step_once();
       break;
     case Command::kQuit:
-      glutLeaveMainLoop();
+      glut().glutLeaveMainLoop();
       return;
     case Command::kRecenter:
       view_.recenter(stepper_.state());
@@ -206,12 +204,12 @@ void Window::key(unsigned char key) {
     default:
       if (!apply_view_command(command, view_)) return;
   }
-  glutPostRedisplay();
+  glut().glutPostRedisplay();
 }
 
 void Window::arrow(ArrowKey key) {
   apply_view_command(command_for_arrow(key), view_);
-  glutPostRedisplay();
+  glut().glutPostRedisplay();
 }
 
 void Window::mouse(int button, int state, int x, int y) {
@@ -219,7 +217,7 @@ void Window::mouse(int button, int state, int x, int y) {
   if (button == kWheelUp || button == kWheelDown) {
     if (state == GLUT_DOWN) {
       mouse_.wheel(button == kWheelUp);
-      glutPostRedisplay();
+      glut().glutPostRedisplay();
     }
     return;
   }
@@ -237,20 +235,20 @@ void Window::mouse(int button, int state, int x, int y) {
     default:
       return;
   }
-  const int held = glutGetModifiers();
+  const int held = glut().glutGetModifiers();
   const KeyModifiers modifiers{(held & GLUT_ACTIVE_SHIFT) != 0, (held & GLUT_ACTIVE_CTRL) != 0};
   const bool changed = state == GLUT_DOWN ? mouse_.press(which, modifiers, x, y, stepper_.state())
                                           : mouse_.release(which);
-  if (changed) glutPostRedisplay();
+  if (changed) glut().glutPostRedisplay();
 }
 
 void Window::motion(int x, int y) {
-  if (mouse_.move(x, y)) glutPostRedisplay();
+  if (mouse_.move(x, y)) glut().glutPostRedisplay();
 }
 
 void Window::reshape(int width, int height) {
   if (width > 0 && height > 0) view_.resize(width, height);
-  glutPostRedisplay();
+  glut().glutPostRedisplay();
 }
 
 }  // namespace
@@ -259,7 +257,7 @@ void check_display() {
   // The connection stays open for the life of the process: an X server whose last client
   // leaves resets itself, and connections attempted during the reset (GLUT's own, moments
   // later) fail.
-  static Display* const connection = XOpenDisplay(nullptr);
+  static Display* const connection = glut().XOpenDisplay(nullptr);
   if (connection != nullptr) return;
   const char* name = std::getenv("DISPLAY");
   throw Error(
@@ -277,17 +275,17 @@ WindowOutcome run_window(Stepper& stepper, SceneView& view, const WindowSettings
   int argc = 1;
   char program[] = "FOSSSim";
   char* argv[] = {program, nullptr};
-  glutInit(&argc, argv);
-  glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
-  glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE);
-  glutInitWindowSize(view.width(), view.height());
+  glut().glutInit(&argc, argv);
+  glut().glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
+  glut().glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE);
+  glut().glutInitWindowSize(view.width(), view.height());
   Window window(stepper, view, settings, events);
   g_window = &window;
-  glutCreateWindow(settings.title.c_str());
-  glutDisplayFunc([] { g_window->display(); });
-  glutReshapeFunc([](int w, int h) { g_window->reshape(w, h); });
-  glutKeyboardFunc([](unsigned char key, int, int) { g_window->key(key); });
-  glutSpecialFunc([](int key, int, int) {
+  glut().glutCreateWindow(settings.title.c_str());
+  glut().glutDisplayFunc([] { g_window->display(); });
+  glut().glutReshapeFunc([](int w, int h) { g_window->reshape(w, h); });
+  glut().glutKeyboardFunc([](unsigned char key, int, int) { g_window->key(key); });
+  glut().glutSpecialFunc([](int key, int, int) {
     switch (key) {
       case GLUT_KEY_LEFT:
         return g_window->arrow(ArrowKey::kLeft);
@@ -299,12 +297,12 @@ WindowOutcome run_window(Stepper& stepper, SceneView& view, const WindowSettings
         return g_window->arrow(ArrowKey::kDown);
     }
   });
-  glutMouseFunc([](int button, int state, int x, int y) { g_window->mouse(button, state, x, y); });
-  glutMotionFunc([](int x, int y) { g_window->motion(x, y); });
-  glutTimerFunc(
+  glut().glutMouseFunc([](int button, int state, int x, int y) { g_window->mouse(button, state, x, y); });
+  glut().glutMotionFunc([](int x, int y) { g_window->motion(x, y); });
+  glut().glutTimerFunc(
       kTickMilliseconds, [](int) { g_window->tick(); }, 0);
-  if (!settings.screenshot_path.empty()) glutPostRedisplay();
-  glutMainLoop();  // returns after glutLeaveMainLoop or when the window is closed
+  if (!settings.screenshot_path.empty()) glut().glutPostRedisplay();
+  glut().glutMainLoop();  // returns after glutLeaveMainLoop or when the window is closed
   g_window = nullptr;
   return window.outcome();
 }

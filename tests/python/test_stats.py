@@ -41,7 +41,7 @@ def test_energy_drift_of_a_hand_computed_run():
     assert stats["solver"]["iterations"] is None
     assert stats["solver"]["linear_solves"] is None
     assert stats["collisions"]["total"] == 0
-    assert set(stats["timings"]) == {"wall_seconds", "seconds_per_step"}
+    assert set(stats["timings"]) == {"wall_seconds", "seconds_per_step", "threads"}
 
 
 def test_collisions_are_counted_as_the_steps_reported_them(source_dir):

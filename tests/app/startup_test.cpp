@@ -1,0 +1,47 @@
+// What a FOSSSim run loads when it starts (docs/limits-and-failures.md, "Start-up"): Cairo and
+// GLUT with OpenGL and X11 only when the run draws or opens its window, not in a headless run.
+// glibc's loader says which shared objects it maps (LD_DEBUG=files, on standard error).
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "support/run_program.h"
+#include "support/scratch_folder.h"
+#include "support/tiny_scenes.h"
+
+namespace fosssim {
+namespace {
+
+class Startup : public ::testing::Test {
+ protected:
+  void SetUp() override { folder_.write("scene.xml", testing::kTinyScene); }
+  /// The run's output, with the loader's list of the objects it mapped.
+  std::string loaded_by(const std::string& arguments) {
+    const testing::ProgramResult result = testing::run_command(
+        folder_, "LD_DEBUG=files timeout -k 5 60 " +
+                     testing::quoted(testing::fosssim_program()) + " " + arguments);
+    EXPECT_EQ(result.status, 0) << result.output();
+    EXPECT_NE(result.output().find("file="), std::string::npos)
+        << "the loader does not list what it maps (not glibc?)";
+    return result.output();
+  }
+  testing::ScratchFolder folder_;
+};
+
+TEST_F(Startup, AHeadlessRunLoadsNoDrawingLibrary) {
+  const std::string loaded = loaded_by("-s scene.xml -d 0 -q -o out.bin");
+  for (const char* library : {"libcairo", "libglut", "libGL", "libX11", "libfontconfig"}) {
+    EXPECT_EQ(loaded.find(library), std::string::npos) << library << " was loaded:\n" << loaded;
+  }
+}
+
+TEST_F(Startup, APictureRunLoadsCairoWhenItDraws) {
+  const std::string loaded = loaded_by("-s scene.xml -d 0 -q --duration 0 -m svgs");
+  EXPECT_NE(loaded.find("libcairo.so"), std::string::npos) << loaded;
+  EXPECT_EQ(loaded.find("libglut"), std::string::npos) << loaded;
+  EXPECT_TRUE(folder_.exists("svgs/frame_00000.svg"));
+}
+
+}  // namespace
+}  // namespace fosssim
