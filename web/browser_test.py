@@ -19,7 +19,6 @@ site or network access, in a throwaway profile.
   browser_test.py drag     --page DIR --browser chromium
   browser_test.py references --page DIR --browser chromium --native FOSSSim --work DIR
                            --user SCENE,FILE... SCENE...
-  browser_test.py offline  --page DIR --browser chromium --manifest golden.tsv SCENE
   browser_test.py timing   --page DIR --browser chromium [--native FOSSSim] SCENE_FILE
       (a measurement, not a test: the page's load time and the time per step of SCENE_FILE in
        the browser, and with --native the native program's time per step on the same scene)
@@ -44,7 +43,6 @@ import tempfile
 import threading
 import time
 import urllib.parse
-import urllib.request
 import xml.etree.ElementTree as ElementTree
 import zlib
 
@@ -92,13 +90,11 @@ class Server:
         self.httpd.server_close()
 
 
-def run_browser(browser, url, extra, seconds=BROWSER_SECONDS, real_time=False, profile=None):
+def run_browser(browser, url, extra, seconds=BROWSER_SECONDS, real_time=False):
     """Chromium's standard output for `url` (the DOM with --dump-dom). With real_time, the
     page's clock is the wall clock and Chromium stops after `seconds` - 20 s instead of when
-    virtual time runs out (virtual time stands still while a script runs). `profile`: a
-    profile folder to keep between runs (the offline test); a throwaway one by default."""
-    with tempfile.TemporaryDirectory(prefix="fosssim-chromium-") as throwaway:
-        profile = profile or throwaway
+    virtual time runs out (virtual time stands still while a script runs)."""
+    with tempfile.TemporaryDirectory(prefix="fosssim-chromium-") as profile:
         command = ["timeout", "-k", "10", str(seconds), browser, "--headless", "--no-sandbox",
                    "--disable-gpu", "--hide-scrollbars", "--no-first-run",
                    f"--user-data-dir={profile}",
@@ -113,9 +109,9 @@ def run_browser(browser, url, extra, seconds=BROWSER_SECONDS, real_time=False, p
         return done.stdout
 
 
-def page_result(browser, url, profile=None, **options):
+def page_result(browser, url, **options):
     """The text the page wrote into #test-result, or a failure when it never finished."""
-    dom = run_browser(browser, url, ["--dump-dom"], profile=profile, **options)
+    dom = run_browser(browser, url, ["--dump-dom"], **options)
     found = re.search(r'<pre id="test-result"( data-done="1")?>(.*?)</pre>', dom, re.S)
     if not found:
         raise SystemExit(f"FAILED: no #test-result in the page's DOM:\n{dom[:2000]}")
@@ -388,45 +384,6 @@ def test_references(args, browser):
         fail(f"opened alone, the scene does not say that {mesh} is missing: {alone!r}")
 
 
-def test_offline(args, browser):
-    """Offline use: the page is opened once (the service worker installs and caches it and a
-    scene), the server is stopped, and the page opened again in the same browser profile still
-    loads FOSSSim, runs the scene and gives the native manifest's trajectory digest."""
-    scene = args.items[0]
-    manifest = {}
-    with open(args.manifest) as lines:
-        for line in lines:
-            fields = line.rstrip("\n").split("\t")
-            if len(fields) >= 5:
-                manifest[fields[0]] = (fields[3], fields[4])
-    if scene not in manifest:
-        fail(f"{scene}: no entry in {args.manifest}")
-    with tempfile.TemporaryDirectory(prefix="fosssim-chromium-profile-") as profile:
-        server = Server(args.page)
-        with server as base:
-            text = page_result(browser, f"{base}index.html?test=offline-install&scene={scene}",
-                               profile=profile)
-        print(f"online: {text}")
-        if text != "installed\tscene cached":
-            fail(f"the service worker did not install and cache the scene: {text}")
-        # The server is stopped: nothing answers on its port any more.
-        try:
-            urllib.request.urlopen(f"{base}index.html", timeout=5)
-            fail("the server still answers")
-        except OSError:
-            pass
-        text = page_result(browser, f"{base}index.html?test=offline-use&scene={scene}",
-                           profile=profile)
-    print(f"offline: {text}")
-    lines = text.splitlines()
-    if not lines or lines[0] != "controlled":
-        fail("offline, the page is not served by its service worker")
-    got = tuple(lines[1].split("\t")[1:]) if len(lines) > 1 else None
-    if got != manifest[scene]:
-        fail(f"offline, {scene} gave {got}, the manifest has {list(manifest[scene])}")
-    print(f"offline: {scene} runs, same bytes as the manifest ({got[0]} bytes)")
-
-
 def test_timing(args, browser):
     """Prints the page's load time and a scene's time per step, in the browser and natively."""
     scene = os.path.abspath(args.items[0])
@@ -462,7 +419,7 @@ def test_timing(args, browser):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("test", choices=["digests", "error", "grade", "picture", "drag",
-                                         "references", "offline", "timing"])
+                                         "references", "timing"])
     parser.add_argument("items", nargs="*")
     parser.add_argument("--page", required=True)
     parser.add_argument("--browser", required=True)
@@ -476,7 +433,7 @@ def main():
         fail(f"no browser {args.browser}; tools/install-deps.sh --web installs Debian's chromium")
     {"digests": test_digests, "error": test_error, "grade": test_grade,
      "picture": test_picture, "drag": test_drag, "references": test_references,
-     "offline": test_offline, "timing": test_timing}[args.test](args, args.browser)
+     "timing": test_timing}[args.test](args, args.browser)
     if args.test != "timing":
         print("passed")
 

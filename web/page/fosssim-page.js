@@ -349,8 +349,6 @@ FOSSSimModule().then(async (fosssim) => {
 ///   ?test=timing&url=U                  the page's load time and the time per step of scene U
 ///   ?test=drag                          drags a particle with mouse events; its positions
 ///   ?test=references&scenes=..&user=..  scenes naming meshes: picked, and opened with their files
-///   ?test=offline-install               registers the service worker, caches a scene
-///   ?test=offline-use&scene=P           (server stopped) the digest of scene P's trajectory
 async function runTest(params, page) {
   const test = params.get("test");
   const digestLine = async (label, problem) => {
@@ -433,29 +431,6 @@ async function runTest(params, page) {
     const alone = await page.open([files[0]]);
     lines.push(`alone:${files[0].name}\t${alone.split("\n")[0]}`);
     return lines.join("\n");
-  }
-  if (test === "offline-install") {
-    // The first visit: the service worker installs (caching the page) and takes control; a
-    // scene fetched then is cached too. Done when the cache holds it.
-    await navigator.serviceWorker.register("service-worker.js");
-    await navigator.serviceWorker.ready;
-    if (!navigator.serviceWorker.controller) {
-      await new Promise((resolve) =>
-        navigator.serviceWorker.addEventListener("controllerchange", resolve, { once: true }));
-    }
-    const path = params.get("scene");
-    const problem = await page.pick(path);
-    if (problem) return problem;
-    for (let k = 0; k < 100 && !(await caches.match(`scenes/${path}`)); ++k) {
-      await new Promise((resolve) => setTimeout(resolve, 50));
-    }
-    return `installed\t${(await caches.match(`scenes/${path}`)) ? "scene cached" : "scene not cached"}`;
-  }
-  if (test === "offline-use") {
-    // The second visit, with the server stopped: everything comes from the service worker.
-    const controlled = navigator.serviceWorker.controller ? "controlled" : "not controlled";
-    const path = params.get("scene");
-    return `${controlled}\n` + await digestLine(path, await page.pick(path));
   }
   if (test === "error") {
     page.text.value = params.get("scene");
