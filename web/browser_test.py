@@ -430,7 +430,7 @@ def main():
     parser.add_argument("--user", help="references: a scene and the files it names, comma-separated")
     args = parser.parse_intermixed_args()
     if shutil.which(args.browser) is None:
-        fail(f"no browser {args.browser}; tools/install-deps.sh --web installs Debian's chromium")
+        fail(f"no browser {args.browser}; tools/install-deps.sh installs Debian's chromium")
     {"digests": test_digests, "error": test_error, "grade": test_grade,
      "picture": test_picture, "drag": test_drag, "references": test_references,
      "timing": test_timing}[args.test](args, args.browser)
