@@ -258,12 +258,11 @@ TEST_F(CommandLine3D, TheProcessHasTheThreadsTheCommandLineAsksFor) {
   EXPECT_EQ(threads_of("OPENBLAS_NUM_THREADS=4 OMP_NUM_THREADS=4", "", "environment.json"), 1);
   EXPECT_EQ(threads_of("OPENBLAS_NUM_THREADS=4", "--threads 1", "one.json"), 1);
   EXPECT_EQ(threads_of("", "--threads 2", "no_factor.json"), 1);
-  EXPECT_EQ(threads_of("OPENBLAS_NUM_THREADS=4 OMP_NUM_THREADS=4", "", "cloth_default.json",
-                       "cloth.xml"),
-            1);
+  EXPECT_EQ(
+      threads_of("OPENBLAS_NUM_THREADS=4 OMP_NUM_THREADS=4", "", "cloth_default.json", "cloth.xml"),
+      1);
   EXPECT_EQ(threads_of("", "--threads 2", "two.json", "cloth.xml"), 2);
-  EXPECT_EQ(threads_of("OPENBLAS_NUM_THREADS=1", "--threads=2", "two_equals.json", "cloth.xml"),
-            2);
+  EXPECT_EQ(threads_of("OPENBLAS_NUM_THREADS=1", "--threads=2", "two_equals.json", "cloth.xml"), 2);
 }
 
 TEST_F(CommandLine3D, ThreadsMustBeAPositiveCount) {

@@ -20,8 +20,8 @@ class Startup : public ::testing::Test {
   /// The run's output, with the loader's list of the objects it mapped.
   std::string loaded_by(const std::string& arguments) {
     const testing::ProgramResult result = testing::run_command(
-        folder_, "LD_DEBUG=files timeout -k 5 60 " +
-                     testing::quoted(testing::fosssim_program()) + " " + arguments);
+        folder_, "LD_DEBUG=files timeout -k 5 60 " + testing::quoted(testing::fosssim_program()) +
+                     " " + arguments);
     EXPECT_EQ(result.status, 0) << result.output();
     EXPECT_NE(result.output().find("file="), std::string::npos)
         << "the loader does not list what it maps (not glibc?)";

@@ -116,7 +116,8 @@ void CholeskyFactor::solve(const double* B, double* X, int columns) const {
   if (!factored_) throw std::logic_error("CholeskyFactor::solve without a factor");
   cholmod_dense b = view_dense(B, size_, columns);
   Cholmod& c = *cholmod_;
-  if (cholmod_library().cholmod_solve2(CHOLMOD_A, c.factor, &b, nullptr, &c.x, nullptr, &c.y, &c.e, &c.common) == 0) {
+  if (cholmod_library().cholmod_solve2(CHOLMOD_A, c.factor, &b, nullptr, &c.x, nullptr, &c.y, &c.e,
+                                       &c.common) == 0) {
     throw SolverFailure("CHOLMOD: the solve failed");
   }
   std::memcpy(X, c.x->x, sizeof(double) * static_cast<std::size_t>(size_) * columns);

@@ -30,8 +30,9 @@ void LuFactor::analyze(const SparseMatrix& A) {
   free_numeric();
   if (symbolic_ != nullptr) umfpack_library().umfpack_di_free_symbolic(&symbolic_);
   size_ = static_cast<int>(A.rows());
-  const int status = umfpack_library().umfpack_di_symbolic(size_, size_, A.outerIndexPtr(), A.innerIndexPtr(),
-                                         A.valuePtr(), &symbolic_, control_.data(), info_.data());
+  const int status = umfpack_library().umfpack_di_symbolic(
+      size_, size_, A.outerIndexPtr(), A.innerIndexPtr(), A.valuePtr(), &symbolic_, control_.data(),
+      info_.data());
   if (status != UMFPACK_OK) throw SolverFailure("UMFPACK: the analysis failed");
   integer_work_.resize(static_cast<std::size_t>(size_));
   work_.resize(static_cast<std::size_t>(size_));
@@ -42,8 +43,9 @@ bool LuFactor::factorize(const SparseMatrix& A) {
     throw std::logic_error("LuFactor::factorize: the pattern was not analysed");
   }
   free_numeric();
-  const int status = umfpack_library().umfpack_di_numeric(A.outerIndexPtr(), A.innerIndexPtr(), A.valuePtr(),
-                                        symbolic_, &numeric_, control_.data(), info_.data());
+  const int status =
+      umfpack_library().umfpack_di_numeric(A.outerIndexPtr(), A.innerIndexPtr(), A.valuePtr(),
+                                           symbolic_, &numeric_, control_.data(), info_.data());
   factor_nonzeros_ = info_[UMFPACK_LNZ] + info_[UMFPACK_UNZ];
   factor_flops_ = info_[UMFPACK_FLOPS];
   factored_ = status == UMFPACK_OK;
@@ -53,9 +55,9 @@ bool LuFactor::factorize(const SparseMatrix& A) {
 
 void LuFactor::solve(const double* b, double* x) const {
   if (!factored_) throw std::logic_error("LuFactor::solve without a factor");
-  const int status =
-      umfpack_library().umfpack_di_wsolve(UMFPACK_A, nullptr, nullptr, nullptr, x, b, numeric_, control_.data(),
-                        info_.data(), integer_work_.data(), work_.data());
+  const int status = umfpack_library().umfpack_di_wsolve(UMFPACK_A, nullptr, nullptr, nullptr, x, b,
+                                                         numeric_, control_.data(), info_.data(),
+                                                         integer_work_.data(), work_.data());
   if (status != UMFPACK_OK) throw SolverFailure("UMFPACK: the solve failed");
 }
 

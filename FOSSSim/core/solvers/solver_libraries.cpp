@@ -67,9 +67,9 @@ void* open_library(const char* soname, const char* package) {
   if (handle == nullptr) {
     const char* reason = ::dlerror();
     throw Error(ErrorKind::kUnavailable,
-                std::string("the sparse solvers need ") + soname + ", which cannot be loaded: " +
-                    (reason != nullptr ? reason : soname) + " (install the " + package +
-                    " package)");
+                std::string("the sparse solvers need ") + soname +
+                    ", which cannot be loaded: " + (reason != nullptr ? reason : soname) +
+                    " (install the " + package + " package)");
   }
   apply_threads(handle);
   loaded_handles.push_back(handle);

@@ -16,12 +16,14 @@
 
 namespace fosssim {
 
-#define FOSSSIM_CHOLMOD_FUNCTIONS(X)                                                 \
-  X(cholmod_analyze) X(cholmod_factorize) X(cholmod_finish) X(cholmod_free_dense)    \
-  X(cholmod_free_factor) X(cholmod_solve2) X(cholmod_start)
-#define FOSSSIM_UMFPACK_FUNCTIONS(X)                                                 \
-  X(umfpack_di_defaults) X(umfpack_di_free_numeric) X(umfpack_di_free_symbolic)      \
-  X(umfpack_di_numeric) X(umfpack_di_symbolic) X(umfpack_di_wsolve)
+#define FOSSSIM_CHOLMOD_FUNCTIONS(X)                                                  \
+  X(cholmod_analyze)                                                                  \
+  X(cholmod_factorize) X(cholmod_finish) X(cholmod_free_dense) X(cholmod_free_factor) \
+      X(cholmod_solve2) X(cholmod_start)
+#define FOSSSIM_UMFPACK_FUNCTIONS(X)                                           \
+  X(umfpack_di_defaults)                                                       \
+  X(umfpack_di_free_numeric) X(umfpack_di_free_symbolic) X(umfpack_di_numeric) \
+      X(umfpack_di_symbolic) X(umfpack_di_wsolve)
 #define FOSSSIM_DMUMPS_FUNCTIONS(X) X(dmumps_c)
 #define FOSSSIM_SMUMPS_FUNCTIONS(X) X(smumps_c)
 
