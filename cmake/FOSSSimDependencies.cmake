@@ -32,6 +32,19 @@ if(NOT TARGET SuiteSparse::CHOLMOD)
                         "${DMUMPS_LIBRARY};${SMUMPS_LIBRARY};${MUMPS_COMMON_LIBRARY};${MUMPS_MPISEQ_LIBRARY}")
 endif()
 
+# The soname of each solver library (what the build links against; FOSSSim loads them with
+# dlopen by these names: FOSSSim/core/solvers/solver_libraries.h).
+foreach(solver_library CHOLMOD UMFPACK DMUMPS SMUMPS)
+  if(NOT ${solver_library}_SONAME AND ${solver_library}_LIBRARY)
+    execute_process(COMMAND ${CMAKE_OBJDUMP} -p ${${solver_library}_LIBRARY}
+                    OUTPUT_VARIABLE solver_library_dump ERROR_QUIET)
+    if(NOT solver_library_dump MATCHES "SONAME +([^ \n]+)")
+      message(FATAL_ERROR "no soname found in ${${solver_library}_LIBRARY} (objdump -p)")
+    endif()
+    set(${solver_library}_SONAME ${CMAKE_MATCH_1} CACHE STRING "soname of ${solver_library}")
+  endif()
+endforeach()
+
 if(NOT TARGET ODE::lcp)
   # ODE's LCP solver (Dantzig's method), as Debian packages it with DART
   # (libdart-external-odelcpsolver-dev): rigid-body contact (FOSSSim/core/rigid/contact_lcp.h).

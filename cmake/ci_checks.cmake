@@ -9,9 +9,8 @@
 #   ci-web:        the web preset (Emscripten's em++, docs/web.md) is configured, built and its
 #                  test preset run: the wasm build's same-bytes checks under Node and the page's
 #                  tests in headless Chromium, which compare with this tree's native FOSSSim.
-#                  Run it with `ctest --preset ci-web` after `tools/install-deps.sh --web`; the
-#                  test workflow does not run it yet (docs/web.md, "In CI": its cost on the CI
-#                  machine is not measured).
+#                  The test workflow runs it last (`ctest --preset ci-web`); its cost on the CI
+#                  machine is in docs/web.md, "In CI".
 #
 # One sanitize build serves both its parts: the tests and the fuzz targets link the same instrumented libraries
 # (before, a gcc sanitizer build and a clang fuzz build compiled every library twice;

@@ -44,8 +44,10 @@ add_link_options($<$<CONFIG:Release>:-O3>)
 # to work around a bug of GCC before 6.3; and its remaining empty asm statements (register
 # allocation hints for x86 in the matrix product kernel) defined away.
 add_compile_options(-msimd128 -msse2 -fgnuc-version=7 "-D__asm__(...)=")
-file(WRITE ${FOSSSIM_WEB_INCLUDE_DIR}/mmintrin.h
-     "/* Emscripten has no MMX; Eigen includes this header but uses only SSE2 (cmake/web.cmake). */\n")
+# file(CONFIGURE) writes it only when its text changes: a new timestamp at every configure made
+# every object that includes Eigen out of date, so each re-configure rebuilt the whole tree.
+file(CONFIGURE OUTPUT ${FOSSSIM_WEB_INCLUDE_DIR}/mmintrin.h
+     CONTENT "/* Emscripten has no MMX; Eigen includes this header but uses only SSE2 (cmake/web.cmake). */\n")
 
 # Node runs the wasm programs of the tests (web/): Debian's Node modules for em++ itself, and
 # the program's JavaScript and wasm in one file, which recent Node loads without fetch().

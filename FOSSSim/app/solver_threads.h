@@ -7,10 +7,10 @@ namespace fosssim {
 /// Sets the threads of OpenBLAS and of OpenMP (which CHOLMOD uses) to `count` (>= 1), before
 /// the first solve. The environment (OPENBLAS_NUM_THREADS, OMP_NUM_THREADS) is overridden, so
 /// that a run's bytes depend on --threads alone (docs/solvers.md, "Threads and determinism").
-/// OpenBLAS's pool, started before main, was already sized from --threads by
-/// cli/blas_threads_at_start.cpp; this sets the exact count.
-/// Returns false when the BLAS this program was linked with offers no way to set it (a BLAS
-/// other than OpenBLAS, which then runs as it was built).
+/// The solvers' libraries are loaded by the first factorization (core/solvers/solver_libraries.h):
+/// OpenBLAS's pool then starts with at most `count` threads and the exact count is set.
+/// Returns true: a BLAS other than OpenBLAS, which offers no way to set it, is only seen when
+/// loaded, and then runs as it was built.
 bool set_solver_threads(int count);
 
 }  // namespace fosssim

@@ -220,11 +220,13 @@ TEST_F(CommandLine3D, TheDefaultOfOneSolverThreadOverridesTheEnvironment) {
   EXPECT_TRUE(folder_.read("environment.bin") == folder_.read("one.bin"));
 }
 
-// OpenBLAS starts its thread pool when it is loaded, before main: the count is set from the
-// command line before that (FOSSSim/cli/blas_threads_at_start.cpp). A run with one thread is a
-// process of one thread from start to end, whatever the environment asks, and --threads 2 (in
-// either spelling) still gives the BLAS its second thread. The run summary counts the
-// process's threads at the end of the run (/proc/self/task).
+// OpenBLAS starts its thread pool when it is loaded, by the first factorization
+// (core/solvers/solver_libraries.h): the count is set from the command line before that. A run
+// with one thread is a process of one thread from start to end, whatever the environment asks;
+// a run that factors nothing loads no BLAS and starts no thread even with --threads 2; and a run
+// that factors (the 50x50 cloth, CHOLMOD) with --threads 2 (in either spelling) gives the BLAS
+// its second thread. The run summary counts the process's threads at the end of the run
+// (/proc/self/task).
 TEST_F(CommandLine3D, TheProcessHasTheThreadsTheCommandLineAsksFor) {
   if (!std::filesystem::exists("/proc/self/task")) GTEST_SKIP() << "no /proc";
   write("ball.xml", R"(<scene>
@@ -232,10 +234,16 @@ TEST_F(CommandLine3D, TheProcessHasTheThreadsTheCommandLineAsksFor) {
   <integrator type="explicit-euler" dt="0.01"/>
   <particle m="1" px="0" py="0" vx="1" vy="0" fixed="0"/>
 </scene>)");
+  write("cloth.xml", R"(<scene dim="3">
+  <duration time="0.02"/>
+  <integrator type="linearly-implicit-euler" dt="0.02"/>
+  <generate type="cloth" nx="50" ny="50" plane="xz" pin="corners" k="200" m="0.001"/>
+  <simplegravity fx="0" fy="-9.8" fz="0"/>
+</scene>)");
   const auto threads_of = [&](const std::string& environment, const std::string& option,
-                              const std::string& name) -> long {
+                              const std::string& name, const char* scene = "ball.xml") -> long {
     const ProgramResult result = run(environment + " " + kFosssim + " " + option + " -s " +
-                                     path("ball.xml") + " -d 0 -q --stats-json " + path(name));
+                                     path(scene) + " -d 0 -q --stats-json " + path(name));
     EXPECT_EQ(result.status, 0) << result.output();
     const std::string text = folder_.read(name);
     const std::string key = "\"threads\": ";
@@ -249,8 +257,12 @@ TEST_F(CommandLine3D, TheProcessHasTheThreadsTheCommandLineAsksFor) {
   EXPECT_EQ(threads_of("", "", "default.json"), 1);
   EXPECT_EQ(threads_of("OPENBLAS_NUM_THREADS=4 OMP_NUM_THREADS=4", "", "environment.json"), 1);
   EXPECT_EQ(threads_of("OPENBLAS_NUM_THREADS=4", "--threads 1", "one.json"), 1);
-  EXPECT_EQ(threads_of("", "--threads 2", "two.json"), 2);
-  EXPECT_EQ(threads_of("OPENBLAS_NUM_THREADS=1", "--threads=2", "two_equals.json"), 2);
+  EXPECT_EQ(threads_of("", "--threads 2", "no_factor.json"), 1);
+  EXPECT_EQ(
+      threads_of("OPENBLAS_NUM_THREADS=4 OMP_NUM_THREADS=4", "", "cloth_default.json", "cloth.xml"),
+      1);
+  EXPECT_EQ(threads_of("", "--threads 2", "two.json", "cloth.xml"), 2);
+  EXPECT_EQ(threads_of("OPENBLAS_NUM_THREADS=1", "--threads=2", "two_equals.json", "cloth.xml"), 2);
 }
 
 TEST_F(CommandLine3D, ThreadsMustBeAPositiveCount) {

@@ -1,5 +1,6 @@
 // What a FOSSSim run loads when it starts (docs/limits-and-failures.md, "Start-up"): Cairo and
-// GLUT with OpenGL and X11 only when the run draws or opens its window, not in a headless run.
+// GLUT with OpenGL and X11 only when the run draws or opens its window, not in a headless run;
+// the sparse solvers' libraries (CHOLMOD, UMFPACK, MUMPS, OpenBLAS) only when it factors.
 // glibc's loader says which shared objects it maps (LD_DEBUG=files, on standard error).
 
 #include <gtest/gtest.h>
@@ -19,8 +20,8 @@ class Startup : public ::testing::Test {
   /// The run's output, with the loader's list of the objects it mapped.
   std::string loaded_by(const std::string& arguments) {
     const testing::ProgramResult result = testing::run_command(
-        folder_, "LD_DEBUG=files timeout -k 5 60 " +
-                     testing::quoted(testing::fosssim_program()) + " " + arguments);
+        folder_, "LD_DEBUG=files timeout -k 5 60 " + testing::quoted(testing::fosssim_program()) +
+                     " " + arguments);
     EXPECT_EQ(result.status, 0) << result.output();
     EXPECT_NE(result.output().find("file="), std::string::npos)
         << "the loader does not list what it maps (not glibc?)";
@@ -34,6 +35,27 @@ TEST_F(Startup, AHeadlessRunLoadsNoDrawingLibrary) {
   for (const char* library : {"libcairo", "libglut", "libGL", "libX11", "libfontconfig"}) {
     EXPECT_EQ(loaded.find(library), std::string::npos) << library << " was loaded:\n" << loaded;
   }
+}
+
+TEST_F(Startup, ARunThatFactorsNothingLoadsNoSolverLibrary) {
+  const std::string loaded = loaded_by("--threads 2 -s scene.xml -d 0 -q -o out.bin");
+  for (const char* library : {"libcholmod", "libumfpack", "mumps", "libopenblas", "libblas",
+                              "liblapack", "libgfortran", "libgomp"}) {
+    EXPECT_EQ(loaded.find(library), std::string::npos) << library << " was loaded:\n" << loaded;
+  }
+}
+
+TEST_F(Startup, ARunThatFactorsLoadsItsSolverWhenItFactors) {
+  // Implicit Euler on a 50x50 cloth: its step matrix is factored by MUMPS, with OpenBLAS.
+  folder_.write("cloth.xml", R"(<scene dim="3">
+  <duration time="0.02"/>
+  <integrator type="linearly-implicit-euler" dt="0.02"/>
+  <generate type="cloth" nx="50" ny="50" plane="xz" pin="corners" k="200" m="0.001"/>
+</scene>)");
+  const std::string loaded = loaded_by("-s cloth.xml -d 0 -q -o out.bin");
+  EXPECT_NE(loaded.find("libdmumps_seq"), std::string::npos) << loaded;
+  EXPECT_NE(loaded.find("libopenblas.so"), std::string::npos) << loaded;
+  EXPECT_TRUE(folder_.exists("out.bin"));
 }
 
 TEST_F(Startup, APictureRunLoadsCairoWhenItDraws) {

@@ -133,7 +133,21 @@ async function fetchText(url) {
   return response.text();
 }
 
-FOSSSimModule().then((fosssim) => {
+/// The most files one scene may name (meshes) that the page fetches or takes from the student's
+/// files before it gives up and shows the loader's error; raise it for scenes of more meshes.
+const kMaxNamedFiles = 64;
+
+/// The last part of a path ("../cloth/cloth.obj" -> "cloth.obj").
+const baseName = (path) => path.replace(/^.*\//, "");
+
+/// Where the files a suite's scene names come from: the served suites (scenes/PATH), or null.
+async function fetchSuiteFile(path) {
+  if (path.startsWith("/")) return null;
+  const response = await fetch(`scenes/${path}`);
+  return response.ok ? new Uint8Array(await response.arrayBuffer()) : null;
+}
+
+FOSSSimModule().then(async (fosssim) => {
   const session = new fosssim.WebSession();
   const $ = (id) => document.getElementById(id);
   const canvas = $("view");
@@ -146,6 +160,14 @@ FOSSSimModule().then((fosssim) => {
   let running = false;
   let name = "scene.xml";
   let energies = [];
+  // Where the files the loaded scene names come from (path -> Promise of bytes or null): the
+  // served suites for a scene picked from them, the student's opened files otherwise.
+  let studentFiles = new Map();  // base name -> File, the files opened together
+  const fromStudentFiles = async (path) => {
+    const file = studentFiles.get(baseName(path));
+    return file ? new Uint8Array(await file.arrayBuffer()) : null;
+  };
+  let source = fromStudentFiles;
 
   const vector = (v) => {
     const values = new Array(v.size());
@@ -162,11 +184,23 @@ FOSSSimModule().then((fosssim) => {
     const e = vector(session.energy());
     if (e.length === 3) energies.push(e);
   };
-  const load = () => {
+  /// Loads the text box's scene as `name`. A file it names that the page does not hold yet (a
+  /// mesh) is asked of `source` (fetched from the suites, or the student's file of that name)
+  /// and the scene loaded again; a file nobody has leaves the loader's own error on show.
+  const load = async () => {
     running = false;
     energies = [];
     report.textContent = "";
-    const problem = session.load(text.value, name, canvas.width, canvas.height);
+    let problem = session.load(text.value, name, canvas.width, canvas.height);
+    const tried = new Set();
+    while (problem && tried.size < kMaxNamedFiles) {
+      const missing = session.missingFile();
+      if (!missing || tried.has(missing)) break;
+      tried.add(missing);
+      const bytes = await source(missing);
+      if (bytes === null || session.addFile(missing, bytes) !== "") break;
+      problem = session.load(text.value, name, canvas.width, canvas.height);
+    }
     error.textContent = problem;
     warnings.textContent = problem ? "" : session.warnings();
     recordEnergy();
@@ -195,7 +229,24 @@ FOSSSimModule().then((fosssim) => {
   /// Loads a scene of the repository's suites (a path listed in scenes/index.json).
   const pick = async (path) => {
     name = path;
+    source = fetchSuiteFile;
+    session.clearFiles();
     text.value = await fetchText(`scenes/${path}`);
+    return load();
+  };
+  /// Opens the student's files (a FileList or array of File): the first scene among them (.xml,
+  /// or .json) is loaded, and the others are the files it names, matched by their base names
+  /// (a scene naming "../meshes/cloth.obj" finds an opened cloth.obj).
+  const open = async (files) => {
+    const all = Array.from(files);
+    const scene = all.find((f) => /\.xml$/i.test(f.name)) ||
+                  all.find((f) => /\.json$/i.test(f.name)) || all[0];
+    if (!scene) return "";
+    studentFiles = new Map(all.map((f) => [f.name, f]));
+    source = fromStudentFiles;
+    session.clearFiles();  // no file of an earlier opening stands in for a missing one
+    name = scene.name;
+    text.value = await scene.text();
     return load();
   };
   /// The loaded scene's trajectory file (the bytes of FOSSSim -s SCENE -d 0 -o OUT), or null.
@@ -224,13 +275,8 @@ FOSSSimModule().then((fosssim) => {
   $("picker").addEventListener("change", (event) => {
     if (event.target.value) pick(event.target.value).catch((p) => { error.textContent = p.message; });
   });
-  $("open").addEventListener("change", (event) => {
-    const file = event.target.files[0];
-    if (!file) return;
-    name = file.name;
-    file.text().then((content) => { text.value = content; load(); });
-  });
-  $("load").addEventListener("click", load);
+  $("open").addEventListener("change", (event) => { open(event.target.files); });
+  $("load").addEventListener("click", () => { load(); });
   $("run").addEventListener("click", () => { running = true; });
   $("pause").addEventListener("click", () => { running = false; });
   $("step").addEventListener("click", () => { running = false; advance(1); });
@@ -255,10 +301,12 @@ FOSSSimModule().then((fosssim) => {
     if (file) grade(file);
   });
   // Dragging: the native window's ctrl + left drag, here any left drag on a particle.
+  // The picture fills the canvas's content box, inside its border: the bounding box would put
+  // the cursor a border's width off and scale it by 640/642 (web.browser.drag found this).
   const pixel = (event) => {
     const box = canvas.getBoundingClientRect();
-    return [(event.clientX - box.left) * canvas.width / box.width,
-            (event.clientY - box.top) * canvas.height / box.height];
+    return [(event.clientX - box.left - canvas.clientLeft) * canvas.width / canvas.clientWidth,
+            (event.clientY - box.top - canvas.clientTop) * canvas.height / canvas.clientHeight];
   };
   canvas.addEventListener("mousedown", (event) => {
     if (event.button === 0 && session.press(...pixel(event))) draw();
@@ -267,11 +315,12 @@ FOSSSimModule().then((fosssim) => {
   window.addEventListener("mouseup", () => { session.release(); });
 
   text.value = kPendulum;
-  load();
+  await load();
   requestAnimationFrame(frame);
   const params = new URLSearchParams(location.search);
   if (params.has("test")) {
-    runTest(params, { session, pick, trajectory, grade, advance, draw, load, text, error, canvas })
+    runTest(params, { session, pick, open, trajectory, grade, advance, draw, load, text, error,
+                      canvas })
       .catch((problem) => `test failed: ${problem.message}`)
       .then((result) => {
         const out = $("test-result");
@@ -298,22 +347,94 @@ FOSSSimModule().then((fosssim) => {
 ///   ?test=grade&scene=P&upload=URL      the report of grading the file at URL against scene P
 ///   ?test=picture&scene=P&steps=K       K steps, then only the canvas is shown (a screenshot)
 ///   ?test=timing&url=U                  the page's load time and the time per step of scene U
+///   ?test=drag                          drags a particle with mouse events; its positions
+///   ?test=references&scenes=..&user=..  scenes naming meshes: picked, and opened with their files
 async function runTest(params, page) {
   const test = params.get("test");
+  const digestLine = async (label, problem) => {
+    if (problem) return `${label}\tERROR\t${problem}`;
+    const bytes = page.trajectory();
+    if (bytes === null) return `${label}\tERROR\t${page.session.lastError()}`;
+    return `${label}\t${bytes.length}\t${await sha256(bytes)}`;
+  };
   if (test === "digests") {
     const lines = [];
     for (const path of params.get("scenes").split(",")) {
-      const problem = await page.pick(path);
-      if (problem) { lines.push(`${path}\tERROR\t${problem}`); continue; }
-      const bytes = page.trajectory();
-      if (bytes === null) { lines.push(`${path}\tERROR\t${page.session.lastError()}`); continue; }
-      lines.push(`${path}\t${bytes.length}\t${await sha256(bytes)}`);
+      lines.push(await digestLine(path, await page.pick(path)));
     }
+    return lines.join("\n");
+  }
+  if (test === "drag") {
+    // A free particle (2 kg) at the origin and a fixed one 1 m to its right, no forces: the
+    // mouse grabs the free one on the canvas and pulls it; browser_test.py checks the positions
+    // against the drag spring's steps worked by hand.
+    page.text.value = `<scene>
+  <duration time="1"/>
+  <integrator type="symplectic-euler" dt="0.01"/>
+  <particle m="2" px="0" py="0" vx="0" vy="0" fixed="0"/>
+  <particle m="1" px="1" py="0" vx="0" vy="0" fixed="1"/>
+</scene>`;
+    const problem = await page.load();
+    if (problem) return problem;
+    const commands = page.session.draw();
+    const values = [];
+    for (let i = 0; i < commands.size(); ++i) values.push(commands.get(i));
+    commands.delete();
+    const discs = [];  // the particles' centres in canvas pixels, in order
+    for (let k = 0; k < values.length;) {
+      const code = values[k], n = values[k + 1];
+      if (code === 5) discs.push([values[k + 1], values[k + 2]]);
+      k += [4, 5 + 2 * n, 6 + 2 * n, 14, 9, 7, 8][code];
+    }
+    // Canvas pixels to the client coordinates of mouse events: the canvas's content box
+    // (inside its border), as a student's pointer sees the picture.
+    const canvas = page.canvas, box = canvas.getBoundingClientRect();
+    const client = ([x, y]) => [box.left + canvas.clientLeft + x * canvas.clientWidth / canvas.width,
+                                box.top + canvas.clientTop + y * canvas.clientHeight / canvas.height];
+    const mouse = (target, type, at) => target.dispatchEvent(new MouseEvent(type, {
+      clientX: at[0], clientY: at[1], button: 0, buttons: 1, bubbles: true }));
+    const grabbed = [discs[0][0] + 2, discs[0][1] - 1];  // within the pick distance
+    const shift = [48, -36];                              // pixels: right and up
+    const state = () => {
+      const v = page.session.positions(), x = [];
+      for (let i = 0; i < v.size(); ++i) x.push(v.get(i));
+      v.delete();
+      return x;
+    };
+    const lines = [`pixels_per_metre\t${discs[1][0] - discs[0][0]}`,
+                   `discs\t${JSON.stringify(discs)}`, `shift\t${JSON.stringify(shift)}`,
+                   `x0\t${JSON.stringify(state())}`];
+    mouse(canvas, "mousedown", client(grabbed));
+    mouse(canvas, "mousemove", client([grabbed[0] + shift[0], grabbed[1] + shift[1]]));
+    for (const k of [1, 2]) {
+      page.advance(1);
+      lines.push(`x${k}\t${JSON.stringify(state())}`);
+    }
+    mouse(window, "mouseup", client([grabbed[0] + shift[0], grabbed[1] + shift[1]]));
+    page.advance(1);
+    lines.push(`x3\t${JSON.stringify(state())}`);
+    return lines.join("\n");
+  }
+  if (test === "references") {
+    // Scenes that name other files: picked from the suites (the files fetched from them), and
+    // opened by the student together with their files, then alone (the loader's error).
+    const lines = [];
+    for (const path of params.get("scenes").split(",")) {
+      lines.push(await digestLine(path, await page.pick(path)));
+    }
+    const files = [];
+    for (const path of params.get("user").split(",")) {
+      const response = await fetch(`scenes/${path}`);
+      files.push(new File([await response.blob()], baseName(path)));
+    }
+    lines.push(await digestLine(`user:${files[0].name}`, await page.open(files)));
+    const alone = await page.open([files[0]]);
+    lines.push(`alone:${files[0].name}\t${alone.split("\n")[0]}`);
     return lines.join("\n");
   }
   if (test === "error") {
     page.text.value = params.get("scene");
-    page.load();
+    await page.load();
     return page.error.textContent;
   }
   if (test === "grade") {
@@ -335,7 +456,7 @@ async function runTest(params, page) {
     // Not a test: the figures of docs/web.md, "Speed" (browser_test.py timing).
     const ready = performance.now();  // milliseconds since the navigation started
     page.text.value = await fetchText(params.get("url"));
-    const problem = page.load();
+    const problem = await page.load();
     if (problem) return problem;
     const start = performance.now();
     let steps = 0;

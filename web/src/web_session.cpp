@@ -7,8 +7,10 @@
 #include <emscripten/val.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -24,6 +26,8 @@
 #include "grading/grader.h"
 #include "grading/rigid_grader.h"
 #include "grading/step_grader.h"
+#include "io/input_files.h"
+#include "io/json_scene_reader.h"
 #include "io/scene_loader.h"
 #include "io/trajectory_file.h"
 #include "render/drawing.h"
@@ -119,13 +123,24 @@ struct GradeOutcome {
 /// One loaded scene and its run. load() returns the error text (file:line: error: ...) or "".
 class WebSession {
  public:
+  ///
+  /// `name` is the scene's path (a suite's "assets3d/scenes/x.xml", a student's "x.xml"); the
+  /// files it names (meshes), relative to its folder as natively, are served from the files
+  /// added with add_file and nothing else. A name ending in ".json" is read as a JSON scene, as
+  /// `FOSSSim -s` does. When a named file is not among them, missing_file() says which path the
+  /// loader asked for: the page fetches it or takes it from the student's files, adds it and
+  /// loads again.
   std::string load(const std::string& text, const std::string& name, int width, int height) {
     view_.reset();
     simulation_.reset();
     grab_.reset();
     scene_.reset();
+    missing_.clear();
+    InputFiles files = InputFiles::in_memory(added_);
     try {
-      Scene scene = load_scene_text(text, name);
+      Scene scene = std::filesystem::path(name).extension() == ".json"
+                        ? load_json_scene_text(text, name, files)
+                        : load_scene_text(text, name, files);
       check_step_count(scene.model, Limits{});
       scene_ = std::make_unique<Scene>(std::move(scene));
       width_ = width;
@@ -133,9 +148,39 @@ class WebSession {
       reset();
     } catch (const std::exception& error) {
       scene_.reset();
+      for (const std::string& path : files.paths()) {
+        if (added_.count(path) == 0) {
+          missing_ = path;
+          break;
+        }
+      }
       return error.what();
     }
     return "";
+  }
+
+  /// The first file the last load() tried to read and did not find, or "".
+  std::string missing_file() const { return missing_; }
+
+  /// Adds the file `path` (the path the loader asked for, missing_file()) with content `bytes`
+  /// for the scenes loaded next: a mesh fetched from the served suites or opened by the
+  /// student. At most Limits::max_file_bytes each (the loader's limit). Returns "" or the problem.
+  std::string add_file(const std::string& path, const std::string& bytes) {
+    if (static_cast<std::int64_t>(bytes.size()) > Limits{}.max_file_bytes) {
+      return path + ": larger than the limit of " + std::to_string(Limits{}.max_file_bytes) +
+             " bytes";
+    }
+    added_[path] = bytes;
+    return "";
+  }
+  /// Forgets the added files: a scene of another origin must not find them.
+  void clear_files() { added_.clear(); }
+
+  /// The positions of the current state, `dim` numbers per particle (2D: x y), metres.
+  std::vector<double> positions() const {
+    if (!simulation_) return {};
+    const Vector& q = simulation_->state().q;
+    return std::vector<double>(q.data(), q.data() + q.size());
   }
 
   void reset() {
@@ -287,6 +332,8 @@ class WebSession {
   std::unique_ptr<Simulation> simulation_;
   std::unique_ptr<SceneView> view_;
   std::string error_;
+  std::string missing_;
+  std::map<std::string, std::string> added_;  ///< path -> content, served to the loader
   int width_ = 640, height_ = 480;
 };
 
@@ -299,6 +346,10 @@ EMSCRIPTEN_BINDINGS(fosssim) {
   emscripten::class_<WebSession>("WebSession")
       .constructor<>()
       .function("load", &WebSession::load)
+      .function("missingFile", &WebSession::missing_file)
+      .function("addFile", &WebSession::add_file)
+      .function("clearFiles", &WebSession::clear_files)
+      .function("positions", &WebSession::positions)
       .function("reset", &WebSession::reset)
       .function("step", &WebSession::step)
       .function("finished", &WebSession::finished)

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/solvers/solver_failure.h"
+#include "core/solvers/solver_libraries.h"
 
 namespace fosssim {
 
@@ -18,16 +19,16 @@ struct CholeskyFactor::Cholmod {
   cholmod_dense* y = nullptr;  // workspace of cholmod_solve2
   cholmod_dense* e = nullptr;  // workspace of cholmod_solve2
 
-  Cholmod() { cholmod_start(&common); }
+  Cholmod() { cholmod_library().cholmod_start(&common); }
   ~Cholmod() {
     free_factor();
-    cholmod_free_dense(&x, &common);
-    cholmod_free_dense(&y, &common);
-    cholmod_free_dense(&e, &common);
-    cholmod_finish(&common);
+    cholmod_library().cholmod_free_dense(&x, &common);
+    cholmod_library().cholmod_free_dense(&y, &common);
+    cholmod_library().cholmod_free_dense(&e, &common);
+    cholmod_library().cholmod_finish(&common);
   }
   void free_factor() {
-    if (factor != nullptr) cholmod_free_factor(&factor, &common);
+    if (factor != nullptr) cholmod_library().cholmod_free_factor(&factor, &common);
   }
 };
 
@@ -95,7 +96,7 @@ void CholeskyFactor::analyze(const SparseMatrix& A) {
   factored_ = false;
   size_ = static_cast<int>(A.rows());
   cholmod_sparse view = view_triangle(A, options_.triangle);
-  cholmod_->factor = cholmod_analyze(&view, &cholmod_->common);
+  cholmod_->factor = cholmod_library().cholmod_analyze(&view, &cholmod_->common);
   if (cholmod_->factor == nullptr) throw SolverFailure("CHOLMOD: the analysis failed");
 }
 
@@ -106,7 +107,7 @@ bool CholeskyFactor::factorize(const SparseMatrix& A) {
     throw std::logic_error("CholeskyFactor::factorize: the pattern was not analysed");
   }
   cholmod_sparse view = view_triangle(A, options_.triangle);
-  const int ok = cholmod_factorize(&view, cholmod_->factor, &cholmod_->common);
+  const int ok = cholmod_library().cholmod_factorize(&view, cholmod_->factor, &cholmod_->common);
   factored_ = ok != 0 && cholmod_->common.status == CHOLMOD_OK;
   return factored_;
 }
@@ -115,7 +116,8 @@ void CholeskyFactor::solve(const double* B, double* X, int columns) const {
   if (!factored_) throw std::logic_error("CholeskyFactor::solve without a factor");
   cholmod_dense b = view_dense(B, size_, columns);
   Cholmod& c = *cholmod_;
-  if (cholmod_solve2(CHOLMOD_A, c.factor, &b, nullptr, &c.x, nullptr, &c.y, &c.e, &c.common) == 0) {
+  if (cholmod_library().cholmod_solve2(CHOLMOD_A, c.factor, &b, nullptr, &c.x, nullptr, &c.y, &c.e,
+                                       &c.common) == 0) {
     throw SolverFailure("CHOLMOD: the solve failed");
   }
   std::memcpy(X, c.x->x, sizeof(double) * static_cast<std::size_t>(size_) * columns);

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/solvers/solver_failure.h"
+#include "core/solvers/solver_libraries.h"
 
 namespace fosssim {
 
@@ -26,15 +27,16 @@ constexpr int kWorkspaceRetries = 4;
 }  // namespace
 
 /// The MUMPS library of one arithmetic: its instance structure, its real type and its entry
-/// point (MUMPS builds one library per arithmetic, from the same sources).
-template <class Struct, class Real, void (*kCall)(Struct*)>
+/// point (MUMPS builds one library per arithmetic, from the same sources), loaded on demand
+/// (core/solvers/solver_libraries.h).
+template <class Struct, class Real, auto kEntry>
 struct MumpsArithmetic {
   using Instance = Struct;
   using Scalar = Real;
-  static void call(Struct* id) { kCall(id); }
+  static void call(Struct* id) { (mumps_library().*kEntry)(id); }
 };
-using DoubleMumps = MumpsArithmetic<DMUMPS_STRUC_C, double, dmumps_c>;
-using SingleMumps = MumpsArithmetic<SMUMPS_STRUC_C, float, smumps_c>;
+using DoubleMumps = MumpsArithmetic<DMUMPS_STRUC_C, double, &MumpsLibrary::dmumps_c>;
+using SingleMumps = MumpsArithmetic<SMUMPS_STRUC_C, float, &MumpsLibrary::smumps_c>;
 
 /// MUMPS's instance, in either arithmetic: its control and information arrays, the values it
 /// factors and the factor it holds.
