@@ -334,11 +334,11 @@ class RigidBodySceneReader {
 
   /// The registry's rigid-body responses beyond the two the course's message names:
   /// "gr-lcp and gr-velocity-projection".
+  /// The rigid-body methods the course's message leaves out: "gr-lcp and gr-velocity-projection".
   static std::string other_rigid_responses() {
     std::vector<std::string_view> names;
     for (const ContactMethod* method : contact_methods()) {
-      if (method->scope.planar_rigid_bodies && method->name != "lcp" &&
-          method->name != "velocity-projection") {
+      if (method->scope.planar_rigid_bodies && !method->in_course_messages) {
         names.push_back(method->name);
       }
     }

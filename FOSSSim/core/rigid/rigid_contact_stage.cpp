@@ -88,6 +88,7 @@ constinit const ContactMethod kGrLcpContactMethod{
     .scope = kPlanarRigidBodies,
     .make_stage = &make_rigid_stage,
     .rigid_response = &kGrLcp,
+    .in_course_messages = false,
 };
 
 constinit const ContactMethod kGrVelocityProjectionContactMethod{
@@ -96,6 +97,7 @@ constinit const ContactMethod kGrVelocityProjectionContactMethod{
     .scope = kPlanarRigidBodies,
     .make_stage = &make_rigid_stage,
     .rigid_response = &kGrVelocityProjection,
+    .in_course_messages = false,
 };
 
 }  // namespace fosssim
