@@ -300,17 +300,13 @@ class RigidBodySceneReader {
     }
     scene_.model.collisions.use(*method);
     const RigidResponse& chosen = *method->rigid_response;
-    if (r.has("maxreflections")) {
-      const int limit = r.integer("maxreflections");
-      if (limit < 1) r.fail("maxreflections", "must be at least 1, found " + std::to_string(limit));
-      settings.max_reflections = limit;
-    }
-    if (r.has("maxgroupcontacts")) {
-      const int limit = r.integer("maxgroupcontacts");
-      if (limit < 1) {
-        r.fail("maxgroupcontacts", "must be at least 1, found " + std::to_string(limit));
-      }
-      settings.max_group_contacts = limit;
+    // The method's options (FOSSSim's limits; the registry entry lists them, --help shows them).
+    AttributeOptions attributes(r);
+    OptionValues& options = scene_.model.collisions.options;
+    options.read(attributes);
+    if (options.has("maxreflections")) settings.max_reflections = options.integer("maxreflections");
+    if (options.has("maxgroupcontacts")) {
+      settings.max_group_contacts = options.integer("maxgroupcontacts");
     }
     for (int b = 0; b < bodies.size(); ++b) {
       const RigidBody& body = bodies.bodies[b];

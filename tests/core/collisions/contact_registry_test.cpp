@@ -105,6 +105,23 @@ TEST(ContactRegistry, EveryEntryHasASummaryAFactoryAndDocumentedOptions) {
   }
 }
 
+TEST(ContactRegistry, TheRigidMethodsOwnLimitsAreOptionsOfTheirEntries) {
+  // FOSSSim's limits of rigid-body contact are registry options, so --help lists them and the
+  // loader reads them as every method's options: maxgroupcontacts for every rigid method,
+  // maxreflections for the ones that reflect.
+  for (const ContactMethod* method : contact_methods()) {
+    if (!method->scope.planar_rigid_bodies) continue;
+    SCOPED_TRACE(std::string(method->name));
+    const OptionValues values(method->options);
+    ASSERT_TRUE(values.has("maxgroupcontacts"));
+    EXPECT_EQ(values.integer("maxgroupcontacts"), RigidContactSettings::kDefaultMaxGroupContacts);
+    EXPECT_EQ(values.has("maxreflections"), method->rigid_response->generalized_reflections);
+    if (values.has("maxreflections")) {
+      EXPECT_EQ(values.integer("maxreflections"), RigidContactSettings::kDefaultMaxReflections);
+    }
+  }
+}
+
 TEST(ContactRegistry, TheCoursesThemeThreeMessageNamesExactlyTheEntriesThatSaySo) {
   // The course's message: "Valid options are lcp and velocity-projection."; the loader adds the
   // others after it from the entries' in_course_messages field, not from their names.
