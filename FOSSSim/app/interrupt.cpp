@@ -1,6 +1,7 @@
 #include "app/interrupt.h"
 
 #include <csignal>
+#include <cstring>
 #include <initializer_list>
 
 namespace fosssim {
@@ -38,5 +39,10 @@ void install_interrupt_handler() {
 bool interrupt_requested() { return g_signal != 0; }
 
 int interrupt_signal() { return g_signal; }
+
+std::string interrupted_at(std::int64_t step) {
+  return "interrupted by signal " + std::to_string(g_signal) + " (" + strsignal(g_signal) +
+         ") at step " + std::to_string(step);
+}
 
 }  // namespace fosssim

@@ -1,5 +1,8 @@
 #pragma once
 
+#include <cstdint>
+#include <string>
+
 namespace fosssim {
 
 /// Installs a handler that only records the request for every signal whose default action ends
@@ -18,5 +21,9 @@ bool interrupt_requested();
 
 /// The number of the first signal received, 0 if none.
 int interrupt_signal();
+
+/// What a run stopped by that signal says, headless or in the window, followed by what it
+/// kept of its outputs: "interrupted by signal 15 (Terminated) at step 12".
+std::string interrupted_at(std::int64_t step);
 
 }  // namespace fosssim

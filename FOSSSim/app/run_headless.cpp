@@ -88,8 +88,7 @@ int run_headless(const Scene& scene, const Options& options) {
       outputs.write(simulation.state(), view, nullptr, &simulation.integrator());
       const auto interrupted = [&] {
         progress.finish();
-        std::cerr << "FOSSSim: interrupted by signal " << interrupt_signal() << " ("
-                  << strsignal(interrupt_signal()) << ") at step " << simulation.state().step
+        std::cerr << "FOSSSim: " << interrupted_at(simulation.state().step)
                   << kept_note(outputs) << "\n";
         return kExitInterrupted;
       };

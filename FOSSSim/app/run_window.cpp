@@ -85,11 +85,11 @@ int run_simulation_window(const Scene& scene, const Options& options) {
   settings.grab = &grab;
   run_window(stepper, view, settings, events);
   const std::string when = " at step " + std::to_string(stepper.state().step);
-  if (interrupt_requested()) {
-    if (outputs_open)
-      close_outputs("interrupted" + when);
-    else
-      std::cerr << "FOSSSim: interrupted" << when << "\n";
+  if (interrupt_requested()) {  // the headless run's line, whether outputs were open or not
+    const std::string notes = outputs_open ? outputs.abandon() : "";
+    outputs_open = false;
+    std::cerr << "FOSSSim: " << interrupted_at(stepper.state().step)
+              << (notes.empty() ? "" : "; " + notes) << "\n";
     return kExitInterrupted;
   }
   if (outputs_open) close_outputs("the window was closed" + when);

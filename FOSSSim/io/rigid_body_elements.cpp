@@ -300,17 +300,13 @@ class RigidBodySceneReader {
     }
     scene_.model.collisions.use(*method);
     const RigidResponse& chosen = *method->rigid_response;
-    if (r.has("maxreflections")) {
-      const int limit = r.integer("maxreflections");
-      if (limit < 1) r.fail("maxreflections", "must be at least 1, found " + std::to_string(limit));
-      settings.max_reflections = limit;
-    }
-    if (r.has("maxgroupcontacts")) {
-      const int limit = r.integer("maxgroupcontacts");
-      if (limit < 1) {
-        r.fail("maxgroupcontacts", "must be at least 1, found " + std::to_string(limit));
-      }
-      settings.max_group_contacts = limit;
+    // The method's options (FOSSSim's limits; the registry entry lists them, --help shows them).
+    AttributeOptions attributes(r);
+    OptionValues& options = scene_.model.collisions.options;
+    options.read(attributes);
+    if (options.has("maxreflections")) settings.max_reflections = options.integer("maxreflections");
+    if (options.has("maxgroupcontacts")) {
+      settings.max_group_contacts = options.integer("maxgroupcontacts");
     }
     for (int b = 0; b < bodies.size(); ++b) {
       const RigidBody& body = bodies.bodies[b];
@@ -334,11 +330,11 @@ class RigidBodySceneReader {
 
   /// The registry's rigid-body responses beyond the two the course's message names:
   /// "gr-lcp and gr-velocity-projection".
+  /// The rigid-body methods the course's message leaves out: "gr-lcp and gr-velocity-projection".
   static std::string other_rigid_responses() {
     std::vector<std::string_view> names;
     for (const ContactMethod* method : contact_methods()) {
-      if (method->scope.planar_rigid_bodies && method->name != "lcp" &&
-          method->name != "velocity-projection") {
+      if (method->scope.planar_rigid_bodies && !method->in_course_messages) {
         names.push_back(method->name);
       }
     }

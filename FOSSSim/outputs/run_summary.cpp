@@ -145,6 +145,11 @@ std::string RunSummary::json() const {
       {"relative_drift",
        relative ? number((final_energy_ - initial) / std::abs(initial)) : Json(nullptr)},
       {"max_relative_drift", relative ? number(max_drift_ / std::abs(initial)) : Json(nullptr)},
+      // Defined for every run: relative where E0 can scale it, else absolute, and says which.
+      {"normalized_drift",
+       number(relative ? (final_energy_ - initial) / std::abs(initial) : final_energy_ - initial)},
+      {"max_normalized_drift", number(relative ? max_drift_ / std::abs(initial) : max_drift_)},
+      {"normalized_by", relative ? "initial" : "none"},
   };
 
   const double seconds =

@@ -42,6 +42,7 @@ json extra_data(const SceneResult& r) {
   if (r.first_divergence) {
     data["first_divergence_step"] = r.first_divergence->step;
     data["first_divergence_particle"] = r.first_divergence->particle;
+    data["first_divergence_object"] = r.first_divergence->object();  // "body" in Theme 3
   }
   return data;
 }

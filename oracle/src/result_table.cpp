@@ -26,8 +26,8 @@ std::string residual_cell(const std::optional<Residuals>& r, double Residuals::*
 std::string first_failure_cell(const SceneResult& r) {
   if (r.passed() || !r.residuals) return "-";
   if (r.first_divergence) {
-    return "step " + std::to_string(r.first_divergence->step) + ", particle " +
-           std::to_string(r.first_divergence->particle);
+    return "step " + std::to_string(r.first_divergence->step) + ", " +
+           r.first_divergence->object() + " " + std::to_string(r.first_divergence->particle);
   }
   return "accumulated only";
 }

@@ -236,6 +236,7 @@ std::optional<RigidGradeReport> grade_rigid_file(const Scene& scene, const std::
       DivergencePoint point;
       point.step = d->step;
       point.particle = d->body;
+      point.rigid_body = true;
       for (const RigidStepResiduals& s : recent) {
         if (s.step != d->step) continue;
         point.position_residual = std::max(s.maximum[kResidualX], s.maximum[kResidualTheta]);

@@ -41,12 +41,16 @@ struct Residuals {
   double max_velocity = 0.0;
 };
 
-/// The first step and particle whose residual reaches the maximum limit.
+/// The first step and particle (or rigid body) whose residual reaches the maximum limit.
 struct DivergencePoint {
   std::int64_t step = 0;
-  int particle = 0;
+  int particle = 0;  ///< the particle's index, or the body's in a Theme 3 scene (rigid_body)
   double position_residual = 0.0;
   double velocity_residual = 0.0;
+  bool rigid_body = false;  ///< particle is a rigid body's index (a Theme 3 scene)
+
+  /// What `particle` counts, for reports: "body" or "particle".
+  const char* object() const { return rigid_body ? "body" : "particle"; }
 };
 
 struct SceneResult {

@@ -60,6 +60,7 @@ json result_json(const SceneResult& r) {
     j["first_divergence"] = {
         {"step", r.first_divergence->step},
         {"particle", r.first_divergence->particle},
+        {"object", r.first_divergence->object()},
         {"position_residual", number_json(r.first_divergence->position_residual)},
         {"velocity_residual", number_json(r.first_divergence->velocity_residual)}};
   }
@@ -94,7 +95,8 @@ SceneResult result_from(const json& j) {
     const json& d = j.at("first_divergence");
     r.first_divergence = DivergencePoint{
         d.at("step").get<std::int64_t>(), d.at("particle").get<int>(),
-        number_from(d.at("position_residual")), number_from(d.at("velocity_residual"))};
+        number_from(d.at("position_residual")), number_from(d.at("velocity_residual")),
+        d.value("object", std::string("particle")) == "body"};
   }
   return r;
 }

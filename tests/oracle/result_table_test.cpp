@@ -38,6 +38,18 @@ TEST(ResultTable, ShowsEverySceneTheFailuresAndTheTotals) {
   for (unsigned char c : table) EXPECT_TRUE(c >= 0x20 || c == '\n');
 }
 
+TEST(ResultTable, AThemeThreeFailureNamesTheBody) {
+  GradingRun run = testing::sample_run();
+  for (SceneResult& r : run.results) {
+    if (r.first_divergence) r.first_divergence->rigid_body = true;
+  }
+  std::ostringstream out;
+  print_result_table(out, run);
+  // The table's cell (the failures' reasons below it are the grader's own text).
+  EXPECT_NE(out.str().find("  step 17, body 2  "), std::string::npos) << out.str();
+  EXPECT_EQ(out.str().find("  step 17, particle 2  "), std::string::npos) << out.str();
+}
+
 TEST(ResultTable, ProgressLineCountsScenes) {
   const SceneResult r = testing::sample_result("assets/a/one.xml", Verdict::kPassed);
   EXPECT_EQ(progress_line(r, 3, 12), "[ 3/12] PASS        assets/a/one.xml  (0.38 s)");

@@ -22,6 +22,8 @@ TEST(ShardResultFile, RoundTripsEveryFieldBitForBit) {
   GradingRun run = testing::sample_run();
   run.results[1].residuals->accumulated_position = 0.1 + 0.2;  // not a short decimal
   run.results[1].residuals->accumulated_velocity = -HUGE_VAL;
+  ASSERT_TRUE(run.results[1].first_divergence);
+  run.results[1].first_divergence->rigid_body = true;  // a Theme 3 scene's body
   auto parsed = parse_shard_result(shard_result_json(run), "test");
   EXPECT_EQ(parsed.candidate, run.candidate);
   EXPECT_EQ(parsed.scenes, run.scenes);
@@ -43,6 +45,10 @@ TEST(ShardResultFile, RoundTripsEveryFieldBitForBit) {
       EXPECT_EQ(std::isnan(a.residuals->max_velocity), std::isnan(b.residuals->max_velocity));
     }
     EXPECT_EQ(a.first_divergence.has_value(), b.first_divergence.has_value());
+    if (a.first_divergence && b.first_divergence) {
+      EXPECT_EQ(a.first_divergence->particle, b.first_divergence->particle);
+      EXPECT_EQ(a.first_divergence->rigid_body, b.first_divergence->rigid_body);
+    }
   }
   // The reports written from the parsed run are the same bytes.
   EXPECT_EQ(junit_xml(parsed), junit_xml(run));

@@ -91,9 +91,32 @@ TEST(RunSummary, EnergyDriftOfAHandComputedRun) {
   EXPECT_EQ(e["max_drift"].get<double>(), 8.0);
   EXPECT_EQ(e["relative_drift"].get<double>(), 8.0 / 41.0);
   EXPECT_EQ(e["max_relative_drift"].get<double>(), 8.0 / 41.0);
+  EXPECT_EQ(e["normalized_drift"].get<double>(), 8.0 / 41.0);
+  EXPECT_EQ(e["max_normalized_drift"].get<double>(), 8.0 / 41.0);
+  EXPECT_EQ(e["normalized_by"], "initial");
   EXPECT_TRUE(s["solver"]["iterations"].is_null()) << "explicit Euler does not iterate";
   EXPECT_TRUE(s["solver"]["linear_solves"].is_null());
   EXPECT_EQ(s["collisions"]["total"], 0);
+}
+
+TEST(RunSummary, DriftFromAZeroInitialEnergyIsAbsoluteAndSaysSo) {
+  // The projectile's particle at rest at height 0: E_0 = 0, and explicit Euler adds
+  // m h² g² / 2 = 1 J a step, so E_8 = 8 J.
+  const Json s = run(load_scene_text(R"(<scene>
+  <duration time="1"/>
+  <integrator type="explicit-euler" dt="0.125"/>
+  <particle m="2" px="0" py="0" vx="0" vy="0" fixed="0"/>
+  <simplegravity fx="0" fy="-8"/>
+</scene>)",
+                                     "at_rest.xml"));
+  const Json& e = s["energy"];
+  EXPECT_EQ(e["initial"].get<double>(), 0.0);
+  EXPECT_EQ(e["final"].get<double>(), 8.0);
+  EXPECT_TRUE(e["relative_drift"].is_null());
+  EXPECT_TRUE(e["max_relative_drift"].is_null());
+  EXPECT_EQ(e["normalized_drift"].get<double>(), 8.0);
+  EXPECT_EQ(e["max_normalized_drift"].get<double>(), 8.0);
+  EXPECT_EQ(e["normalized_by"], "none");
 }
 
 TEST(RunSummary, CollisionsAreCountedAsTheStepsReportedThem) {

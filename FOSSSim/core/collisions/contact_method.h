@@ -98,6 +98,10 @@ struct ContactMethod {
   /// A planar rigid-body method's response (the inelastic problem it solves, whether it
   /// reflects), which its stage runs and the loader's warnings describe; null for the others.
   const RigidResponse* rigid_response = nullptr;
+  /// True when the course's own messages list it among the valid values of its attribute;
+  /// false for methods they leave out (gr-lcp and gr-velocity-projection, which the course's
+  /// Theme 3 message does not name), which FOSSSim's messages add after the course's text.
+  bool in_course_messages = true;
 };
 
 }  // namespace fosssim

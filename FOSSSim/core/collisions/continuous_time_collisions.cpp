@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "core/collisions/course_swept.h"
 #include "core/collisions/impulses.h"
 #include "core/collisions/swept_detection.h"
 
@@ -29,15 +30,19 @@ void ContinuousTimeStage<D>::apply(const StepContext& context, State& state) {
     const Separation<D>& s = hit->separation;
     record.collisions.push_back(
         CollisionRecord{pair.kind, pair.particle, pair.other, Vector(s.n), hit->time});
-    const Impulse<D> impulse =
-        compute_impulse<D>(model, pair, s.n, s.alpha, displacement_velocity, cor);
-    for (int k = 0; k < impulse.count; ++k) {
-      const int p = impulse.particle[k];
-      state.v.template segment<D>(D * p) += impulse.dv[k];
-      state.q.template segment<D>(D * p) += h * impulse.dv[k];
-      moved.particle[moved.count++] = p;
+    if constexpr (D == 2) {
+      return respond_course_swept(model, pair, s, xs, h, cor, state);  // the course's arithmetic
+    } else {
+      const Impulse<D> impulse =
+          compute_impulse<D>(model, pair, s.n, s.alpha, displacement_velocity, cor);
+      for (int k = 0; k < impulse.count; ++k) {
+        const int p = impulse.particle[k];
+        state.v.template segment<D>(D * p) += impulse.dv[k];
+        state.q.template segment<D>(D * p) += h * impulse.dv[k];
+        moved.particle[moved.count++] = p;
+      }
+      return moved;
     }
-    return moved;
   });
   record.sync = SyncPoint{state.q, state.v, record.polynomials.size()};
 }

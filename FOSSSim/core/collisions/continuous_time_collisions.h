@@ -15,7 +15,9 @@ namespace fosssim {
 /// over the step from the start positions to the current end positions (already moved by
 /// earlier responses of the step), and when colliding recorded and answered at once: the
 /// impulse is computed from the displacement velocities (X - xs)/h at the collision time's
-/// geometry, and each free particle gets V += Δv, X += h Δv. The sync point is the end state.
+/// geometry, and each free particle gets V += Δv, X += h Δv. In 2D the normal and the response
+/// are the course's arithmetic, operation for operation (course_swept.h); 3D keeps the formulas
+/// of impulses.h. The sync point is the end state.
 template <int D>
 class ContinuousTimeStage final : public StepStage {
  public:

@@ -1,5 +1,6 @@
 #include "core/collisions/swept_detection.h"
 
+#include "core/collisions/course_swept.h"
 #include "core/collisions/intervals.h"
 
 namespace fosssim {
@@ -128,10 +129,17 @@ std::optional<SweptCollision<D>> detect_swept(const SceneModel& model, const Can
   if (!(t <= 1.0)) return std::nullopt;
   SweptCollision<D> hit;
   hit.time = t;
-  hit.separation = separation_of<D>(model, pair, [&](int p) -> Vec<D> {
-    const Vec<D> s = particle_vec<D>(xs, p);
-    return s + t * (particle_vec<D>(xe, p) - s);
-  });
+  if constexpr (D == 2) {
+    // The course's arithmetic (an edge whose time-t normal is exactly zero is no collision).
+    const auto separation = course_swept_separation(model, pair, xs, xe, t);
+    if (!separation) return std::nullopt;
+    hit.separation = *separation;
+  } else {
+    hit.separation = separation_of<D>(model, pair, [&](int p) -> Vec<D> {
+      const Vec<D> s = particle_vec<D>(xs, p);
+      return s + t * (particle_vec<D>(xe, p) - s);
+    });
+  }
   return hit;
 }
 

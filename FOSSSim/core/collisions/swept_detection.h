@@ -28,12 +28,15 @@ std::vector<Polynomial> swept_polynomials(const SceneModel& model, const Candida
 template <int D>
 struct SweptCollision {
   double time = 0.0;         ///< the first time in [0, 1] at which all polynomials are positive
-  Separation<D> separation;  ///< the shortest vector at that time (α clamped), unnormalised
+  /// The shortest vector at that time, unnormalised; alpha is the response's (clamped).
+  Separation<D> separation;
 };
 
 /// Detects `pair` over the step from xs to xe: the first time t ≤ 1 (inclusive) at which all of
-/// its polynomials are positive, and the separation at the positions xs + t Δx. Appends the
-/// pair's (stripped) polynomials to `log` when given, whether or not it collides.
+/// its polynomials are positive, and the separation at time t: in 2D in the course's arithmetic
+/// (course_swept_separation: an edge's normal from the unclamped α, and an exactly zero one is
+/// no collision), in 3D separation() at the positions xs + t Δx. Appends the pair's (stripped)
+/// polynomials to `log` when given, whether or not it collides.
 template <int D>
 std::optional<SweptCollision<D>> detect_swept(const SceneModel& model, const CandidatePair& pair,
                                               const Vector& xs, const Vector& xe,

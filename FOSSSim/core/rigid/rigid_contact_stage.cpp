@@ -1,6 +1,8 @@
 #include "core/rigid/rigid_contact_stage.h"
 
+#include <array>
 #include <iostream>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -55,6 +57,20 @@ std::unique_ptr<StepStage> make_rigid_stage(const SceneModel& model) {
   return std::make_unique<RigidContactStage>(model, *model.collisions.method);
 }
 
+// FOSSSim's limits (the course's program has none), attributes of <rigidbodycollisionhandling>;
+// the loader copies them into RigidContactSettings.
+constexpr OptionSpec kRigidMaxReflectionsOption = OptionSpec::integer(
+    "maxreflections", RigidContactSettings::kDefaultMaxReflections, 1,
+    std::numeric_limits<int>::max(),
+    "FOSSSim's limit: the most generalized reflections of one step (more is a failed step)");
+constexpr OptionSpec kRigidMaxGroupContactsOption = OptionSpec::integer(
+    "maxgroupcontacts", RigidContactSettings::kDefaultMaxGroupContacts, 1,
+    std::numeric_limits<int>::max(),
+    "FOSSSim's limit: the most contacts of one group of touching bodies, solved as one dense "
+    "problem (more is a failed step)");
+constexpr std::array kRigidInelasticOptions = {kRigidMaxGroupContactsOption};
+constexpr std::array kRigidReflectionOptions = {kRigidMaxReflectionsOption, kRigidMaxGroupContactsOption};
+
 constexpr RigidResponse kLcp{ContactSolver::kLcp, false};
 constexpr RigidResponse kVelocityProjection{ContactSolver::kVelocityProjection, false};
 constexpr RigidResponse kGrLcp{ContactSolver::kLcp, true};
@@ -68,6 +84,7 @@ constexpr RigidResponse kGrVelocityProjection{ContactSolver::kVelocityProjection
 constinit const ContactMethod kLcpContactMethod{
     .name = "lcp",
     .summary = "inelastic contact: the LCP w = Aλ + b ≥ 0, λ ≥ 0, λᵀw = 0 (ODE's Dantzig solver)",
+    .options = kRigidInelasticOptions,
     .scope = kPlanarRigidBodies,
     .make_stage = &make_rigid_stage,
     .rigid_response = &kLcp,
@@ -77,6 +94,7 @@ constinit const ContactMethod kVelocityProjectionContactMethod{
     .name = "velocity-projection",
     .summary = "inelastic contact: the closest velocities in the kinetic metric that no contact "
                "approaches",
+    .options = kRigidInelasticOptions,
     .scope = kPlanarRigidBodies,
     .make_stage = &make_rigid_stage,
     .rigid_response = &kVelocityProjection,
@@ -85,17 +103,21 @@ constinit const ContactMethod kVelocityProjectionContactMethod{
 constinit const ContactMethod kGrLcpContactMethod{
     .name = "gr-lcp",
     .summary = "elastic contact: generalized reflections, each solved as an LCP",
+    .options = kRigidReflectionOptions,
     .scope = kPlanarRigidBodies,
     .make_stage = &make_rigid_stage,
     .rigid_response = &kGrLcp,
+    .in_course_messages = false,
 };
 
 constinit const ContactMethod kGrVelocityProjectionContactMethod{
     .name = "gr-velocity-projection",
     .summary = "elastic contact: generalized reflections, each solved as a velocity projection",
+    .options = kRigidReflectionOptions,
     .scope = kPlanarRigidBodies,
     .make_stage = &make_rigid_stage,
     .rigid_response = &kGrVelocityProjection,
+    .in_course_messages = false,
 };
 
 }  // namespace fosssim

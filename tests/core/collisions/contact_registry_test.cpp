@@ -105,6 +105,40 @@ TEST(ContactRegistry, EveryEntryHasASummaryAFactoryAndDocumentedOptions) {
   }
 }
 
+TEST(ContactRegistry, TheRigidMethodsOwnLimitsAreOptionsOfTheirEntries) {
+  // FOSSSim's limits of rigid-body contact are registry options, so --help lists them and the
+  // loader reads them as every method's options: maxgroupcontacts for every rigid method,
+  // maxreflections for the ones that reflect.
+  for (const ContactMethod* method : contact_methods()) {
+    if (!method->scope.planar_rigid_bodies) continue;
+    SCOPED_TRACE(std::string(method->name));
+    const OptionValues values(method->options);
+    ASSERT_TRUE(values.has("maxgroupcontacts"));
+    EXPECT_EQ(values.integer("maxgroupcontacts"), RigidContactSettings::kDefaultMaxGroupContacts);
+    EXPECT_EQ(values.has("maxreflections"), method->rigid_response->generalized_reflections);
+    if (values.has("maxreflections")) {
+      EXPECT_EQ(values.integer("maxreflections"), RigidContactSettings::kDefaultMaxReflections);
+    }
+  }
+}
+
+TEST(ContactRegistry, TheCoursesThemeThreeMessageNamesExactlyTheEntriesThatSaySo) {
+  // The course's message: "Valid options are lcp and velocity-projection."; the loader adds the
+  // others after it from the entries' in_course_messages field, not from their names.
+  const std::set<std::string> course_names = {"lcp", "velocity-projection"};
+  int rigid = 0;
+  for (const ContactMethod* method : contact_methods()) {
+    if (!method->scope.planar_rigid_bodies) {
+      EXPECT_TRUE(method->in_course_messages) << method->name;
+      continue;
+    }
+    ++rigid;
+    EXPECT_EQ(method->in_course_messages, course_names.count(std::string(method->name)) == 1)
+        << method->name;
+  }
+  EXPECT_EQ(rigid, 4);
+}
+
 TEST(ContactRegistry, SuggestsTheMethodAMisspeltNameMeans) {
   constexpr BodyKind kParticles = BodyKind::kParticles;
   EXPECT_EQ(suggest_contact_method("hybird", kParticles), "hybrid");

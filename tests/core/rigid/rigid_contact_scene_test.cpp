@@ -295,11 +295,11 @@ TEST(RigidContactScene, MalformedCollisionHandlingIsRefusedWithTheCoursesMessage
        "and velocity-projection. Exiting. (found \"LCP\"; gr-lcp and gr-velocity-projection are "
        "valid too)"},
       {R"(<rigidbodycollisionhandling detection="all-pairs" response="gr-lcp" maxreflections="0"/>)",
-       "attribute \"maxreflections\" must be at least 1, found 0"},
+       "attribute \"maxreflections\" must be a whole number from 1 to 2147483647, found 0"},
       {R"(<rigidbodycollisionhandling detection="all-pairs" response="gr-lcp" maxreflections="x"/>)",
        "maxreflections"},
       {R"(<rigidbodycollisionhandling detection="all-pairs" response="lcp" maxgroupcontacts="0"/>)",
-       "attribute \"maxgroupcontacts\" must be at least 1, found 0"},
+       "attribute \"maxgroupcontacts\" must be a whole number from 1 to 2147483647, found 0"},
   };
   for (const Case& c : cases) {
     const std::string message = error_of(c.element);
