@@ -46,15 +46,15 @@ TestScene squeezed_cloth(double squeeze_x, double squeeze_z, const std::string& 
   return scene;
 }
 
-struct Outcome {
+struct NewtonOutcome {
   int iterations = 0;
   State state;
 };
 
 /// One step of the scene's newton from its initial state.
-Outcome newton_step(const TestScene& scene) {
+NewtonOutcome newton_step(const TestScene& scene) {
   auto newton = bound_integrator<Newton>(scene.model);
-  Outcome out{0, scene.initial};
+  NewtonOutcome out{0, scene.initial};
   newton->step(out.state);
   out.iterations = newton->last_iterations();
   return out;
@@ -111,7 +111,7 @@ TEST(NewtonTest, EveryChoiceEndsAtAnImplicitEulerStepOfLowerPotential) {
   for (const char* hessian : {"adaptive", "exact", "projected"}) {
     SCOPED_TRACE(hessian);
     const TestScene scene = squeezed_cloth(0.8, 0.8, hessian);
-    const Outcome out = newton_step(scene);
+    const NewtonOutcome out = newton_step(scene);
     const StepCheck check = check_step(scene, out.state);
     EXPECT_LT(check.residual, 1e-9);
     EXPECT_LT(check.potential_end, check.potential_start);
@@ -123,8 +123,8 @@ TEST(NewtonTest, EveryChoiceEndsAtAnImplicitEulerStepOfLowerPotential) {
 
 TEST(NewtonTest, RunsGiveTheSameBits) {
   const TestScene scene = squeezed_cloth(0.6, 1.0, "adaptive");
-  const Outcome first = newton_step(scene);
-  const Outcome second = newton_step(scene);
+  const NewtonOutcome first = newton_step(scene);
+  const NewtonOutcome second = newton_step(scene);
   EXPECT_EQ(first.iterations, second.iterations);
   EXPECT_TRUE(first.state.q == second.state.q);
   EXPECT_TRUE(first.state.v == second.state.v);
@@ -134,7 +134,7 @@ TEST(NewtonTest, SolvesStepsOfDampedSpringsByTheResidual) {
   // Flat and rippled: on the squeezed cloth the residual line search stalls.
   const TestScene scene = squeezed_cloth(1.0, 1.0, "adaptive", /*b=*/0.5);
   ASSERT_FALSE(ForceSet(scene.model).is_conservative());
-  const Outcome out = newton_step(scene);
+  const NewtonOutcome out = newton_step(scene);
   EXPECT_LT(check_step(scene, out.state).residual, 1e-9);
 }
 
