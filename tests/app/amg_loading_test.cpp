@@ -46,7 +46,7 @@ class AmgLoading : public ::testing::Test {
   ProgramResult run(const std::string& environment, const std::string& solver,
                     const std::string& output) {
     std::string command = environment + " " + testing::quoted(testing::fosssim_program()) +
-                          " -s spring.xml -o " + output;
+                          " -s spring.xml -d 0 -o " + output;
     if (!solver.empty()) command += " --integrator-option solver=" + solver;
     return testing::run_command(folder_, command);
   }
@@ -69,7 +69,7 @@ TEST_F(AmgLoading, AMultigridRunLoadsHypreAndMpi) {
   if (!amg_built_in()) GTEST_SKIP() << "built without hypre";
   const ProgramResult r = run("LD_DEBUG=libs", "amg", "out.bin");
   ASSERT_EQ(r.status, 0) << r.output();
-  EXPECT_GT(count(r.err, "calling init: /usr/lib/x86_64-linux-gnu/libHYPRE"), 0u)
+  EXPECT_GT(count(r.err, "libHYPRE-"), 0u)
       << "hypre was not loaded";
   EXPECT_GT(count(r.err, "libmpi.so"), 0u) << "OpenMPI was not loaded";
 }
