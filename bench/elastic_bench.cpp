@@ -6,13 +6,17 @@
 // OpenMP are set to one thread).
 //
 // Usage: bench_elastic [--quick] [--profile-amg] [--steps N] [--dense-max-unknowns N] [--solvers a,b,...]
+//                      [--cloths N,N,...] [--cloth-only]
 //   --quick                sheets of 10² to 10⁴ triangles, no cloth
+//   --cloths LIST          the cloths' sizes, N×N particles each (100,316)
+//   --cloth-only           the cloths only, no sheets
 //   --profile-amg          only BoomerAMG's setup, V-cycle and CG times on the sheets
 //   --steps N              steps timed after the first (5)
 //   --dense-max-unknowns N the largest system the dense baseline factors (12000: 1.2 GB)
 //   --solvers LIST         the `solver` option values compared (auto,amg)
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -185,6 +189,8 @@ struct Options {
   long dense_max_unknowns = 12000;
   long dense_full_max_unknowns = 3000;  // above: one iteration timed, times FOSSSim's count
   std::vector<std::string> solvers = {"auto", "amg"};
+  std::vector<int> cloth_sizes = {100, 316};
+  bool cloth_only = false;
 };
 
 std::vector<std::string> split(const std::string& list) {
@@ -310,7 +316,8 @@ void cloths(const Options& options) {
               options.steps);
   std::printf("| cloth | unknowns | solver | path | Krylov it/step | ms/step |\n|---|---|---|---|---|---|\n");
   std::vector<std::vector<double>> times(options.solvers.size());
-  for (const int nx : {100, 316}) {
+  const std::vector<int>& sizes = options.cloth_sizes;
+  for (const int nx : sizes) {
     for (std::size_t s = 0; s < options.solvers.size(); ++s) {
       Scene scene = damped_cloth_2d(nx, "linearized-implicit-euler");
       set_option(scene, "solver", options.solvers[s]);
@@ -321,9 +328,22 @@ void cloths(const Options& options) {
       std::fflush(stdout);
     }
   }
-  std::printf("\n| solver | 316×316 / 100×100 (9.99× the particles) |\n|---|---|\n");
-  for (std::size_t s = 0; s < options.solvers.size(); ++s)
-    std::printf("| %s | %.1f× |\n", options.solvers[s].c_str(), times[s][1] / times[s][0]);
+  if (sizes.size() < 2) return;
+  // Growth per 10× the particles between successive sizes and from the first to the last.
+  std::printf("\n| solver |");
+  for (std::size_t k = 1; k < sizes.size(); ++k) std::printf(" %d² → %d² |", sizes[k - 1], sizes[k]);
+  std::printf(" %d² → %d² |\n|---|", sizes.front(), sizes.back());
+  for (std::size_t k = 0; k < sizes.size(); ++k) std::printf("---|");
+  std::printf("\n");
+  const auto particles = [](int nx) { return static_cast<double>(nx) * nx; };
+  for (std::size_t s = 0; s < options.solvers.size(); ++s) {
+    std::printf("| %s per 10× particles |", options.solvers[s].c_str());
+    for (std::size_t k = 1; k < sizes.size(); ++k)
+      std::printf(" %.1f× |", growth_per_10x(times[s][k - 1], times[s][k], particles(sizes[k - 1]),
+                                               particles(sizes[k])));
+    std::printf(" %.1f× |\n", growth_per_10x(times[s].front(), times[s].back(),
+                                              particles(sizes.front()), particles(sizes.back())));
+  }
 }
 
 }  // namespace
@@ -348,10 +368,17 @@ int main(int argc, char** argv) {
       options.dense_max_unknowns = std::atol(argv[++k]);
     } else if (arg == "--solvers" && k + 1 < argc) {
       options.solvers = split(argv[++k]);
+    } else if (arg == "--cloths" && k + 1 < argc) {
+      options.cloth_sizes.clear();
+      for (const std::string& size : split(argv[++k]))
+        options.cloth_sizes.push_back(std::clamp(std::atoi(size.c_str()), 2, 2000));
+    } else if (arg == "--cloth-only") {
+      options.cloth_only = true;
     } else {
       std::fprintf(stderr,
                    "usage: bench_elastic [--quick] [--profile-amg] [--steps N] "
-                   "[--dense-max-unknowns N] [--solvers auto,amg,...]\n");
+                   "[--dense-max-unknowns N] [--solvers auto,amg,...] [--cloths N,N,...] "
+                   "[--cloth-only]\n");
       return 2;
     }
   }
@@ -362,8 +389,8 @@ int main(int argc, char** argv) {
       amg_profile(options);
       return 0;
     }
-    sheets(options);
-    if (!options.quick) cloths(options);
+    if (!options.cloth_only) sheets(options);
+    if (!options.quick || options.cloth_only) cloths(options);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "bench_elastic: %s\n", error.what());
     return 1;

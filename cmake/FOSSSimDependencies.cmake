@@ -56,20 +56,22 @@ if(NOT TARGET ODE::lcp)
                         INTERFACE_INCLUDE_DIRECTORIES ${ODE_LCP_INCLUDE_DIR})
 endif()
 
-if(NOT TARGET HYPRE::HYPRE)
-  # Optional: hypre's BoomerAMG (libhypre-dev), the algebraic multigrid of large step matrices
-  # (core/solvers/amg_solver.h). Debian builds hypre with OpenMPI, so it brings MPI::MPI_CXX. Left
-  # out when either is missing or FOSSSIM_USE_HYPRE is OFF (a browser build): the build works
-  # without it and StepSolver's solver="amg" then takes the sparse direct path.
-  if(NOT DEFINED FOSSSIM_USE_HYPRE OR FOSSSIM_USE_HYPRE)
-    find_path(HYPRE_INCLUDE_DIR HYPRE_parcsr_ls.h PATH_SUFFIXES hypre)
-    find_library(HYPRE_LIBRARY HYPRE)
-    find_package(MPI QUIET COMPONENTS CXX)
-    if(HYPRE_INCLUDE_DIR AND HYPRE_LIBRARY AND MPI_CXX_FOUND)
-      add_library(HYPRE::HYPRE UNKNOWN IMPORTED)
-      set_target_properties(HYPRE::HYPRE PROPERTIES IMPORTED_LOCATION ${HYPRE_LIBRARY}
-                            INTERFACE_INCLUDE_DIRECTORIES ${HYPRE_INCLUDE_DIR}
-                            INTERFACE_LINK_LIBRARIES MPI::MPI_CXX)
-    endif()
+# Optional: hypre's BoomerAMG (libhypre-dev), the algebraic multigrid of large step matrices
+# (core/solvers/amg_solver.h). Only its headers and OpenMPI's (Debian builds hypre with OpenMPI)
+# are used at build time: FOSSSim does not link hypre but opens it with dlopen when a step asks
+# for multigrid, so that other runs load neither (FOSSSim/CMakeLists.txt). Sets
+# FOSSSIM_HYPRE_INCLUDE_DIRS and FOSSSIM_HYPRE_SONAME (the file name to open) when found; left out
+# when FOSSSIM_USE_HYPRE is OFF (the browser build) or anything is missing, and solver="amg" then
+# takes the sparse direct path.
+if(NOT DEFINED FOSSSIM_HYPRE_SONAME AND (NOT DEFINED FOSSSIM_USE_HYPRE OR FOSSSIM_USE_HYPRE))
+  find_path(HYPRE_INCLUDE_DIR HYPRE_parcsr_ls.h PATH_SUFFIXES hypre)
+  find_library(HYPRE_LIBRARY HYPRE)
+  find_package(MPI QUIET COMPONENTS CXX)
+  if(HYPRE_INCLUDE_DIR AND HYPRE_LIBRARY AND MPI_CXX_FOUND)
+    # Debian's libHYPRE.so links to the versioned file, whose name is the library's soname, the
+    # name the run-time package (libhypre-2.26.0) provides.
+    file(REAL_PATH "${HYPRE_LIBRARY}" _fosssim_hypre_file)
+    get_filename_component(FOSSSIM_HYPRE_SONAME "${_fosssim_hypre_file}" NAME)
+    set(FOSSSIM_HYPRE_INCLUDE_DIRS ${HYPRE_INCLUDE_DIR} ${MPI_CXX_INCLUDE_DIRS})
   endif()
 endif()

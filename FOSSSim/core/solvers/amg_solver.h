@@ -9,8 +9,15 @@
 
 namespace fosssim {
 
-/// Whether this build has hypre (the optional dependency libhypre-dev): without it AmgSolver
-/// sets nothing up and StepSolver never takes the multigrid path.
+/// Whether this build was compiled with hypre's headers (libhypre-dev; FOSSSIM_USE_HYPRE).
+/// Loads nothing.
+bool amg_built_in();
+
+/// Whether multigrid can run: hypre is built in and its shared library (with OpenMPI) loads.
+/// The first call opens the library and starts MPI, or, when that fails, says why once on
+/// stderr; call it only when a solve wants multigrid, so that other runs load neither.
+/// FOSSSIM_HYPRE_LIBRARY in the environment names another library file to open (a missing one
+/// tests the fallback). Without it AmgSolver sets nothing up and StepSolver takes the other paths.
 bool amg_available();
 
 /// A BoomerAMG hierarchy (Henson and Yang, "BoomerAMG: a parallel algebraic multigrid solver
@@ -21,8 +28,8 @@ bool amg_available();
 /// with `components` = dim, coarsening and interpolation treat each coordinate as its own
 /// function (the "unknown approach" for systems, as for elasticity).
 ///
-/// Hypre as Debian builds it uses MPI: the first setup initialises MPI (a single process,
-/// MPI_COMM_SELF) unless the program did, and finalises it at exit.
+/// Hypre as Debian builds it uses MPI: loading it (amg_available) initialises MPI (a single
+/// process, MPI_COMM_SELF) unless the program did, and finalises it at exit.
 class AmgSolver {
  public:
   AmgSolver();

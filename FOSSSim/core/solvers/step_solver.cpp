@@ -87,9 +87,11 @@ void StepSolver::take_pattern(const SparseMatrix& A) {
   suitesparse_ = false;
   amg_skip_ = 0;
   amg_skip_length_ = 0;
-  amg_ = A.rows() > 0 && amg_available() &&
+  // amg_available() loads hypre (and OpenMPI) the first time: asked only when multigrid is wanted.
+  amg_ = A.rows() > 0 &&
          (choice_ == SolverChoice::kAmg ||
-          (choice_ == SolverChoice::kAuto && !symmetric_ && A.rows() >= kAmgFromSize));
+          (choice_ == SolverChoice::kAuto && !symmetric_ && A.rows() >= kAmgFromSize)) &&
+         amg_available();
   if (choice_ != SolverChoice::kEigen && A.rows() > 0 &&
       (choice_ == SolverChoice::kSparseDirect ||
        (kHaveSparseDirect && A.rows() >= kSparseDirectFromSize))) {

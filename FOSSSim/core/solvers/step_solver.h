@@ -90,7 +90,7 @@ struct SolveStatistics {
 ///   16 solves factor at once without trying it. The cost model counts operations, never clocks, so
 ///   the same input gives the same bits. Each library's symbolic analysis is done once per pattern.
 /// - Algebraic multigrid (SolverChoice::kAmg, and kAuto for non-symmetric A from kAmgFromSize
-///   unknowns when hypre is built in): a BoomerAMG hierarchy of A, kept across solves while it preconditions well (the
+///   unknowns when hypre can be loaded): a BoomerAMG hierarchy of A, kept across solves while it preconditions well (the
 ///   rent-or-buy rule of the factors, in iterations), preconditions conjugate gradients (A
 ///   symmetric) or GMRES (A non-symmetric) to the same residual. An indefinite A
 ///   (compressed elements) can keep them from converging: iterations are bounded, the residual
@@ -105,11 +105,12 @@ class StepSolver {
 
   /// symmetric: whether A is known to be symmetric (SceneModel::has_symmetric_jacobians).
   /// Non-symmetric systems of at least this many unknowns take algebraic multigrid under
-  /// SolverChoice::kAuto when hypre is built in; symmetric ones never (measured with
-  /// bench_elastic: on the 2D damped cloth multigrid costs 1.5× CHOLMOD's path at 2·10⁴
-  /// unknowns and 0.58× at 2·10⁵; on CST sheets 1.3× to 1.7× MUMPS's up to 10⁵: docs/solvers.md,
-  /// "Algebraic multigrid").
-  static constexpr int kAmgFromSize = 100000;
+  /// SolverChoice::kAuto when hypre can be loaded; symmetric ones never. Measured with
+  /// bench_elastic (docs/solvers.md, "Algebraic multigrid"): on the 2D damped cloth multigrid
+  /// costs 1.3× to 1.8× CHOLMOD's path at 2·10⁴ unknowns, 1.39× at 4·10⁴, 0.81× at 8·10⁴ and
+  /// 0.63× at 2·10⁵, so the crossover lies between 4·10⁴ and 8·10⁴; on CST sheets (symmetric)
+  /// MUMPS's path stays faster up to 10⁵ unknowns.
+  static constexpr int kAmgFromSize = 60000;
 
   /// symmetric: whether A is known to be symmetric (SceneModel::has_symmetric_jacobians).
   /// components: unknowns per particle, interleaved (the dimension), for multigrid's coarsening.

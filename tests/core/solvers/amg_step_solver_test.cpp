@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <cstdio>
 
 #include "core/force_set.h"
@@ -87,7 +88,7 @@ void expect_agrees_with_direct(const SparseMatrix& A, const Vector& x, const Vec
 class AmgStepSolver : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!amg_available()) GTEST_SKIP() << "built without hypre";
+    if (!amg_available()) GTEST_SKIP() << "hypre is not built in or cannot be loaded";
   }
 };
 
@@ -173,6 +174,30 @@ TEST_F(AmgStepSolver, AutoSetsUpNoMultigridForSmallSystems) {
   StepSolver solver(true, SolverChoice::kAuto, 2);
   ASSERT_TRUE(solver.solve(A, b).has_value());
   EXPECT_EQ(solver.statistics().amg_setups, 0);
+}
+
+// The rule of kAuto (docs/solvers.md): non-symmetric systems take multigrid from kAmgFromSize
+// unknowns, the sparse direct path below; symmetric ones never. Grids just below and just above
+// the threshold, damped (non-symmetric) and undamped (symmetric); every answer meets the promise.
+TEST_F(AmgStepSolver, AutoTakesMultigridForNonSymmetricSystemsFromTheThresholdOnly) {
+  const int above = static_cast<int>(std::ceil(std::sqrt(StepSolver::kAmgFromSize / 2.0)));
+  struct Case {
+    int nx;
+    double damping;
+    bool multigrid;
+  };
+  for (const Case c : {Case{above - 1, 0.5, false}, Case{above, 0.5, true}, Case{above, 0.0, false}}) {
+    const bool symmetric = c.damping == 0.0;
+    const SparseMatrix A = grid_step_matrix(c.nx, 0.5, c.damping, 0.1, 311);
+    ASSERT_EQ(A.rows() >= StepSolver::kAmgFromSize, c.nx == above) << c.nx;
+    const Vector b = Random(312).uniform_vector(static_cast<int>(A.rows()), -1.0, 1.0);
+    StepSolver solver(symmetric, SolverChoice::kAuto, 2);
+    const auto x = solver.solve(A, b);
+    ASSERT_TRUE(x.has_value()) << c.nx;
+    EXPECT_LE((A * *x - b).norm(), promise(A, *x, b)) << c.nx;
+    EXPECT_EQ(solver.statistics().amg_setups, c.multigrid ? 1 : 0) << c.nx << " " << c.damping;
+    EXPECT_EQ(solver.last_factorization() == Factorization::kAmgGmres, c.multigrid) << c.nx;
+  }
 }
 
 }  // namespace
