@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 using testing::ProgramResult;
 
 // One free particle on a damped spring to a fixed one, under gravity: 100 steps.
-constexpr const char* kSpringScene = R"(<scene>
+constexpr const char* kDampedSpringScene = R"(<scene>
   <description text="A damped spring."/>
   <duration time="1.0"/>
   <integrator type="implicit-euler" dt="0.01"/>
@@ -45,7 +45,7 @@ constexpr std::int64_t kSpringFrameBytes = 2 * 4 * 8;
 class CommandLine : public ::testing::Test {
  protected:
   void SetUp() override {
-    write("spring.xml", kSpringScene);
+    write("spring.xml", kDampedSpringScene);
     write("explode.xml", kExplodingScene);
   }
 

@@ -15,8 +15,8 @@ namespace {
 
 using fosssim::testing::ProgramResult;
 
-const std::string kFosssim = fosssim::testing::fosssim_program();
-const std::string kGenerate = fosssim::testing::fosssim_generate_program();
+const std::string kFosssimProgram = fosssim::testing::fosssim_program();
+const std::string kGenerateProgram = fosssim::testing::fosssim_generate_program();
 
 class GenerateElastic : public ::testing::Test {
  protected:
@@ -28,7 +28,8 @@ class GenerateElastic : public ::testing::Test {
   /// The trajectory bytes of a run of `scene` (a file in the folder).
   std::string trajectory(const std::string& scene) {
     const std::string out = scene + ".bin";
-    const ProgramResult r = run(kFosssim + " -s " + path(scene) + " -d 0 -q -o " + path(out));
+    const ProgramResult r =
+        run(kFosssimProgram + " -s " + path(scene) + " -d 0 -q -o " + path(out));
     EXPECT_EQ(r.status, 0) << scene << "\n" << r.output();
     return folder_.read(out);
   }
@@ -72,7 +73,7 @@ class GenerateElasticBody : public GenerateElastic, public ::testing::WithParamI
 
 TEST_P(GenerateElasticBody, WritesASceneWithTheElementsTrajectoryBytesThatGradesItself) {
   folder_.write("square.obj", kSquare);
-  const ProgramResult made = run(kGenerate + " -o " + path("generated.xml") + " " +
+  const ProgramResult made = run(kGenerateProgram + " -o " + path("generated.xml") + " " +
                                  GetParam().command + " --gravity -9.81 --duration 0.3 --dt 0.01");
   ASSERT_EQ(made.status, 0) << made.output();
   EXPECT_NE(made.out.find("wrote " + path("generated.xml") + ": "), std::string::npos);
@@ -90,8 +91,8 @@ TEST_P(GenerateElasticBody, WritesASceneWithTheElementsTrajectoryBytesThatGrades
   const std::string after_comment = text.substr(text.find("-->"));
   EXPECT_EQ(after_comment.find("<elasticbody "), std::string::npos);  // no element to expand
   EXPECT_NE(text.find("<particle m="), std::string::npos);
-  const ProgramResult grade =
-      run(kFosssim + " -s " + path("generated.xml") + " -d 0 -q -i " + path("element.xml.bin"));
+  const ProgramResult grade = run(kFosssimProgram + " -s " + path("generated.xml") +
+                                  " -d 0 -q -i " + path("element.xml.bin"));
   EXPECT_EQ(grade.status, 0) << grade.output();
   EXPECT_NE(grade.output().find("Overall success: Passed."), std::string::npos) << grade.output();
 }
@@ -100,7 +101,7 @@ INSTANTIATE_TEST_SUITE_P(Shapes, GenerateElasticBody, ::testing::ValuesIn(kBodie
                          [](const auto& info) { return std::string(info.param.name); });
 
 TEST_F(GenerateElastic, TheSceneIsOneElementPerForceWithRestValuesFromThePositions) {
-  const ProgramResult made = run(kGenerate + " -o " + path("rod.xml") +
+  const ProgramResult made = run(kGenerateProgram + " -o " + path("rod.xml") +
                                  " rod --segments 2 --length 2 --stretch 5 "
                                  "--bend 0.5 --m 1 --duration 1");
   ASSERT_EQ(made.status, 0) << made.output();
@@ -123,7 +124,7 @@ TEST_F(GenerateElastic, TheSceneIsOneElementPerForceWithRestValuesFromThePositio
 
 TEST_F(GenerateElastic, RefusesBadRequestsWithAMessageAndNoFile) {
   const auto refused = [this](const std::string& arguments, const std::string& message) {
-    const ProgramResult r = run(kGenerate + " " + arguments);
+    const ProgramResult r = run(kGenerateProgram + " " + arguments);
     EXPECT_EQ(r.status, 2) << arguments << "\n" << r.output();
     EXPECT_NE(r.err.find(message), std::string::npos) << arguments << "\n" << r.err;
     EXPECT_FALSE(folder_.exists("x.xml")) << arguments;
@@ -163,7 +164,7 @@ TEST_F(GenerateElastic, FOSSSimRefusesAPolygonOverTheCornerLimitUntilItIsRaised)
                     points +
                     "\" youngsmodulus=\"10\" poissonratio=\"0.3\" m=\"1\"/>\n"
                     "</scene>\n");
-  const std::string run_it = kFosssim + " -s " + path("polygon.xml") + " -d 0 -q -o " +
+  const std::string run_it = kFosssimProgram + " -s " + path("polygon.xml") + " -d 0 -q -o " +
                              path("p.bin") + " --max-polygon-corners ";
   const ProgramResult refused = run(run_it + "11");
   EXPECT_EQ(refused.status, 2) << refused.output();

@@ -35,7 +35,7 @@ namespace {
 namespace fs = std::filesystem;
 using fosssim::testing::ProgramResult;
 
-constexpr const char* kSpringScene = R"(<scene>
+constexpr const char* kFixedSpringScene = R"(<scene>
   <duration time="1.0"/>
   <integrator type="implicit-euler" dt="0.01"/>
   <particle m="1" px="0" py="0" vx="0" vy="0" fixed="1"/>
@@ -61,7 +61,7 @@ class LimitsAndFailures : public ::testing::Test {
             std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    write("spring.xml", kSpringScene);
+    write("spring.xml", kFixedSpringScene);
     write("cloth.xml", kClothScene);
     write("cloth.obj", kCloth);
   }
@@ -129,13 +129,13 @@ TEST_F(LimitsAndFailures, FaceCornersAndAttributesAreBounded) {
   std::string attributes;
   for (int k = 0; k < 60000; ++k) attributes += " a" + std::to_string(k) + "=\"0\"";
   const std::string edge = "<edge i=\"0\" j=\"1\"";
-  std::string scene = kSpringScene;
+  std::string scene = kFixedSpringScene;
   scene.replace(scene.find(edge), edge.size(), edge + attributes);
   write("many.xml", scene);
   expect_refused({"-s", "many.xml", "-d", "0"},
                  "many.xml:6: error: an element with more than the limit of 100 attributes (raise "
                  "it with --max-attributes N)");
-  scene = kSpringScene;
+  scene = kFixedSpringScene;
   scene.replace(scene.find(edge), edge.size(), edge + " a=\"0\"");
   write("three.xml", scene);
   expect_refused({"-s", "three.xml", "-d", "0", "--max-attributes", "2"},
@@ -153,19 +153,19 @@ TEST_F(LimitsAndFailures, NoOutputOptionReplacesTheSceneOrItsMeshes) {
                  "-o cloth.obj is the mesh file cloth.obj");
   expect_refused({"-s", "spring.xml", "-d", "0", "--energy-csv", "spring.xml"},
                  "--energy-csv spring.xml is the scene file spring.xml");
-  write("plot.svg", kSpringScene);
+  write("plot.svg", kFixedSpringScene);
   expect_refused({"-s", "plot.svg", "-d", "0", "--energy-plot", "plot.svg"},
                  "--energy-plot plot.svg is the scene file plot.svg");
-  write("movie.mp4", kSpringScene);
+  write("movie.mp4", kFixedSpringScene);
   expect_refused({"-s", "movie.mp4", "--movie", "movie.mp4"},
                  "--movie movie.mp4 is the scene file movie.mp4");
-  write("shot.png", kSpringScene);
+  write("shot.png", kFixedSpringScene);
   expect_refused({"-s", "shot.png", "-d", "1", "--window-screenshot", "shot.png"},
                  "--window-screenshot shot.png is the scene file shot.png");
-  write("pngs/frame_00000.png", kSpringScene);
+  write("pngs/frame_00000.png", kFixedSpringScene);
   expect_refused({"-s", "pngs/frame_00000.png", "-d", "0", "-g", "1", "--png-dir", "pngs"},
                  "-g pngs (written as pngs/frame_00000.png) is the scene file");
-  write("svgs/frame_00042.svg", kSpringScene);
+  write("svgs/frame_00042.svg", kFixedSpringScene);
   expect_refused({"-s", "svgs/frame_00042.svg", "-d", "0", "-m", "svgs"},
                  "-m svgs (written as svgs/frame_00042.svg) is the scene file");
 }
@@ -183,13 +183,13 @@ TEST_F(LimitsAndFailures, InputsAreComparedByIdentityNotByName) {
 
 TEST_F(LimitsAndFailures, NoOutputIsWrittenOverAnInputOnTheWay) {
   // An output is written as NAME.partial and a stopped run keeps NAME.incomplete.
-  write("out.bin.partial", kSpringScene);
+  write("out.bin.partial", kFixedSpringScene);
   expect_refused({"-s", "out.bin.partial", "-d", "0", "-o", "out.bin"},
                  "-o out.bin (written as out.bin.partial) is the scene file out.bin.partial");
-  write("e.csv.incomplete", kSpringScene);
+  write("e.csv.incomplete", kFixedSpringScene);
   expect_refused({"-s", "e.csv.incomplete", "-d", "0", "--energy-csv", "e.csv"},
                  "--energy-csv e.csv (written as e.csv.incomplete) is the scene file");
-  write("pics/frame_00001.png.partial", kSpringScene);
+  write("pics/frame_00001.png.partial", kFixedSpringScene);
   expect_refused({"-s", "pics/frame_00001.png.partial", "-d", "0", "-g", "1", "--png-dir", "pics"},
                  "-g pics (written as pics/frame_00001.png.partial) is the scene file");
 }
@@ -200,7 +200,7 @@ TEST_F(LimitsAndFailures, GradingNeverReplacesTheTrajectoryOrTheScene) {
                  "--residual-file run.bin is the trajectory to grade (-i) run.bin");
   expect_refused({"-s", "spring.xml", "-d", "0", "-i", "run.bin", "--residual-file", "spring.xml"},
                  "--residual-file spring.xml is the scene file spring.xml");
-  write("residual.txt", kSpringScene);  // the default residual file's name
+  write("residual.txt", kFixedSpringScene);  // the default residual file's name
   expect_refused({"-s", "residual.txt", "-d", "0", "-i", "run.bin"},
                  "--residual-file residual.txt is the scene file residual.txt");
 }
@@ -253,7 +253,7 @@ TEST_F(LimitsAndFailures, EveryLimitCanBeRaisedOrLowered) {
 <generate type="tetbox" nx="100" ny="100" nz="100" k="1" m="1"/></scene>)");
   expect_refused({"-s", "box.xml", "-d", "0", "--max-particles", "1000"},
                  "has 1030301 vertices, more than the limit of 1000 particles");
-  write("big.xml", "<!--" + std::string(1 << 21, '-') + "-->" + kSpringScene);
+  write("big.xml", "<!--" + std::string(1 << 21, '-') + "-->" + kFixedSpringScene);
   expect_refused({"-s", "big.xml", "-d", "0", "--max-file-size", "1"},
                  "big.xml: error: the file is more than the limit of 1 MiB (raise it with "
                  "--max-file-size N)");

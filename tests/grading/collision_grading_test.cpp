@@ -36,13 +36,13 @@ std::string scene_text(const char* type) {
 /// How a test changes step k's record before it is written (sync = the sync record).
 using Edit = std::function<void(std::int64_t step, bool sync, TrajectoryRecord& record)>;
 
-class CollisionGrading : public testing::Test {
+class CollisionGrading : public ::testing::Test {
  protected:
   void load(const char* type) {
     scene_ = std::make_unique<Scene>(load_scene_text(scene_text(type), "collide.xml"));
     path_ = (fs::temp_directory_path() /
              ("fosssim_collision_grading_" +
-              std::string(testing::UnitTest::GetInstance()->current_test_info()->name())))
+              std::string(::testing::UnitTest::GetInstance()->current_test_info()->name())))
                 .string();
   }
   void TearDown() override { fs::remove(path_); }

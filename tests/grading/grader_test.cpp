@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 
 // Three particles, one fixed, damped springs, gravity and drag, stepped by implicit Euler: every
 // kind of term the reference integrator has to reproduce.
-constexpr const char* kScene = R"(<scene>
+constexpr const char* kParticleScene = R"(<scene>
   <duration time="0.5"/>
   <integrator type="implicit-euler" dt="0.01"/>
   <particle m="1" px="0" py="0" vx="0" vy="0" fixed="1"/>
@@ -44,7 +44,7 @@ constexpr const char* kScene = R"(<scene>
 class Grader : public ::testing::Test {
  protected:
   void SetUp() override {
-    scene_ = std::make_unique<Scene>(load_scene_text(kScene, "grader.xml"));
+    scene_ = std::make_unique<Scene>(load_scene_text(kParticleScene, "grader.xml"));
     file_ = folder_ / "run.bin";
     testing::write_simulated_trajectory(*scene_, file_);
   }

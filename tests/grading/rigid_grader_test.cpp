@@ -20,7 +20,7 @@
 namespace fosssim::testing {
 namespace {
 
-const std::string kScene =
+const std::string kRigidScene =
     std::string(FOSSSIM_SOURCE_DIR) + "/assets/t3m1/mixed_explicit_all_forces.xml";
 
 /// Writes the scene's own trajectory to `path`.
@@ -49,7 +49,7 @@ void perturb(const std::string& path, std::int64_t index, double delta) {
 class RigidGraderTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    scene_ = load_scene_file(kScene);
+    scene_ = load_scene_file(kRigidScene);
     path_ = folder_ / "run.bin";
     write_run(scene_, path_);
   }

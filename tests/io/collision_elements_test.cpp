@@ -14,16 +14,16 @@
 namespace fosssim {
 namespace {
 
-constexpr const char* kHeader =
+constexpr const char* kOneParticleHeader =
     "<scene>\n"
     "<duration time=\"1\"/><integrator type=\"explicit-euler\" dt=\"0.1\"/>\n"
     "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n";
 
-Scene load(const std::string& body) {
-  return load_scene_text(kHeader + body + "</scene>\n", "c.xml");
+Scene load_with_collisions(const std::string& body) {
+  return load_scene_text(kOneParticleHeader + body + "</scene>\n", "c.xml");
 }
 
-std::string error_of(const std::string& body, const char* header = kHeader) {
+std::string collision_error(const std::string& body, const char* header = kOneParticleHeader) {
   try {
     load_scene_text(header + body + "</scene>\n", "c.xml");
   } catch (const SceneError& error) {
@@ -33,7 +33,7 @@ std::string error_of(const std::string& body, const char* header = kHeader) {
 }
 
 TEST(CollisionElements, ReadsHalfPlanesColoursAndTheCoursesDefaults) {
-  const Scene scene = load(
+  const Scene scene = load_with_collisions(
       "<halfplane px=\"0\" py=\"-1\" nx=\"0\" ny=\"2\"/>\n"
       "<halfplanecolor i=\"0\" r=\"0.5\" g=\"0.25\" b=\"1\"/>\n"
       "<collision type=\"hybrid\"/>\n");
@@ -47,21 +47,22 @@ TEST(CollisionElements, ReadsHalfPlanesColoursAndTheCoursesDefaults) {
   EXPECT_EQ(s.thickness, 0.1);
   EXPECT_EQ(s.max_iterations, 10);
   EXPECT_TRUE(scene.warnings.empty());
-  const Scene penalty = load("<collision type=\"penalty\"/>\n");
+  const Scene penalty = load_with_collisions("<collision type=\"penalty\"/>\n");
   EXPECT_EQ(penalty.model.collisions.stiffness, 100.0);
   EXPECT_EQ(penalty.model.collisions.thickness, 0.01);
   EXPECT_EQ(penalty.model.collisions.penalty_jacobian, PenaltyJacobian::kNone);
-  EXPECT_EQ(load("<collision type=\"penalty\" penalty-jacobian=\"exact\"/>\n")
+  EXPECT_EQ(load_with_collisions("<collision type=\"penalty\" penalty-jacobian=\"exact\"/>\n")
                 .model.collisions.penalty_jacobian,
             PenaltyJacobian::kExact);
-  EXPECT_EQ(load("").model.collisions.method->name, "none");
+  EXPECT_EQ(load_with_collisions("").model.collisions.method->name, "none");
 }
 
 TEST(CollisionElements, EveryRegisteredMethodLoadsWithTheDefaultsOfItsOptions) {
   for (const ContactMethod* method : contact_methods()) {
     if (!method->scope.particles || !method->scope.runs_2d) continue;
     SCOPED_TRACE(std::string(method->name));
-    const Scene scene = load("<collision type=\"" + std::string(method->name) + "\"/>\n");
+    const Scene scene =
+        load_with_collisions("<collision type=\"" + std::string(method->name) + "\"/>\n");
     const CollisionSettings& s = scene.model.collisions;
     EXPECT_EQ(s.method, method);
     EXPECT_TRUE(scene.warnings.empty());
@@ -77,7 +78,7 @@ TEST(CollisionElements, EveryRegisteredMethodLoadsWithTheDefaultsOfItsOptions) {
 }
 
 TEST(CollisionElements, OptionsGivenAreReadIntoTheSettings) {
-  const Scene scene = load(
+  const Scene scene = load_with_collisions(
       "<collision type=\"hybrid\" COR=\"0.5\" k=\"7\" thickness=\"0.2\" "
       "penalty-jacobian=\"exact\" maxiters=\"3\"/>\n");
   const CollisionSettings& s = scene.model.collisions;
@@ -89,15 +90,15 @@ TEST(CollisionElements, OptionsGivenAreReadIntoTheSettings) {
   EXPECT_EQ(s.max_iterations, 3);
   EXPECT_TRUE(scene.warnings.empty());
   // An empty penalty-jacobian is the course's none, as it always was; an empty number is not.
-  EXPECT_EQ(load("<collision type=\"penalty\" penalty-jacobian=\"\"/>\n")
+  EXPECT_EQ(load_with_collisions("<collision type=\"penalty\" penalty-jacobian=\"\"/>\n")
                 .model.collisions.penalty_jacobian,
             PenaltyJacobian::kNone);
-  EXPECT_EQ(error_of("<collision type=\"penalty\" k=\"\"/>\n"),
+  EXPECT_EQ(collision_error("<collision type=\"penalty\" k=\"\"/>\n"),
             "c.xml:4: error: <collision>: attribute \"k\" must be a finite number, found \"\"");
 }
 
 TEST(CollisionElements, MaxitersIsTruncatedTowardZeroWithAWarning) {
-  const Scene scene = load("<collision type=\"hybrid\" maxiters=\"2.7\"/>\n");
+  const Scene scene = load_with_collisions("<collision type=\"hybrid\" maxiters=\"2.7\"/>\n");
   EXPECT_EQ(scene.model.collisions.max_iterations, 2);
   ASSERT_EQ(scene.warnings.size(), 1u);
   EXPECT_EQ(scene.warnings[0],
@@ -108,7 +109,8 @@ TEST(CollisionElements, MaxitersIsTruncatedTowardZeroWithAWarning) {
 TEST(CollisionElements, MaxitersAboveTheLimitIsCappedWithAWarning) {
   // A hostile campaign's scene asked for two billion passes a step: each pass logs every pair's
   // polynomials, so the step grew its log by 40 MB a second for hours.
-  const Scene scene = load("<collision type=\"hybrid\" maxiters=\"2000000000\"/>\n");
+  const Scene scene =
+      load_with_collisions("<collision type=\"hybrid\" maxiters=\"2000000000\"/>\n");
   EXPECT_EQ(scene.model.collisions.max_iterations, 1000);
   ASSERT_EQ(scene.warnings.size(), 1u);
   EXPECT_EQ(scene.warnings[0],
@@ -117,8 +119,8 @@ TEST(CollisionElements, MaxitersAboveTheLimitIsCappedWithAWarning) {
             "docs/limits-and-failures.md, \"Hybrid passes\")");
   // The limit itself, and the course's values, are taken as they are.
   for (const int passes : {0, 1, 10, 1000}) {
-    const Scene at =
-        load("<collision type=\"hybrid\" maxiters=\"" + std::to_string(passes) + "\"/>\n");
+    const Scene at = load_with_collisions("<collision type=\"hybrid\" maxiters=\"" +
+                                          std::to_string(passes) + "\"/>\n");
     EXPECT_EQ(at.model.collisions.max_iterations, passes);
     EXPECT_TRUE(at.warnings.empty()) << passes;
   }
@@ -126,8 +128,8 @@ TEST(CollisionElements, MaxitersAboveTheLimitIsCappedWithAWarning) {
 
 // Issue 24: the cap is a limit like the others, which the command line raises or lowers.
 TEST(CollisionElements, TheLimitOfHybridPassesCanBeRaisedAndLowered) {
-  const std::string text =
-      std::string(kHeader) + "<collision type=\"hybrid\" maxiters=\"5000\"/>\n</scene>\n";
+  const std::string text = std::string(kOneParticleHeader) +
+                           "<collision type=\"hybrid\" maxiters=\"5000\"/>\n</scene>\n";
   Limits raised;
   raised.max_hybrid_passes = 10000;
   InputFiles more(raised);
@@ -145,19 +147,19 @@ TEST(CollisionElements, TheLimitOfHybridPassesCanBeRaisedAndLowered) {
       << capped.warnings[0];
 }
 
-struct Case {
+struct BadContactCase {
   const char* name;
   const char* body;  // its first line is line 4
   const char* message;
 };
 
-class BadContactElement : public testing::TestWithParam<Case> {};
+class BadContactElement : public ::testing::TestWithParam<BadContactCase> {};
 
 TEST_P(BadContactElement, NamesFileLineElementAndProblem) {
-  EXPECT_EQ(error_of(GetParam().body), GetParam().message);
+  EXPECT_EQ(collision_error(GetParam().body), GetParam().message);
 }
 
-const Case kCases[] = {
+const BadContactCase kBadContactCases[] = {
     {"HalfPlaneAttributeMissing", "<halfplane px=\"0\" py=\"0\" nx=\"0\"/>\n",
      "c.xml:4: error: <halfplane> 0: attribute \"ny\" is missing"},
     {"HalfPlaneAttributeNotANumber", "<halfplane px=\"a\" py=\"0\" nx=\"0\" ny=\"1\"/>\n",
@@ -206,7 +208,7 @@ const Case kCases[] = {
      "dim=\"3\">)"},
 };
 
-INSTANTIATE_TEST_SUITE_P(Cases, BadContactElement, testing::ValuesIn(kCases),
+INSTANTIATE_TEST_SUITE_P(Cases, BadContactElement, ::testing::ValuesIn(kBadContactCases),
                          [](const auto& info) { return std::string(info.param.name); });
 
 constexpr const char* kHeader3D =
@@ -235,22 +237,22 @@ TEST(CollisionElements, ReadsSpheresAndTheirColoursIn3D) {
 }
 
 TEST(CollisionElements, BadSpheresNameFileLineAndProblem) {
-  EXPECT_EQ(error_of("<sphere px=\"0\" py=\"0\" pz=\"0\" radius=\"0\"/>\n", kHeader3D),
+  EXPECT_EQ(collision_error("<sphere px=\"0\" py=\"0\" pz=\"0\" radius=\"0\"/>\n", kHeader3D),
             "c.xml:4: error: <sphere> 0: attribute \"radius\" must be positive, found 0");
-  EXPECT_EQ(error_of("<sphere px=\"0\" py=\"0\" radius=\"1\"/>\n", kHeader3D),
+  EXPECT_EQ(collision_error("<sphere px=\"0\" py=\"0\" radius=\"1\"/>\n", kHeader3D),
             "c.xml:4: error: <sphere> 0: attribute \"pz\" is missing");
-  EXPECT_EQ(error_of("<sphere px=\"0\" py=\"0\" pz=\"0\" radius=\"1\"/>\n"
-                     "<spherecolor i=\"1\" r=\"0\" g=\"0\" b=\"0\"/>\n",
-                     kHeader3D),
+  EXPECT_EQ(collision_error("<sphere px=\"0\" py=\"0\" pz=\"0\" radius=\"1\"/>\n"
+                            "<spherecolor i=\"1\" r=\"0\" g=\"0\" b=\"0\"/>\n",
+                            kHeader3D),
             "c.xml:5: error: <spherecolor> 0: attribute \"i\" refers to sphere 1, but the scene "
             "has 1 sphere (valid indices are 0 to 0)");
-  EXPECT_EQ(error_of("<spherecolor i=\"0\" r=\"0\" g=\"0\" b=\"0\"/>\n", kHeader3D),
+  EXPECT_EQ(collision_error("<spherecolor i=\"0\" r=\"0\" g=\"0\" b=\"0\"/>\n", kHeader3D),
             "c.xml:4: error: <spherecolor> 0: attribute \"i\" refers to sphere 0, but the scene "
             "has no spheres");
 }
 
 TEST(CollisionElements, ProbableMistakesAreWarnedAbout) {
-  const Scene scene = load(
+  const Scene scene = load_with_collisions(
       "<halfplane px=\"0\" py=\"0\" nx=\"0\" ny=\"0\"/>\n"
       "<collision type=\"penalty\" COR=\"1.5\" k=\"-1\" thickness=\"-0.1\"/>\n"
       "<collision type=\"simple\"/>\n");

@@ -19,13 +19,13 @@ namespace fosssim {
 namespace {
 
 /// A valid header (lines 1-2), so that the element under test is on line 3.
-constexpr const char* kHeader =
+constexpr const char* kBodyHeader =
     "<scene>\n"
     "<duration time=\"0.01\"/><integrator type=\"implicit-euler\" dt=\"0.01\"/>\n";
 
 Scene load_body(const std::string& element, const std::string& more = "",
                 const std::string& name = "ok.xml") {
-  return load_scene_text(std::string(kHeader) + element + "\n" + more + "</scene>\n", name);
+  return load_scene_text(std::string(kBodyHeader) + element + "\n" + more + "</scene>\n", name);
 }
 
 std::string body_error(const std::string& element) {
@@ -215,14 +215,14 @@ TEST(ElasticBodyElement, IsRefusedInA3DSceneAndOverTheParticleLimit) {
   Limits limits;
   limits.max_particles = 10;
   InputFiles small(limits);
-  EXPECT_EQ(load_error(std::string(kHeader) +
+  EXPECT_EQ(load_error(std::string(kBodyHeader) +
                            "<particle m=\"1\" px=\"9\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
                            "<elasticbody shape=\"rod\" segments=\"9\" stretch=\"1\" m=\"1\"/>\n"
                            "</scene>\n",
                        "bad.xml", small),
             "bad.xml:4: error: <elasticbody> 0: its 10 vertices bring the scene to 11 particles, "
             "more than the limit of 10 particles (raise it with --max-particles N)");
-  EXPECT_EQ(load_error(std::string(kHeader) +
+  EXPECT_EQ(load_error(std::string(kBodyHeader) +
                            "<elasticbody shape=\"sheet\" nx=\"9\" ny=\"9\" youngsmodulus=\"1\" "
                            "poissonratio=\"0\" m=\"1\"/>\n</scene>\n",
                        "bad.xml", small),
@@ -236,7 +236,7 @@ class ElasticBodyObj : public ::testing::Test {
   std::string error_of(const std::string& obj) {
     folder_.write("mesh.obj", obj);
     const std::string scene = folder_.write(
-        "scene.xml", std::string(kHeader) +
+        "scene.xml", std::string(kBodyHeader) +
                          "<elasticbody shape=\"obj\" file=\"mesh.obj\" youngsmodulus=\"10\" "
                          "poissonratio=\"0.2\" totalmass=\"1\"/>\n</scene>\n");
     try {
@@ -261,7 +261,7 @@ class ElasticBodyObj : public ::testing::Test {
 TEST_F(ElasticBodyObj, ReadsPlanarTrianglesWithOrWithoutZ) {
   folder_.write("mesh.obj", "v 0 0\nv 1 0 0\nv 1 1\nv 0 1 0\nf 1 2 3\nf 1 4 3\n");
   const std::string path = folder_.write(
-      "scene.xml", std::string(kHeader) +
+      "scene.xml", std::string(kBodyHeader) +
                        "<elasticbody shape=\"obj\" file=\"mesh.obj\" youngsmodulus=\"10\" "
                        "poissonratio=\"0.2\" totalmass=\"1\"/>\n</scene>\n");
   const Scene scene = load_scene_file(path);

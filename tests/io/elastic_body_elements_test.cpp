@@ -17,7 +17,7 @@ namespace fosssim {
 namespace {
 
 /// A valid header (lines 1-2), so that the line of the element under test is predictable.
-constexpr const char* kHeader =
+constexpr const char* kElasticHeader =
     "<scene>\n"
     "<duration time=\"0.01\"/><integrator type=\"symplectic-euler\" dt=\"0.01\"/>\n";
 constexpr const char* kThreeParticles =
@@ -25,7 +25,7 @@ constexpr const char* kThreeParticles =
     "<particle m=\"1\" px=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
     "<particle m=\"1\" px=\"1\" py=\"1\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n";
 
-std::string error_of(const std::string& xml) {
+std::string elastic_scene_error(const std::string& xml) {
   try {
     load_scene_text(xml, "bad.xml");
   } catch (const SceneError& error) {
@@ -36,27 +36,28 @@ std::string error_of(const std::string& xml) {
 
 /// The error of a scene of three particles (lines 3-5) and `element` on line 6.
 std::string element_error(const std::string& element) {
-  return error_of(std::string(kHeader) + kThreeParticles + element + "\n</scene>\n");
+  return elastic_scene_error(std::string(kElasticHeader) + kThreeParticles + element +
+                             "\n</scene>\n");
 }
 
 Scene load_with(const std::string& element) {
-  return load_scene_text(std::string(kHeader) + kThreeParticles + element + "\n</scene>\n",
+  return load_scene_text(std::string(kElasticHeader) + kThreeParticles + element + "\n</scene>\n",
                          "ok.xml");
 }
 
-struct Case {
+struct MalformedElasticCase {
   const char* name;
   const char* element;
   const char* message;
 };
 
-class MalformedElasticElement : public ::testing::TestWithParam<Case> {};
+class MalformedElasticElement : public ::testing::TestWithParam<MalformedElasticCase> {};
 
 TEST_P(MalformedElasticElement, NamesFileLineElementAndProblem) {
   EXPECT_EQ(element_error(GetParam().element), GetParam().message);
 }
 
-const Case kCases[] = {
+const MalformedElasticCase kMalformedElasticCases[] = {
     {"SpringMissingIndex", R"(<elasticbodyspringforce i2="1" alpha="1" l0="1"/>)",
      "bad.xml:6: error: <elasticbodyspringforce> 0: attribute \"i1\" is missing"},
     {"SpringIndexOutOfRange", R"(<elasticbodyspringforce i1="0" i2="7" alpha="1" l0="1"/>)",
@@ -119,21 +120,23 @@ const Case kCases[] = {
      "found \"abc\""},
 };
 
-INSTANTIATE_TEST_SUITE_P(ElasticBodyElements, MalformedElasticElement, ::testing::ValuesIn(kCases),
+INSTANTIATE_TEST_SUITE_P(ElasticBodyElements, MalformedElasticElement,
+                         ::testing::ValuesIn(kMalformedElasticCases),
                          [](const auto& info) { return std::string(info.param.name); });
 
 TEST(ElasticBodyElements, RejectsCoincidentParticles) {
   const std::string coincident =
-      std::string(kHeader) + kThreeParticles +
+      std::string(kElasticHeader) + kThreeParticles +
       "<particle m=\"1\" px=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n";
-  EXPECT_EQ(error_of(coincident + R"(<elasticbodyspringforce i1="1" i2="3" alpha="1" l0="1"/>)" +
-                     "\n</scene>\n"),
+  EXPECT_EQ(elastic_scene_error(coincident +
+                                R"(<elasticbodyspringforce i1="1" i2="3" alpha="1" l0="1"/>)" +
+                                "\n</scene>\n"),
             "bad.xml:7: error: <elasticbodyspringforce> 0: particles 1 and 3 start at the same "
             "point, where the spring's direction is undefined");
   EXPECT_EQ(
-      error_of(coincident +
-               R"(<elasticbodybendingforce i1="0" i2="1" i3="3" alpha="1" theta0="0"/>)" +
-               "\n</scene>\n"),
+      elastic_scene_error(
+          coincident + R"(<elasticbodybendingforce i1="0" i2="1" i3="3" alpha="1" theta0="0"/>)" +
+          "\n</scene>\n"),
       "bad.xml:7: error: <elasticbodybendingforce> 0: particles 1 and 3 start at the same point: "
       "the hinge's edge has no direction");
   // A CST whose particles coincide is fine when its rest corners are given and distinct.
@@ -153,7 +156,7 @@ TEST(ElasticBodyElements, BendingIsRefusedInThreeDimensions) {
       "<particle m=\"1\" px=\"1\" py=\"1\" pz=\"0\" vx=\"0\" vy=\"0\" vz=\"0\" fixed=\"0\"/>\n"
       "<elasticbodybendingforce i1=\"0\" i2=\"1\" i3=\"2\" alpha=\"1\" theta0=\"0\"/>\n"
       "</scene>\n";
-  EXPECT_EQ(error_of(scene),
+  EXPECT_EQ(elastic_scene_error(scene),
             "bad.xml:6: error: <elasticbodybendingforce> 0: a bending force needs a plane for its "
             "signed angle, so it exists in 2D scenes only (this scene has dim=\"3\")");
 }

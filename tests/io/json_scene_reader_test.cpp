@@ -73,7 +73,7 @@ TEST(JsonScene, IsChosenByTheSceneLoaderForJsonFiles) {
   EXPECT_EQ(scene.model.integrator.method->name, "local-global");
 }
 
-struct Bad {
+struct BadJsonScene {
   const char* json;
   int line;
   const char* problem;
@@ -83,7 +83,7 @@ TEST(JsonScene, RejectsBadScenesNamingTheProblem) {
   testing::ScratchFolder dir;
   dir.write("square.obj", kSquare);
   dir.write("lines.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n");
-  const Bad cases[] = {
+  const BadJsonScene cases[] = {
       {R"({"k": 1})", 1, "the required key \"obj\""},
       {R"({"obj": "square.obj"})", 1, "the required key \"k\" is missing"},
       {R"({"obj": "square.obj", "k": "stiff"})", 1, "\"k\" must be a number, found \"stiff\""},
@@ -113,7 +113,7 @@ TEST(JsonScene, RejectsBadScenesNamingTheProblem) {
       {R"({"obj": "square.obj", "k": 1, "duraton": 2})", 1,
        "unknown key \"duraton\" (did you mean \"duration\"?)"},
   };
-  for (const Bad& c : cases) {
+  for (const BadJsonScene& c : cases) {
     const std::string path = dir.write("bad.json", c.json);
     const SceneError scene_error = thrown_by<SceneError>([&] { load_json_scene_file(path); });
     EXPECT_EQ(scene_error.file(), path);

@@ -37,7 +37,7 @@ TEST(MeditReader, ReadsVerticesAndTetsAndSkipsOtherSections) {
   EXPECT_TRUE(mesh.faces.empty());
 }
 
-struct Malformed {
+struct MalformedMedit {
   std::string text;
   int line;
   const char* problem;
@@ -49,7 +49,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 
 TEST(MeditReader, RejectsMalformedFilesWithLineNumbers) {
   const std::string good = kTwoTets;
-  const Malformed cases[] = {
+  const MalformedMedit cases[] = {
       {replaced(good, "Dimension\n3", "Dimension\n2"), 4, "only 3D meshes are supported"},
       {replaced(good, "1 0 0 1\n", "1 zero 0 1\n"), 8,
        "coordinate y of vertex 2 must be a finite number, found \"zero\""},
@@ -67,7 +67,7 @@ TEST(MeditReader, RejectsMalformedFilesWithLineNumbers) {
        "the file ends where vertex 1 of tetrahedron 2 should be"},
       {replaced(good, "Tetrahedra 2\n1 2 3 4 0\n2 3 4 5 0\n", ""), 0, "no Tetrahedra section"},
   };
-  for (const Malformed& c : cases) {
+  for (const MalformedMedit& c : cases) {
     const SceneError mesh_error =
         thrown_by<SceneError>([&] { read_medit_text(c.text, "bad.mesh"); });
     EXPECT_EQ(mesh_error.line(), c.line) << mesh_error.what();

@@ -139,13 +139,13 @@ TEST(MeshElements, MeshesInA2DSceneMustLieInThePlane) {
   EXPECT_NE(bad_error.problem().find("the scene is 2D"), std::string::npos) << bad_error.what();
 }
 
-struct Bad {
+struct BadMeshElement {
   const char* element;
   const char* problem;
 };
 
 TEST(MeshElements, RejectBadDeclarationsWithTheirLine) {
-  const Bad cases[] = {
+  const BadMeshElement cases[] = {
       {R"(<generate type="donut" k="1" m="1"/>)", "unknown generator \"donut\""},
       {R"(<generate type="cloth" nx="1" ny="4" k="1" m="1"/>)",
        "attribute \"nx\" must be at least 2, found 1"},
@@ -172,7 +172,7 @@ TEST(MeshElements, RejectBadDeclarationsWithTheirLine) {
        "only <pin> may appear"},
       {R"(<clothmesh file="absent.obj" k="1" m="1"/>)", "cannot open the file"},
   };
-  for (const Bad& c : cases) {
+  for (const BadMeshElement& c : cases) {
     const std::string text = std::string(
                                  "<scene dim=\"3\">\n<duration time=\"1\"/>\n<integrator "
                                  "type=\"local-global\" dt=\"0.01\"/>\n") +

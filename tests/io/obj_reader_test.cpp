@@ -41,14 +41,14 @@ TEST(ObjReader, AcceptsFacesBeforeTheirVerticesAndVertexColours) {
   EXPECT_EQ(mesh.faces.size(), 1u);
 }
 
-struct Malformed {
+struct MalformedObj {
   const char* text;
   int line;
   const char* problem;
 };
 
 TEST(ObjReader, RejectsMalformedLinesWithTheirNumbers) {
-  const Malformed cases[] = {
+  const MalformedObj cases[] = {
       {"v 0 0 0\nv 1 0\n", 2, "a vertex needs 3 coordinates"},
       {"v 0 0 0\nv 1 zero 0\n", 2, "vertex coordinate \"zero\" is not a finite number"},
       {"v 0 0 nan\n", 1, "\"nan\" is not a finite number"},
@@ -71,7 +71,7 @@ TEST(ObjReader, RejectsMalformedLinesWithTheirNumbers) {
       {"v 0 0 0\nv 1 0 0\nl 1/0 2\n", 3, "corner \"1/0\" is not"},
       {"v 0 0 0\nv 1 0 0\nl 1//2x 2\n", 3, "corner \"1//2x\" is not"},
   };
-  for (const Malformed& c : cases) {
+  for (const MalformedObj& c : cases) {
     const SceneError mesh_error = thrown_by<SceneError>([&] { read_obj_text(c.text, "bad.obj"); });
     EXPECT_EQ(mesh_error.line(), c.line) << c.text;
     EXPECT_NE(mesh_error.problem().find(c.problem), std::string::npos) << mesh_error.what();

@@ -20,7 +20,7 @@
 namespace fosssim::testing {
 namespace {
 
-Scene load(const std::string& xml) { return load_scene_text(xml, "rigid.xml"); }
+Scene load_rigid(const std::string& xml) { return load_scene_text(xml, "rigid.xml"); }
 
 /// Worked example A of the course's program: explicit Euler, gravity and a spring to a world
 /// point, one step of h = 0.1.
@@ -55,7 +55,7 @@ constexpr const char* kExampleB = R"(<scene>
 </scene>)";
 
 TEST(RigidBodyScene, ReadsBodiesAndMassProperties) {
-  const Scene scene = load(kExampleA);
+  const Scene scene = load_rigid(kExampleA);
   const SceneModel& model = scene.model;
   ASSERT_TRUE(model.rigid_bodies);
   EXPECT_EQ(model.dim, 3);
@@ -74,7 +74,7 @@ TEST(RigidBodyScene, ReadsBodiesAndMassProperties) {
 }
 
 TEST(RigidBodyScene, WorkedExampleAExplicitEulerBitForBit) {
-  const Scene scene = load(kExampleA);
+  const Scene scene = load_rigid(kExampleA);
   const ForceSet forces(scene.model);
   const Vector q0 = rigid_quantities_block(forces, scene.initial.q, scene.initial.v);
   // P (2, 0), L_cm −0.5, L_spin 3.5, T_cm 0.5, T_spin 1.75, U.
@@ -92,7 +92,7 @@ TEST(RigidBodyScene, WorkedExampleAExplicitEulerBitForBit) {
 }
 
 TEST(RigidBodyScene, WorkedExampleBSymplecticEulerSpringAndWindBitForBit) {
-  const Scene scene = load(kExampleB);
+  const Scene scene = load_rigid(kExampleB);
   const auto& bodies = scene.model.rigid_bodies->bodies;
   EXPECT_EQ(bodies[0].mass, 4.0);
   EXPECT_EQ(bodies[1].mass, 4.0);
@@ -131,7 +131,7 @@ TEST(RigidBodyScene, RepeatedHullAttributesAreNumberedKeepingLines) {
 }
 
 /// A one-body scene with `body` as its <rigidbody> element and `extra` elements.
-std::string scene_with(const std::string& body, const std::string& extra = "") {
+std::string scene_with_bodies(const std::string& body, const std::string& extra = "") {
   return R"(<scene>
   <simtype type="rigid-body"/>
   <duration time="1"/>
@@ -144,7 +144,7 @@ std::string scene_with(const std::string& body, const std::string& extra = "") {
 }
 
 TEST(RigidBodyScene, AcceptsTheCoursesNumberQuirksWithWarnings) {
-  const Scene scene = load(scene_with(
+  const Scene scene = load_rigid(scene_with_bodies(
       R"(<rigidbody p="0" p="1.7" p="2" vx="-1abc" vy="1.5e0xyz" omega="0"r="0.2" fixed="0.5"/>)",
       R"(<rigidbodywindforce beta="1" fx="0" fy="0" pointsperedge="2.5"/>)"));
   const RigidBody& body = scene.model.rigid_bodies->bodies[0];
@@ -164,7 +164,7 @@ TEST(RigidBodyScene, AcceptsTheCoursesNumberQuirksWithWarnings) {
 }
 
 TEST(RigidBodyScene, WarnsAboutCounterClockwiseHullsAndNonPositiveMasses) {
-  const Scene scene = load(R"(<scene>
+  const Scene scene = load_rigid(R"(<scene>
   <simtype type="rigid-body"/>
   <duration time="1"/>
   <rigidbodyintegrator type="explicit-euler" dt="0.01"/>
@@ -189,38 +189,38 @@ struct BadScene {
 
 TEST(RigidBodyScene, RefusesBadInputNamingFileLineAndElement) {
   const std::vector<BadScene> cases = {
-      {scene_with(R"(<rigidbody p="0" vx="0" vy="0" omega="0" r="0.1"/>)"), 8, "<rigidbody> 0",
-       "at least 2 hull vertices"},
-      {scene_with(R"(<rigidbody p="0" p="3" vx="0" vy="0" omega="0" r="0.1"/>)"), 8,
+      {scene_with_bodies(R"(<rigidbody p="0" vx="0" vy="0" omega="0" r="0.1"/>)"), 8,
+       "<rigidbody> 0", "at least 2 hull vertices"},
+      {scene_with_bodies(R"(<rigidbody p="0" p="3" vx="0" vy="0" omega="0" r="0.1"/>)"), 8,
        "<rigidbody> 0", "refers to vertex 3"},
-      {scene_with(R"(<rigidbody p="0" p="-1" vx="0" vy="0" omega="0" r="0.1"/>)"), 8,
+      {scene_with_bodies(R"(<rigidbody p="0" p="-1" vx="0" vy="0" omega="0" r="0.1"/>)"), 8,
        "<rigidbody> 0", "refers to vertex -1"},
-      {scene_with(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0"/>)"), 8, "<rigidbody> 0",
-       "\"r\" must be positive"},
-      {scene_with(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1" fixed="2"/>)"), 8,
-       "<rigidbody> 0", "\"fixed\" must be 0 or 1"},
-      {scene_with(R"(<rigidbody p="0" p="1" vx="abc" vy="0" omega="0" r="0.1"/>)"), 8,
+      {scene_with_bodies(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0"/>)"), 8,
+       "<rigidbody> 0", "\"r\" must be positive"},
+      {scene_with_bodies(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1" fixed="2"/>)"),
+       8, "<rigidbody> 0", "\"fixed\" must be 0 or 1"},
+      {scene_with_bodies(R"(<rigidbody p="0" p="1" vx="abc" vy="0" omega="0" r="0.1"/>)"), 8,
        "<rigidbody> 0", "\"vx\" must be a number"},
-      {scene_with(
+      {scene_with_bodies(
            R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1"/>)",
            R"(<rigidbodyspringforce i="0" pix="0" piy="0" j="1" pjx="0" pjy="0" k="1" l0="0"/>)"),
        9, "<rigidbodyspringforce> 0", "refers to body 1"},
-      {scene_with(
+      {scene_with_bodies(
            R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1"/>)",
            R"(<rigidbodyspringforce i="-2" pix="0" piy="0" j="0" pjx="0" pjy="0" k="1" l0="0"/>)"),
        9, "<rigidbodyspringforce> 0", "refers to body -2"},
-      {scene_with(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1"/>)",
-                  R"(<rigidbodywindforce beta="-1" fx="0" fy="0" pointsperedge="2"/>)"),
+      {scene_with_bodies(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1"/>)",
+                         R"(<rigidbodywindforce beta="-1" fx="0" fy="0" pointsperedge="2"/>)"),
        9, "<rigidbodywindforce> 0", "\"beta\" must be non-negative"},
-      {scene_with(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1"/>)",
-                  R"(<rigidbodywindforce beta="1" fx="0" fy="0" pointsperedge="1"/>)"),
+      {scene_with_bodies(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1"/>)",
+                         R"(<rigidbodywindforce beta="1" fx="0" fy="0" pointsperedge="1"/>)"),
        9, "<rigidbodywindforce> 0", "at least 2"},
-      {scene_with(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1"/>)",
-                  R"(<rigidbodycolor body="1" r="0" g="0" b="0"/>)"),
+      {scene_with_bodies(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1"/>)",
+                         R"(<rigidbodycolor body="1" r="0" g="0" b="0"/>)"),
        9, "<rigidbodycolor> 0", "refers to body 1"},
   };
   for (const BadScene& c : cases) {
-    const SceneError error = thrown_by<SceneError>([&] { load(c.xml); });
+    const SceneError error = thrown_by<SceneError>([&] { load_rigid(c.xml); });
     EXPECT_EQ(error.line(), c.line) << error.what();
     EXPECT_NE(std::string(error.what()).find(c.element), std::string::npos) << error.what();
     EXPECT_NE(std::string(error.what()).find(c.problem), std::string::npos) << error.what();
@@ -229,26 +229,28 @@ TEST(RigidBodyScene, RefusesBadInputNamingFileLineAndElement) {
 }
 
 TEST(RigidBodyScene, RefusesOtherIntegratorsAndSimtypes) {
-  std::string xml = scene_with(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1"/>)");
+  std::string xml =
+      scene_with_bodies(R"(<rigidbody p="0" p="1" vx="0" vy="0" omega="0" r="0.1"/>)");
   const std::string forward = xml;
   std::string aliased = xml;
   aliased.replace(aliased.find("symplectic-euler"), 16, "forward-backward-euler");
-  EXPECT_NE(std::string(thrown_by<SceneError>([&] { load(aliased); }).what())
+  EXPECT_NE(std::string(thrown_by<SceneError>([&] { load_rigid(aliased); }).what())
                 .find("explicit-euler or symplectic-euler"),
             std::string::npos);
   std::string other = xml;
   other.replace(other.find("rigid-body"), 10, "soft-body");
-  EXPECT_NE(std::string(thrown_by<SceneError>([&] { load(other); }).what()).find("\"soft-body\""),
-            std::string::npos);
+  EXPECT_NE(
+      std::string(thrown_by<SceneError>([&] { load_rigid(other); }).what()).find("\"soft-body\""),
+      std::string::npos);
   std::string without = xml;
   without.erase(without.find("<simtype"), std::strlen("<simtype type=\"rigid-body\"/>"));
-  EXPECT_NE(std::string(thrown_by<SceneError>([&] { load(without); }).what())
+  EXPECT_NE(std::string(thrown_by<SceneError>([&] { load_rigid(without); }).what())
                 .find("<simtype type=\"rigid-body\"/>"),
             std::string::npos);
 }
 
 TEST(RigidTrajectory, LayoutSizeAndRoundTrip) {
-  const Scene scene = load(kExampleB);
+  const Scene scene = load_rigid(kExampleB);
   ScratchFolder folder;
   const std::string path = folder / "b.bin";
   {

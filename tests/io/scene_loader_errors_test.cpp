@@ -17,7 +17,7 @@ namespace fosssim {
 namespace {
 
 /// A valid header (line 1-2) so that the line of the element under test is predictable.
-constexpr const char* kHeader =
+constexpr const char* kValidHeader =
     "<scene>\n"
     "<duration time=\"1\"/><integrator type=\"explicit-euler\" dt=\"0.1\"/>\n";
 constexpr const char* kTwoParticles =
@@ -25,7 +25,7 @@ constexpr const char* kTwoParticles =
     "<particle m=\"1\" px=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
     "<edge i=\"0\" j=\"1\"/>\n";
 
-std::string error_of(const std::string& xml) {
+std::string loading_error(const std::string& xml) {
   try {
     load_scene_text(xml, "bad.xml");
   } catch (const SceneError& error) {
@@ -34,20 +34,20 @@ std::string error_of(const std::string& xml) {
   return "(loaded without error)";
 }
 
-struct Case {
+struct MalformedSceneCase {
   const char* name;
   std::string body;  // after the header; its first line is line 3
   const char* message;
 };
 
-class MalformedScene : public ::testing::TestWithParam<Case> {};
+class MalformedScene : public ::testing::TestWithParam<MalformedSceneCase> {};
 
 TEST_P(MalformedScene, NamesFileLineElementAndProblem) {
-  const Case& c = GetParam();
-  EXPECT_EQ(error_of(kHeader + c.body + "</scene>\n"), c.message);
+  const MalformedSceneCase& c = GetParam();
+  EXPECT_EQ(loading_error(kValidHeader + c.body + "</scene>\n"), c.message);
 }
 
-const Case kCases[] = {
+const MalformedSceneCase kMalformedSceneCases[] = {
     {"MissingAttribute", "<particle m=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n",
      "bad.xml:3: error: <particle> 0: attribute \"px\" is missing"},
     {"NonNumericAttribute",
@@ -141,32 +141,33 @@ const Case kCases[] = {
      "before it"},
 };
 
-INSTANTIATE_TEST_SUITE_P(SceneLoader, MalformedScene, ::testing::ValuesIn(kCases),
-                         [](const ::testing::TestParamInfo<Case>& info) {
+INSTANTIATE_TEST_SUITE_P(SceneLoader, MalformedScene, ::testing::ValuesIn(kMalformedSceneCases),
+                         [](const ::testing::TestParamInfo<MalformedSceneCase>& info) {
                            return info.param.name;
                          });
 
 TEST(SceneLoaderErrors, ANulByteIsRefusedWithItsLine) {
-  const std::string text = std::string(kHeader) + kTwoParticles + std::string(1, '\0') +
+  const std::string text = std::string(kValidHeader) + kTwoParticles + std::string(1, '\0') +
                            "<simplegravity fx=\"0\" fy=\"-9.81\"/>\n</scene>\n";
-  const std::size_t at = std::string(kHeader).size() + std::string(kTwoParticles).size();
-  EXPECT_EQ(error_of(text), "bad.xml:6: error: a NUL byte (at byte " + std::to_string(at) +
-                                "): a scene file is text, and nothing after it would be read");
+  const std::size_t at = std::string(kValidHeader).size() + std::string(kTwoParticles).size();
+  EXPECT_EQ(loading_error(text), "bad.xml:6: error: a NUL byte (at byte " + std::to_string(at) +
+                                     "): a scene file is text, and nothing after it would be read");
 }
 
 TEST(SceneLoaderErrors, AnElementOfTooManyAttributesIsRefusedBeforeParsing) {
   std::string many = "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"";
   for (int k = 0; k < 300000; ++k) many += " a" + std::to_string(k) + "='='";
-  const std::string text = std::string(kHeader) + "<!-- a=1 b=2 -->\n" + many + "/>\n</scene>\n";
+  const std::string text =
+      std::string(kValidHeader) + "<!-- a=1 b=2 -->\n" + many + "/>\n</scene>\n";
   // Refused at once (tinyxml2 alone takes quadratic time: 60,000 attributes took 16 s).
-  EXPECT_EQ(error_of(text),
+  EXPECT_EQ(loading_error(text),
             "bad.xml:4: error: an element with more than the limit of 100 attributes (raise it "
             "with --max-attributes N)");
   // The limit counts '=' outside quotes within a tag, and can be raised.
   Limits limits;
   limits.max_attributes = 6;
   InputFiles files(limits);
-  const std::string six = std::string(kHeader) +
+  const std::string six = std::string(kValidHeader) +
                           "<description text=\"a=1, b=2, c=3, d=4, e=5, f=6, g=7\"/>\n"
                           "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
                           "</scene>\n";
@@ -177,8 +178,8 @@ TEST(SceneLoaderErrors, AnElementOfTooManyAttributesIsRefusedBeforeParsing) {
 }
 
 TEST(SceneLoaderErrors, UnknownIntegratorListsEveryTypeOfTheRegistry) {
-  const std::string error =
-      error_of("<scene>\n<duration time=\"1\"/>\n<integrator type=\"rk4\" dt=\"0.1\"/>\n</scene>");
+  const std::string error = loading_error(
+      "<scene>\n<duration time=\"1\"/>\n<integrator type=\"rk4\" dt=\"0.1\"/>\n</scene>");
   // The course's four first, with their aliases; then FOSSSim's own, whatever the registry holds.
   const std::string start =
       "bad.xml:3: error: <integrator>: attribute \"type\" names an unknown integrator \"rk4\" "
@@ -194,59 +195,60 @@ TEST(SceneLoaderErrors, UnknownIntegratorListsEveryTypeOfTheRegistry) {
 
 TEST(SceneLoaderErrors, NonPositiveTimeStep) {
   EXPECT_EQ(
-      error_of(
+      loading_error(
           "<scene>\n<duration time=\"1\"/>\n<integrator type=\"implicit\" dt=\"0\"/>\n</scene>"),
       "bad.xml:3: error: <integrator>: attribute \"dt\" must be positive, found 0");
 }
 
 TEST(SceneLoaderErrors, NegativeDuration) {
   EXPECT_EQ(
-      error_of(
+      loading_error(
           "<scene>\n<duration time=\"-1\"/>\n<integrator type=\"implicit\" dt=\"1\"/>\n</scene>"),
       "bad.xml:2: error: <duration>: attribute \"time\" must be non-negative, found -1");
 }
 
 TEST(SceneLoaderErrors, MissingRequiredElements) {
-  EXPECT_EQ(error_of("<scene>\n<integrator type=\"implicit\" dt=\"1\"/>\n</scene>"),
+  EXPECT_EQ(loading_error("<scene>\n<integrator type=\"implicit\" dt=\"1\"/>\n</scene>"),
             "bad.xml:1: error: <scene>: the required element <duration> is missing");
-  EXPECT_EQ(error_of("<scene>\n<duration time=\"1\"/>\n</scene>"),
+  EXPECT_EQ(loading_error("<scene>\n<duration time=\"1\"/>\n</scene>"),
             "bad.xml:1: error: <scene>: the required element <integrator> is missing");
 }
 
 TEST(SceneLoaderErrors, WrongRootElement) {
-  EXPECT_EQ(error_of("<?xml version=\"1.0\"?>\n<world>\n</world>"),
+  EXPECT_EQ(loading_error("<?xml version=\"1.0\"?>\n<world>\n</world>"),
             "bad.xml:2: error: <world>: the root element must be <scene>");
 }
 
 TEST(SceneLoaderErrors, BadDimension) {
-  EXPECT_EQ(error_of("<scene dim=\"4\">\n</scene>"),
+  EXPECT_EQ(loading_error("<scene dim=\"4\">\n</scene>"),
             "bad.xml:1: error: <scene>: attribute \"dim\" must be 2 or 3, found 4");
 }
 
 TEST(SceneLoaderErrors, NotXml) {
-  EXPECT_EQ(error_of("<scene>\n<duration time=\"1\">\n</scene>"),
+  EXPECT_EQ(loading_error("<scene>\n<duration time=\"1\">\n</scene>"),
             "bad.xml:2: error: <duration>: not well-formed XML: this element is not closed, or is "
             "closed with a different name");
-  EXPECT_EQ(error_of("<scene>\n<particle m=1/>\n</scene>"),
+  EXPECT_EQ(loading_error("<scene>\n<particle m=1/>\n</scene>"),
             "bad.xml:2: error: <particle>: not well-formed XML: a malformed or repeated attribute "
             "(values need quotes: name=\"value\")");
-  EXPECT_EQ(error_of("<scene>\n<edge i=\"0\" i=\"1\"/>\n</scene>"),
+  EXPECT_EQ(loading_error("<scene>\n<edge i=\"0\" i=\"1\"/>\n</scene>"),
             "bad.xml:2: error: <edge>: not well-formed XML: a malformed or repeated attribute "
             "(values need quotes: name=\"value\")");
-  EXPECT_EQ(error_of("this is not XML"),
+  EXPECT_EQ(loading_error("this is not XML"),
             "bad.xml:1: error: not well-formed XML: text outside of any element (is this an XML "
             "scene file?)");
-  EXPECT_EQ(error_of("<scene>\n<particle/>\n"),
+  EXPECT_EQ(loading_error("<scene>\n<particle/>\n"),
             "bad.xml:1: error: not well-formed XML: an element opened on this line is never closed "
             "(the file ends inside it)");
   EXPECT_EQ(
-      error_of("<scene>\n</scene>\n<scene>\n</scene>"),
+      loading_error("<scene>\n</scene>\n<scene>\n</scene>"),
       "bad.xml:3: error: <scene>: a second top-level element; a scene file holds one <scene>");
 }
 
 TEST(SceneLoaderErrors, EmptyText) {
-  EXPECT_EQ(error_of(""), "bad.xml: error: the file is empty (expected a <scene> element)");
-  EXPECT_EQ(error_of(" \n\t\n"), "bad.xml: error: the file is empty (expected a <scene> element)");
+  EXPECT_EQ(loading_error(""), "bad.xml: error: the file is empty (expected a <scene> element)");
+  EXPECT_EQ(loading_error(" \n\t\n"),
+            "bad.xml: error: the file is empty (expected a <scene> element)");
 }
 
 TEST(SceneLoaderErrors, MissingFileAndDirectory) {
@@ -272,7 +274,7 @@ TEST(SceneLoaderErrors, EmptyFileOnDisk) {
 TEST(SceneLoaderErrors, ErrorCarriesItsParts) {
   const SceneError error = thrown_by<SceneError>([] {
     load_scene_text(
-        std::string(kHeader) +
+        std::string(kValidHeader) +
             "<particle m=\"x\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/></scene>",
         "parts.xml");
   });
@@ -290,7 +292,7 @@ namespace {
 
 // Issue 23: one run reports the problems of every element, in the order of their lines.
 TEST(SceneLoaderErrors, EveryElementsProblemIsReportedInOneRunInLineOrder) {
-  const std::string text = std::string(kHeader) +
+  const std::string text = std::string(kValidHeader) +
                            "<particle m=\"-1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
                            "<particle m=\"1\" px=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"2\"/>\n"
                            "<simplegravity fx=\"0\"/>\n"
@@ -315,7 +317,7 @@ TEST(SceneLoaderErrors, EveryElementsProblemIsReportedInOneRunInLineOrder) {
 // An element that refers to one whose own element failed is skipped, not reported: its problem
 // is the other's. Elements after it keep their indices.
 TEST(SceneLoaderErrors, ElementsReferringToBrokenOnesAreSkippedWithoutAReport) {
-  const std::string text = std::string(kHeader) +
+  const std::string text = std::string(kValidHeader) +
                            "<particle m=\"0\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
                            "<particle m=\"1\" px=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
                            "<particle m=\"1\" px=\"2\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
@@ -336,12 +338,12 @@ TEST(SceneLoaderErrors, ElementsReferringToBrokenOnesAreSkippedWithoutAReport) {
 
 // Bounded: a generated file with a problem on every line prints the first 20 and a count.
 TEST(SceneLoaderErrors, ReportsAtMostTwentyProblemsAndCountsTheRest) {
-  std::string text = kHeader;
+  std::string text = kValidHeader;
   for (int k = 0; k < 1000; ++k) {
     text += "<particle m=\"-1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n";
   }
   text += "</scene>\n";
-  const std::string message = error_of(text);
+  const std::string message = loading_error(text);
   EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 20);
   EXPECT_EQ(message.substr(0, message.find('\n')),
             "bad.xml:3: error: <particle> 0: attribute \"m\" must be positive, found -1");
@@ -351,7 +353,7 @@ TEST(SceneLoaderErrors, ReportsAtMostTwentyProblemsAndCountsTheRest) {
 
 // A problem that leaves nothing to go on with ends reading at once, after those found before.
 TEST(SceneLoaderErrors, ABadDimensionEndsReading) {
-  EXPECT_EQ(error_of("<scene dim=\"4\">\n<particle m=\"-1\"/>\n</scene>\n"),
+  EXPECT_EQ(loading_error("<scene dim=\"4\">\n<particle m=\"-1\"/>\n</scene>\n"),
             "bad.xml:1: error: <scene>: attribute \"dim\" must be 2 or 3, found 4");
 }
 

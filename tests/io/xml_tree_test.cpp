@@ -13,7 +13,7 @@
 namespace fosssim {
 namespace {
 
-std::string error_of(const std::string& xml) {
+std::string parse_error(const std::string& xml) {
   try {
     parse_xml(xml, "t.xml");
   } catch (const SceneError& error) {
@@ -65,34 +65,34 @@ TEST(XmlTree, SeveralTopLevelElementsAreReturned) {
 
 TEST(XmlTree, SyntaxErrorsNameLineAndElement) {
   // The innermost open element, where it was opened, for a wrong closing tag and at the end.
-  EXPECT_EQ(error_of("<scene>\n<a>\n</b>\n</scene>"),
+  EXPECT_EQ(parse_error("<scene>\n<a>\n</b>\n</scene>"),
             "t.xml:2: error: <a>: not well-formed XML: this element is not closed, or is closed "
             "with a different name");
-  EXPECT_EQ(error_of("<scene>\n<a>\n<particle/>\n"),
+  EXPECT_EQ(parse_error("<scene>\n<a>\n<particle/>\n"),
             "t.xml:2: error: not well-formed XML: an element opened on this line is never closed "
             "(the file ends inside it)");
   // An attribute: the line where the problem is, in a tag over several lines.
-  EXPECT_EQ(error_of("<scene>\n<particle\n m=\"1\"\n x=1/>\n</scene>"),
+  EXPECT_EQ(parse_error("<scene>\n<particle\n m=\"1\"\n x=1/>\n</scene>"),
             "t.xml:4: error: <particle>: not well-formed XML: a malformed or repeated attribute "
             "(values need quotes: name=\"value\")");
-  EXPECT_EQ(error_of("<scene>\n<particle m=\"1\"\n\n m=\"2\"/>\n</scene>"),
+  EXPECT_EQ(parse_error("<scene>\n<particle m=\"1\"\n\n m=\"2\"/>\n</scene>"),
             "t.xml:4: error: <particle>: not well-formed XML: a malformed or repeated attribute "
             "(values need quotes: name=\"value\")");
-  EXPECT_EQ(error_of("<scene>\n<particle m=\"1\n\n"),
+  EXPECT_EQ(parse_error("<scene>\n<particle m=\"1\n\n"),
             "t.xml:2: error: <particle>: not well-formed XML: a malformed or repeated attribute "
             "(values need quotes: name=\"value\")");
-  EXPECT_EQ(error_of("<scene>\n<!-- hello\n\n<particle/>\n"),
+  EXPECT_EQ(parse_error("<scene>\n<!-- hello\n\n<particle/>\n"),
             "t.xml:2: error: not well-formed XML: a comment is not closed (missing -->)");
-  EXPECT_EQ(error_of("<scene>\n<particle m=\"1\" !>\n</scene>"),
+  EXPECT_EQ(parse_error("<scene>\n<particle m=\"1\" !>\n</scene>"),
             "t.xml:2: error: not well-formed XML: a malformed element");
-  EXPECT_EQ(error_of("<scene/>\nhello"),
+  EXPECT_EQ(parse_error("<scene/>\nhello"),
             "t.xml:2: error: not well-formed XML: text outside of any element (is this an XML "
             "scene file?)");
-  EXPECT_EQ(error_of("<scene>\n<p m=\"&#12\"/>\n</scene>"),
+  EXPECT_EQ(parse_error("<scene>\n<p m=\"&#12\"/>\n</scene>"),
             "t.xml:2: error: <p>: not well-formed XML: a malformed character reference (&#number; "
             "or &#xhex;)");
   // Markup inside quotes, comments and CDATA does not confuse the place of an error.
-  EXPECT_EQ(error_of("<scene a=\"<b>\">\n<!-- <c> -->\n<![CDATA[<d>]]>\n<e>\n</scene>"),
+  EXPECT_EQ(parse_error("<scene a=\"<b>\">\n<!-- <c> -->\n<![CDATA[<d>]]>\n<e>\n</scene>"),
             "t.xml:4: error: <e>: not well-formed XML: this element is not closed, or is closed "
             "with a different name");
 }
@@ -157,7 +157,7 @@ TEST(XmlTree, PlainXmlReadsAsRapidxmlReadsIt) {
 }
 
 TEST(XmlTree, ARepeatedAttributeIsAnErrorInPlainXmlToo) {
-  EXPECT_EQ(error_of("<scene>\n<a x=\"1\"\n x=\"2\"/>\n</scene>"),
+  EXPECT_EQ(parse_error("<scene>\n<a x=\"1\"\n x=\"2\"/>\n</scene>"),
             "t.xml:3: error: <a>: not well-formed XML: a malformed or repeated attribute (values "
             "need quotes: name=\"value\")");
 }
@@ -168,10 +168,10 @@ TEST(XmlTree, NestingDeeperThanTheLimitIsRefusedBeforeParsing) {
   std::string closed = deep;
   for (int k = 0; k < kMaxXmlDepth; ++k) closed += "</a>";
   EXPECT_EQ(parse_xml(closed, "t.xml").size(), 1u);
-  EXPECT_EQ(error_of(deep + "<b>" + "</b>"), "t.xml:" + std::to_string(kMaxXmlDepth + 1) +
-                                                 ": error: <b>: elements nested more than " +
-                                                 std::to_string(kMaxXmlDepth) +
-                                                 " deep (a scene needs three)");
+  EXPECT_EQ(parse_error(deep + "<b>" + "</b>"), "t.xml:" + std::to_string(kMaxXmlDepth + 1) +
+                                                    ": error: <b>: elements nested more than " +
+                                                    std::to_string(kMaxXmlDepth) +
+                                                    " deep (a scene needs three)");
 }
 
 }  // namespace

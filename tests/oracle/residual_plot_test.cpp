@@ -40,7 +40,7 @@ std::vector<std::string> tick_labels(const PlotAxis& axis) {
   return labels;
 }
 
-bool contains(const std::string& text, const std::string& part) {
+bool plot_contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
@@ -71,8 +71,8 @@ TEST(ResidualPlot, ShowsBothSeriesTheLimitAndTheMarkerOnALogAxis) {
   EXPECT_EQ(tick_labels(plot.y),
             (std::vector<std::string>{"0", "1e-15", "1e-14", "1e-13", "1e-12", "1e-11", "1e-10",
                                       "1e-9", "1e-8", "1e-7", "1e-6"}));
-  EXPECT_TRUE(contains(plot.note, "Exact zeros are drawn on the bottom line")) << plot.note;
-  EXPECT_FALSE(contains(plot.note, "NaN")) << plot.note;
+  EXPECT_TRUE(plot_contains(plot.note, "Exact zeros are drawn on the bottom line")) << plot.note;
+  EXPECT_FALSE(plot_contains(plot.note, "NaN")) << plot.note;
 }
 
 TEST(ResidualPlot, AThemeFourVelocityLimitIsASecondDashedLine) {
@@ -123,7 +123,7 @@ TEST(ResidualPlot, LongRunsAreReducedKeepingTheLargestResidual) {
   EXPECT_EQ(plot.curves[0].points[776].y, 1e-14);
   EXPECT_EQ(plot.curves[1].points[5].y, std::numeric_limits<double>::infinity());  // the NaN
   EXPECT_EQ(tick_labels(plot.y).back(), "1e-3");  // the spike set the top decade
-  EXPECT_TRUE(contains(plot.note, "NaN or infinite residuals are drawn on the top edge"));
+  EXPECT_TRUE(plot_contains(plot.note, "NaN or infinite residuals are drawn on the top edge"));
 }
 
 // Grading streams its steps: columns are filled as steps come, sized from the steps announced,

@@ -26,7 +26,7 @@ constexpr int kSteps = 40;
 
 SceneEntry rigid_scene() { return {"rigid/square_triangle_springs.xml", kRigidScene, false}; }
 
-GradingOptions options_for(const std::string& candidate, const TemporaryFolder& work) {
+GradingOptions rigid_options_for(const std::string& candidate, const TemporaryFolder& work) {
   GradingOptions options;
   options.run.candidate = candidate;
   options.run.timeout_seconds = 30.0;
@@ -36,7 +36,7 @@ GradingOptions options_for(const std::string& candidate, const TemporaryFolder& 
   return options;
 }
 
-bool contains(const std::string& text, const std::string& part) {
+bool rigid_text_contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
@@ -49,14 +49,14 @@ std::size_t state_offset(int k, int b, int c) {
 }
 
 /// Grades the rigid scene with file_copying_candidate.sh writing `bytes`.
-SceneResult grade_copied(const std::string& bytes, const TemporaryFolder& work) {
+SceneResult grade_copied_rigid(const std::string& bytes, const TemporaryFolder& work) {
   const std::string file = work / "prepared.bin";
   testing::write_bytes(file, bytes);
   testing::set_env("ORACLE_TEST_TRAJECTORY", file);
   testing::set_env("ORACLE_TEST_EXIT", "0");
   testing::set_env("ORACLE_TEST_STDERR", "");
   return grade_scene(rigid_scene(),
-                     options_for(testing::candidate("file_copying_candidate.sh"), work));
+                     rigid_options_for(testing::candidate("file_copying_candidate.sh"), work));
 }
 
 void add_to_double(std::string& bytes, std::size_t offset, double delta) {
@@ -68,7 +68,7 @@ void add_to_double(std::string& bytes, std::size_t offset, double delta) {
 
 TEST(RigidGrading, FossSimPassesWithZeroResiduals) {
   TemporaryFolder work;
-  const SceneResult r = grade_scene(rigid_scene(), options_for(testing::kFossSim, work));
+  const SceneResult r = grade_scene(rigid_scene(), rigid_options_for(testing::kFossSim, work));
   EXPECT_EQ(r.verdict, Verdict::kPassed) << r.reason << "\n" << r.details;
   ASSERT_TRUE(r.residuals);
   EXPECT_EQ(r.residuals->accumulated_position, 0.0);  // same code, same bits
@@ -86,12 +86,12 @@ TEST(RigidGrading, APerturbedAngleFailsAtThatStepAsFossSimGradesIt) {
   std::string bytes = testing::fosssim_trajectory(kRigidScene, work);
   ASSERT_EQ(bytes.size(), 8u * (4 * kBodies + (kSteps + 1) * (12 * kBodies + 1)));
   add_to_double(bytes, state_offset(17, 1, 2), 1e-7);  // frame 17, body 1, θ
-  const SceneResult r = grade_copied(bytes, work);
+  const SceneResult r = grade_copied_rigid(bytes, work);
   EXPECT_EQ(r.verdict, Verdict::kFailed);
-  EXPECT_TRUE(contains(r.reason, "Maximum Theta Residual")) << r.reason;
-  EXPECT_TRUE(contains(r.reason, "(limit 1e-08)")) << r.reason;
-  EXPECT_TRUE(contains(r.reason, "first step over the limits 17")) << r.reason;
-  EXPECT_TRUE(contains(r.details, "Overall success: Failed.")) << r.details;
+  EXPECT_TRUE(rigid_text_contains(r.reason, "Maximum Theta Residual")) << r.reason;
+  EXPECT_TRUE(rigid_text_contains(r.reason, "(limit 1e-08)")) << r.reason;
+  EXPECT_TRUE(rigid_text_contains(r.reason, "first step over the limits 17")) << r.reason;
+  EXPECT_TRUE(rigid_text_contains(r.details, "Overall success: Failed.")) << r.details;
   ASSERT_TRUE(r.residuals);
   // What FOSSSim -i reports for the same file: the course's residual-file sums.
   testing::write_bytes(work / "perturbed.bin", bytes);
@@ -109,7 +109,7 @@ TEST(RigidGrading, APerturbationBelowTheLimitPasses) {
   TemporaryFolder work;
   std::string bytes = testing::fosssim_trajectory(kRigidScene, work);
   add_to_double(bytes, state_offset(17, 0, 0), 1e-12);  // frame 17, body 0, X_x
-  const SceneResult r = grade_copied(bytes, work);
+  const SceneResult r = grade_copied_rigid(bytes, work);
   EXPECT_EQ(r.verdict, Verdict::kPassed) << r.reason;
   ASSERT_TRUE(r.residuals);
   EXPECT_GT(r.residuals->max_position, 0.0);
@@ -121,22 +121,22 @@ TEST(RigidGrading, NanIsGarbageNamingFrameAndBody) {
   std::string bytes = testing::fosssim_trajectory(kRigidScene, work);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::memcpy(bytes.data() + state_offset(9, 1, 5), &nan, sizeof nan);  // frame 9, body 1, ω
-  const SceneResult r = grade_copied(bytes, work);
+  const SceneResult r = grade_copied_rigid(bytes, work);
   EXPECT_EQ(r.verdict, Verdict::kGarbage);
-  EXPECT_TRUE(contains(r.reason, "frame 9, body 1: state")) << r.reason;
-  EXPECT_TRUE(contains(r.reason, "nan")) << r.reason;
+  EXPECT_TRUE(rigid_text_contains(r.reason, "frame 9, body 1: state")) << r.reason;
+  EXPECT_TRUE(rigid_text_contains(r.reason, "nan")) << r.reason;
 }
 
 TEST(RigidGrading, ShortAndOversizedFilesAreRefusedBeforeGrading) {
   TemporaryFolder work;
   const std::string good = testing::fosssim_trajectory(kRigidScene, work);
-  EXPECT_EQ(grade_copied(good.substr(0, good.size() - 8), work).verdict, Verdict::kShort);
-  EXPECT_EQ(grade_copied(good + good.substr(0, 8), work).verdict, Verdict::kOversized);
+  EXPECT_EQ(grade_copied_rigid(good.substr(0, good.size() - 8), work).verdict, Verdict::kShort);
+  EXPECT_EQ(grade_copied_rigid(good + good.substr(0, 8), work).verdict, Verdict::kOversized);
 }
 
 TEST(RigidGrading, AHangingCandidateTimesOut) {
   TemporaryFolder work;
-  GradingOptions options = options_for(testing::candidate("hanging_candidate.sh"), work);
+  GradingOptions options = rigid_options_for(testing::candidate("hanging_candidate.sh"), work);
   options.run.timeout_seconds = 0.5;
   const SceneResult r = grade_scene(rigid_scene(), options);
   EXPECT_EQ(r.verdict, Verdict::kTimedOut);
@@ -153,10 +153,10 @@ TEST(RigidGrading, TheCommandGradesATheme3SuiteIntoJUnit) {
   const ChildOutcome outcome = testing::run_program(argv);
   EXPECT_EQ(outcome.exit_status, 0) << outcome.stderr_tail;
   const std::string xml = testing::read_bytes(junit);
-  EXPECT_TRUE(contains(xml, "name=\"square_triangle_springs.xml\"")) << xml;
-  EXPECT_TRUE(contains(xml, "failures=\"0\"")) << xml;
-  EXPECT_FALSE(contains(xml, "<failure")) << xml;
-  EXPECT_FALSE(contains(xml, "<error")) << xml;
+  EXPECT_TRUE(rigid_text_contains(xml, "name=\"square_triangle_springs.xml\"")) << xml;
+  EXPECT_TRUE(rigid_text_contains(xml, "failures=\"0\"")) << xml;
+  EXPECT_FALSE(rigid_text_contains(xml, "<failure")) << xml;
+  EXPECT_FALSE(rigid_text_contains(xml, "<error")) << xml;
 }
 
 
@@ -167,7 +167,7 @@ TEST(RigidGrading, TheCommandGradesATheme3SuiteIntoJUnit) {
 TEST(RigidGrading, TheDiagnosisNamesTheFirstFailingStepBodyAndQuantity) {
   TemporaryFolder work, diagnosis;
   testing::use_perturbing_candidate(23, 1, 5, "1e-6");
-  GradingOptions options = options_for(testing::candidate("perturbing_candidate.sh"), work);
+  GradingOptions options = rigid_options_for(testing::candidate("perturbing_candidate.sh"), work);
   options.diagnose_dir = diagnosis.path();
   const SceneResult r = grade_scene(rigid_scene(), options);
   EXPECT_EQ(r.verdict, Verdict::kFailed);
@@ -176,10 +176,12 @@ TEST(RigidGrading, TheDiagnosisNamesTheFirstFailingStepBodyAndQuantity) {
   EXPECT_EQ(r.first_divergence->particle, 1);
   EXPECT_NEAR(r.first_divergence->velocity_residual, 1e-6, 1e-12);
   EXPECT_EQ(r.first_divergence->position_residual, 0.0);  // the frame's positions are right
-  EXPECT_TRUE(contains(r.details, "First divergence: step 23, body 1, Omega (residual 1.00000000002"))
+  EXPECT_TRUE(rigid_text_contains(
+      r.details, "First divergence: step 23, body 1, Omega (residual 1.00000000002"))
       << r.details;
-  EXPECT_TRUE(contains(r.details, "Residuals per step")) << r.details;
-  EXPECT_TRUE(contains(r.details, "\n  22  0 (0)")) << r.details;  // the step before: exact
+  EXPECT_TRUE(rigid_text_contains(r.details, "Residuals per step")) << r.details;
+  EXPECT_TRUE(rigid_text_contains(r.details, "\n  22  0 (0)"))
+      << r.details;  // the step before: exact
   // The table: a header and one row per step, zero before step 23.
   const std::string stem = diagnosis_stem(diagnosis.path(), rigid_scene().name);
   const std::string table = testing::read_bytes(stem + ".residuals.tsv");
@@ -192,11 +194,12 @@ TEST(RigidGrading, TheDiagnosisNamesTheFirstFailingStepBodyAndQuantity) {
   }
   ASSERT_EQ(rows.size(), 1u + kSteps) << table;
   EXPECT_EQ(rows[22].substr(0, 3), "22\t");
-  EXPECT_TRUE(contains(rows[22], "\t0\t")) << rows[22];
+  EXPECT_TRUE(rigid_text_contains(rows[22], "\t0\t")) << rows[22];
   EXPECT_EQ(rows[23].substr(0, 3), "23\t");
-  EXPECT_TRUE(contains(rows[23], "\t1.00000000002")) << rows[23];
-  EXPECT_TRUE(contains(testing::read_bytes(stem + ".residuals.svg"), "<svg"));
-  EXPECT_TRUE(contains(testing::read_bytes(stem + ".diagnosis.txt"), "First divergence"));
+  EXPECT_TRUE(rigid_text_contains(rows[23], "\t1.00000000002")) << rows[23];
+  EXPECT_TRUE(rigid_text_contains(testing::read_bytes(stem + ".residuals.svg"), "<svg"));
+  EXPECT_TRUE(
+      rigid_text_contains(testing::read_bytes(stem + ".diagnosis.txt"), "First divergence"));
   // The grader's own report agrees: FOSSSim -i's first divergence on the same kind of file.
   std::string bytes = testing::fosssim_trajectory(kRigidScene, work);
   add_to_double(bytes, state_offset(23, 1, 5), 1e-6);

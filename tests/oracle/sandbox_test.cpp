@@ -26,7 +26,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::TemporaryFolder;
 
-bool contains(const std::string& text, const std::string& part) {
+bool sandbox_text_contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
@@ -63,10 +63,10 @@ TEST(SandboxUnavailable, NamesTheProblem) {
       << "this machine (and CI) can sandbox";
   const auto missing = sandbox_unavailable("", scratch.path());
   ASSERT_TRUE(missing);
-  EXPECT_TRUE(contains(*missing, "bubblewrap")) << *missing;
+  EXPECT_TRUE(sandbox_text_contains(*missing, "bubblewrap")) << *missing;
   const auto broken = sandbox_unavailable("/bin/false", scratch.path());
   ASSERT_TRUE(broken);
-  EXPECT_TRUE(contains(*broken, "cannot build the sandbox")) << *broken;
+  EXPECT_TRUE(sandbox_text_contains(*broken, "cannot build the sandbox")) << *broken;
 }
 
 /// A TCP socket listening on 127.0.0.1, non-blocking; closed when destroyed.
@@ -141,8 +141,8 @@ TEST(Sandbox, HostileCandidateEscapesNothingAndStillRunsFossSim) {
   for (const SceneResult& r : run.results) {
     // FOSSSim itself ran in the sandbox (its libraries, its scene) and passed.
     EXPECT_EQ(r.verdict, Verdict::kPassed) << r.name << ": " << r.reason << "\n" << r.stderr_tail;
-    EXPECT_FALSE(contains(r.stderr_tail, "ESCAPED")) << r.stderr_tail;
-    EXPECT_FALSE(contains(r.stderr_tail, "the-secret-")) << r.stderr_tail;
+    EXPECT_FALSE(sandbox_text_contains(r.stderr_tail, "ESCAPED")) << r.stderr_tail;
+    EXPECT_FALSE(sandbox_text_contains(r.stderr_tail, "the-secret-")) << r.stderr_tail;
   }
   EXPECT_FALSE(fs::exists(run.outside / "escaped"));
   EXPECT_EQ(testing::read_bytes(run.suite / "basics/spring_chain_symplectic.xml"),
@@ -158,7 +158,8 @@ TEST(Sandbox, WithoutItTheCandidateEscapesButIsGradedOnTheOraclesCopyOfTheScenes
   EXPECT_TRUE(fs::exists(run.outside / "escaped"));
   EXPECT_NE(testing::read_bytes(run.suite / "basics/spring_chain_symplectic.xml"),
             run.original_bytes);
-  EXPECT_TRUE(contains(run.results[0].stderr_tail, "the-secret-")) << run.results[0].stderr_tail;
+  EXPECT_TRUE(sandbox_text_contains(run.results[0].stderr_tail, "the-secret-"))
+      << run.results[0].stderr_tail;
   EXPECT_TRUE(run.listener.connected());
   EXPECT_FALSE(testing::processes_with_argument(run.token).empty());
   // The candidate simulated the rewritten scenes, but each scene is graded against the copy the
@@ -195,7 +196,7 @@ TEST(Sandbox, TooManyProcessesStopTheCandidate) {
   options.work_dir = work.path();
   const SceneResult r = grade_scene({"basics/chain.xml", testing::kChainScene}, options);
   EXPECT_NE(r.verdict, Verdict::kPassed);
-  EXPECT_TRUE(contains(r.reason, "more than the limit of 8")) << r.reason;
+  EXPECT_TRUE(sandbox_text_contains(r.reason, "more than the limit of 8")) << r.reason;
   EXPECT_LT(r.run_seconds, 4.0);
 }
 
@@ -214,7 +215,7 @@ TEST(Sandbox, MemoryLimitStopsALargeAllocation) {
   options.work_dir = work.path();
   const SceneResult r = grade_scene({"x/big.xml", work / "big.xml"}, options);
   EXPECT_EQ(r.verdict, Verdict::kExitStatus) << r.reason << "\n" << r.stderr_tail;
-  EXPECT_TRUE(contains(r.stderr_tail, "out of memory")) << r.stderr_tail;
+  EXPECT_TRUE(sandbox_text_contains(r.stderr_tail, "out of memory")) << r.stderr_tail;
 }
 
 }  // namespace

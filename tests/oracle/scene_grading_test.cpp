@@ -39,7 +39,7 @@ SceneResult grade_chain_with(const std::string& script, const TemporaryFolder& w
   return grade_scene(chain_scene(), options_for(testing::candidate(script), work));
 }
 
-bool contains(const std::string& text, const std::string& part) {
+bool text_contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
@@ -72,8 +72,9 @@ TEST(GradeScene, CollisionScenesAreGradedOnTheirCollisionRecordsToo) {
   const SceneResult thin =
       grade_scene(scene, options_for(testing::candidate("thin_balls_candidate.sh"), work));
   EXPECT_EQ(thin.verdict, Verdict::kFailed);
-  EXPECT_TRUE(contains(thin.reason, "Collisions from step 1 (1 missed")) << thin.reason;
-  EXPECT_TRUE(contains(thin.details, "  Missed collision: Particle 0 - Particle 1 with normal"))
+  EXPECT_TRUE(text_contains(thin.reason, "Collisions from step 1 (1 missed")) << thin.reason;
+  EXPECT_TRUE(
+      text_contains(thin.details, "  Missed collision: Particle 0 - Particle 1 with normal"))
       << thin.details;
 }
 
@@ -89,13 +90,13 @@ TEST(GradeScene, PerturbedCandidateFailsAtExactlyThePerturbedStepAndParticle) {
   EXPECT_EQ(r.first_divergence->particle, 2);
   EXPECT_NEAR(r.first_divergence->position_residual, 1e-9, 1e-15);
   EXPECT_EQ(r.first_divergence->velocity_residual, 0.0);  // frame 16 is intact, so is v at 17
-  EXPECT_TRUE(contains(r.reason, "first divergence at step 17, particle 2")) << r.reason;
-  EXPECT_TRUE(contains(r.details, "First divergence at step 17, particle 2")) << r.details;
-  EXPECT_TRUE(contains(r.details, "reference step")) << r.details;
+  EXPECT_TRUE(text_contains(r.reason, "first divergence at step 17, particle 2")) << r.reason;
+  EXPECT_TRUE(text_contains(r.details, "First divergence at step 17, particle 2")) << r.details;
+  EXPECT_TRUE(text_contains(r.details, "reference step")) << r.details;
   // Diagnosis files: text, per-step table and plot.
   const std::string stem = diagnosis / "assets/basics/spring_chain_explicit";
   const std::string text = testing::read_bytes(stem + ".diagnosis.txt");
-  EXPECT_TRUE(contains(text, "First divergence at step 17, particle 2")) << text;
+  EXPECT_TRUE(text_contains(text, "First divergence at step 17, particle 2")) << text;
   const auto row = tsv_row(testing::read_bytes(stem + ".residuals.tsv"), "16");
   ASSERT_EQ(row.size(), 8u);
   EXPECT_EQ(row[2], "0");  // step 16 is still exact
@@ -138,7 +139,7 @@ TEST(GradeScene, ShortFileFails) {
   const std::string good = testing::fosssim_trajectory(testing::kChainScene, work);
   const SceneResult whole_frames = grade_copied(good.substr(0, good.size() / 2), work);
   EXPECT_EQ(whole_frames.verdict, Verdict::kShort);
-  EXPECT_TRUE(contains(whole_frames.reason, "3264 bytes, but the scene needs 6528"))
+  EXPECT_TRUE(text_contains(whole_frames.reason, "3264 bytes, but the scene needs 6528"))
       << whole_frames.reason;
   const SceneResult cut_frame = grade_copied(good.substr(0, good.size() - 5), work);
   EXPECT_EQ(cut_frame.verdict, Verdict::kShort);
@@ -149,7 +150,7 @@ TEST(GradeScene, OversizedFileFailsWithoutBeingRead) {
   const std::string good = testing::fosssim_trajectory(testing::kChainScene, work);
   const SceneResult r = grade_copied(good + good.substr(0, 128), work);
   EXPECT_EQ(r.verdict, Verdict::kOversized);
-  EXPECT_TRUE(contains(r.reason, "6656 bytes")) << r.reason;
+  EXPECT_TRUE(text_contains(r.reason, "6656 bytes")) << r.reason;
 }
 
 TEST(GradeScene, RunawayWriterIsStoppedAndFailsAsOversized) {
@@ -167,8 +168,8 @@ TEST(GradeScene, NanFileIsGarbage) {
   std::memcpy(bytes.data() + 8 * (16 * 9 + 8 + 2 * 1 + 1), &nan, sizeof(nan));
   const SceneResult r = grade_copied(bytes, work);
   EXPECT_EQ(r.verdict, Verdict::kGarbage);
-  EXPECT_TRUE(contains(r.reason, "frame 9, particle 1: velocity (")) << r.reason;
-  EXPECT_TRUE(contains(r.reason, "nan")) << r.reason;
+  EXPECT_TRUE(text_contains(r.reason, "frame 9, particle 1: velocity (")) << r.reason;
+  EXPECT_TRUE(text_contains(r.reason, "nan")) << r.reason;
 }
 
 TEST(GradeScene, RandomBytesFailAtTheFirstStep) {
@@ -193,7 +194,7 @@ TEST(GradeScene, NonZeroExitFailsEvenWithAGoodFileAndKeepsStandardError) {
   const SceneResult r = grade_copied(testing::fosssim_trajectory(testing::kChainScene, work), work,
                                      3, "solver <exploded> & \"died\"");
   EXPECT_EQ(r.verdict, Verdict::kExitStatus);
-  EXPECT_TRUE(contains(r.reason, "exited with status 3"));
+  EXPECT_TRUE(text_contains(r.reason, "exited with status 3"));
   EXPECT_EQ(r.stderr_tail, "solver <exploded> & \"died\"");
 }
 
@@ -203,14 +204,14 @@ TEST(GradeScene, NoFileFails) {
   testing::set_env("ORACLE_TEST_EXIT", "0");
   const SceneResult r = grade_chain_with("file_copying_candidate.sh", work);
   EXPECT_EQ(r.verdict, Verdict::kNoOutput);
-  EXPECT_TRUE(contains(r.reason, "wrote no trajectory")) << r.reason;
+  EXPECT_TRUE(text_contains(r.reason, "wrote no trajectory")) << r.reason;
 }
 
 TEST(GradeScene, CrashFailsWithTheSignal) {
   TemporaryFolder work;
   const SceneResult r = grade_chain_with("crashing_candidate.sh", work);
   EXPECT_EQ(r.verdict, Verdict::kCrashed);
-  EXPECT_TRUE(contains(r.reason, "SIGSEGV")) << r.reason;
+  EXPECT_TRUE(text_contains(r.reason, "SIGSEGV")) << r.reason;
   EXPECT_EQ(r.stderr_tail, "about to crash");
 }
 
@@ -220,7 +221,7 @@ TEST(GradeScene, HangIsKilledAtTheTimeout) {
   options.run.timeout_seconds = 0.5;
   const SceneResult r = grade_scene(chain_scene(), options);
   EXPECT_EQ(r.verdict, Verdict::kTimedOut);
-  EXPECT_TRUE(contains(r.reason, "timeout of 0.5 s")) << r.reason;
+  EXPECT_TRUE(text_contains(r.reason, "timeout of 0.5 s")) << r.reason;
   EXPECT_LT(r.run_seconds, 5.0);
 }
 
@@ -229,12 +230,12 @@ TEST(GradeScene, MissingAndNonExecutableCandidatesFailEveryScene) {
   const SceneResult missing =
       grade_scene(chain_scene(), options_for(work / "no-such-simulator", work));
   EXPECT_EQ(missing.verdict, Verdict::kCannotRun);
-  EXPECT_TRUE(contains(missing.reason, "does not exist")) << missing.reason;
+  EXPECT_TRUE(text_contains(missing.reason, "does not exist")) << missing.reason;
   testing::write_bytes(work / "not-executable.sh", "#!/bin/sh\nexit 0\n");
   const SceneResult denied =
       grade_scene(chain_scene(), options_for(work / "not-executable.sh", work));
   EXPECT_EQ(denied.verdict, Verdict::kCannotRun);
-  EXPECT_TRUE(contains(denied.reason, "not executable")) << denied.reason;
+  EXPECT_TRUE(text_contains(denied.reason, "not executable")) << denied.reason;
 }
 
 TEST(GradeScene, BrokenSceneIsASceneError) {
@@ -243,7 +244,7 @@ TEST(GradeScene, BrokenSceneIsASceneError) {
   const SceneResult r = grade_scene({"x/broken.xml", work / "broken.xml", false},
                                     options_for(testing::kFossSim, work));
   EXPECT_EQ(r.verdict, Verdict::kSceneError);
-  EXPECT_TRUE(contains(r.reason, "broken.xml")) << r.reason;
+  EXPECT_TRUE(text_contains(r.reason, "broken.xml")) << r.reason;
 }
 
 TEST(GradeScenes, OneBadCandidateRunDoesNotStopTheBatch) {

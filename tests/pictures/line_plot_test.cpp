@@ -15,7 +15,7 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-const Color kRed{0.84, 0.15, 0.16};
+const Color kReferenceRed{0.84, 0.15, 0.16};
 const Color kBlue{0.12, 0.47, 0.71};
 
 using testing::coverage;
@@ -109,8 +109,8 @@ LinePlot gapped_line() {
   plot.curves.push_back(
       {"curve", kBlue, 2.0, {{0.0, 0.5}, {0.4, 0.5}, {0.5, kNaN}, {0.6, 0.5}, {1.0, 0.5}}});
   plot.references.push_back(
-      {ReferenceLine::Direction::kHorizontal, 0.25, "quarter", kRed, {6.0, 4.0}});
-  plot.references.push_back({ReferenceLine::Direction::kVertical, 0.75, "mark", kRed, {}});
+      {ReferenceLine::Direction::kHorizontal, 0.25, "quarter", kReferenceRed, {6.0, 4.0}});
+  plot.references.push_back({ReferenceLine::Direction::kVertical, 0.75, "mark", kReferenceRed, {}});
   return plot;
 }
 
@@ -133,12 +133,13 @@ TEST(WriteLinePlot, DrawsCurvesWithTheirGapsAndTheReferenceLines) {
   EXPECT_EQ(in_column(image, kBlue, column(0.5), top, bottom), 0);
   // The dashed line (6 on, 4 off) covers about 60% of its row; the solid one its column.
   const int dashed_part = column(0.7) - column(0.0) - 2;
-  const int dashed = in_row(image, kRed, row(0.25), column(0.0) + 2, column(0.7));
+  const int dashed = in_row(image, kReferenceRed, row(0.25), column(0.0) + 2, column(0.7));
   EXPECT_GT(dashed, 0.5 * dashed_part);
   EXPECT_LT(dashed, 0.7 * dashed_part);
-  EXPECT_GT(in_column(image, kRed, column(0.75), row(0.5) + 3, bottom),
+  EXPECT_GT(in_column(image, kReferenceRed, column(0.75), row(0.5) + 3, bottom),
             0.95 * (bottom - row(0.5) - 3));
-  EXPECT_LE(in_column(image, kRed, column(0.65), row(0.5) + 3, bottom), 1);  // the dashed line
+  EXPECT_LE(in_column(image, kReferenceRed, column(0.65), row(0.5) + 3, bottom),
+            1);  // the dashed line
 }
 
 TEST(WriteLinePlot, DrawsInfiniteValuesOnTheEdgeAndWritesSvg) {

@@ -13,7 +13,7 @@
 namespace fosssim {
 namespace {
 
-constexpr double kOneLevel = 1.0 / 255.0 + 1e-9;
+constexpr double kOneColourLevel = 1.0 / 255.0 + 1e-9;
 constexpr Color kWhite{1, 1, 1};
 
 /// One triangle facing the camera, (-1, -1, 0), (1, -1, 0), (0, 1, 0): pixels (204.8, 307.2),
@@ -45,16 +45,16 @@ TEST(Render3D, PaintsTheShadedTriangleAtItsCentroid) {
   ASSERT_NE(triangle, nullptr);
   const Image image = render_image(drawing);
   // The centroid (0, -1/3, 0) is at pixel (256, 273.07); pixel (256, 273) holds it.
-  EXPECT_LE(color_distance(image.color_at(256, 273), triangle->color), kOneLevel);
+  EXPECT_LE(color_distance(image.color_at(256, 273), triangle->color), kOneColourLevel);
   EXPECT_GT(color_distance(triangle->color, kWhite), 0.3);
-  EXPECT_LE(color_distance(image.color_at(20, 20), kWhite), kOneLevel);
-  EXPECT_LE(color_distance(image.color_at(400, 300), kWhite), kOneLevel);
+  EXPECT_LE(color_distance(image.color_at(20, 20), kWhite), kOneColourLevel);
+  EXPECT_LE(color_distance(image.color_at(400, 300), kWhite), kOneColourLevel);
 }
 
 TEST(Render3D, PaintsNearerShapesOverFartherOnes) {
   const Image image = render_image(draw(triangle_scene(), testing::front_camera()));
   // The red particle in front of the triangle, at pixel (256, 256 + 0.5 · 256 / 4.5).
-  EXPECT_LE(color_distance(image.color_at(256, 284), Color{1, 0, 0}), kOneLevel);
+  EXPECT_LE(color_distance(image.color_at(256, 284), Color{1, 0, 0}), kOneColourLevel);
   // The green one behind it, at (256 + 0.5 · 256 / 5.5, 256), is hidden by the triangle...
   EXPECT_GT(color_distance(image.color_at(279, 256), Color{0, 1, 0}), 0.3);
   // ...but shows where the triangle does not cover it: 0.1 · 256 / 5.5 = 4.65 pixels right.

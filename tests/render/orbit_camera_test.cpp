@@ -15,7 +15,7 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 
 /// A camera on +z looking along -z at (1, 2, 3) from 4 units, 90° field of view: the focal
 /// length is 256 pixels on a 512 × 512 picture.
-OrbitCamera front_camera() {
+OrbitCamera camera_on_z_axis() {
   OrbitCamera camera;
   camera.target = {1.0, 2.0, 3.0};
   camera.distance = 4.0;
@@ -24,7 +24,7 @@ OrbitCamera front_camera() {
 }
 
 TEST(OrbitProjection, PutsKnownPointsAtKnownPixels) {
-  const OrbitProjection view(front_camera(), 512, 512);
+  const OrbitProjection view(camera_on_z_axis(), 512, 512);
   EXPECT_TRUE(view.eye().isApprox(Eigen::Vector3d(1.0, 2.0, 7.0)));
   const ProjectedPoint target = view.project({1.0, 2.0, 3.0});
   EXPECT_DOUBLE_EQ(target.pixel.x, 256.0);
@@ -43,7 +43,7 @@ TEST(OrbitProjection, PutsKnownPointsAtKnownPixels) {
 }
 
 TEST(OrbitProjection, YawAndPitchMoveTheEyeAroundTheTarget) {
-  OrbitCamera camera = front_camera();
+  OrbitCamera camera = camera_on_z_axis();
   camera.yaw = 90.0 * kDegree;  // the eye on +x: -z is to the right
   const OrbitProjection side(camera, 512, 512);
   EXPECT_TRUE(side.eye().isApprox(Eigen::Vector3d(5.0, 2.0, 3.0)));
@@ -57,7 +57,7 @@ TEST(OrbitProjection, YawAndPitchMoveTheEyeAroundTheTarget) {
 }
 
 TEST(OrbitProjection, ParallelViewIgnoresDepth) {
-  OrbitCamera camera = front_camera();
+  OrbitCamera camera = camera_on_z_axis();
   camera.projection = Projection::kOrthographic;
   const OrbitProjection view(camera, 512, 512);
   // The visible half height is distance · tan(45°) = 4 units: 64 pixels per unit everywhere.

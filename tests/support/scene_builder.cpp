@@ -6,6 +6,7 @@
 #include "core/forces/simple_gravity_force.h"
 #include "core/forces/spring_force.h"
 #include "core/integrators/integrator_registry.h"
+#include "core/step/simulation.h"
 #include "mesh/generators.h"
 #include "mesh/mesh_scene.h"
 
@@ -102,6 +103,13 @@ State run_steps(const SceneModel& model, State state, std::int64_t steps) {
   const auto integrator = make_integrator(model);
   for (std::int64_t s = 0; s < steps; ++s) integrator->step(state);
   return state;
+}
+
+State moving_cloth_state() {
+  const TestScene newton = cloth(7, 20.0, "implicit-euler", 1.0 / 30.0);
+  Simulation simulation(newton.model, newton.initial);
+  for (int step = 0; step < 12; ++step) simulation.step();
+  return simulation.state();
 }
 
 }  // namespace fosssim::testing

@@ -77,6 +77,10 @@ TestScene particles_at(const std::vector<Eigen::Vector3d>& points);
 TestScene cloth(int nx, double k, std::string_view integrator, double dt, bool horizontal = true,
                 const std::string& pins = "corners", double b = 0.0);
 
+/// cloth(7, 20, "implicit-euler", 1/30) 12 steps after release, springs stretched and
+/// compressed: a state in motion for tests that compare implicit solvers from one start.
+State moving_cloth_state();
+
 /// The model's integrator (make_integrator), bound to it and `interaction`, as the method's
 /// class T (ImplicitEuler, LocalGlobal<3>, ...), for tests that ask it what it did.
 template <typename T>

@@ -72,7 +72,7 @@ Clearance run(TestScene& scene) {
   return c;
 }
 
-struct Case {
+struct ClothContactCase {
   const ContactMethod* collisions;
   /// The least clearance allowed, as a fraction of the vertex radius: penalty contact lets
   /// objects sink in by m g / k (here far less than the thickness); simple impulses change no
@@ -81,12 +81,12 @@ struct Case {
 };
 
 TEST(ClothContact, ClothOnAFloorAndOnASphereDoesNotPassThroughUnderEvery3DIntegrator) {
-  const Case cases[] = {{&contact_method("penalty"), 0.9},
-                        {&contact_method("continuous-time"), 0.9},
-                        {&contact_method("simple"), 0.1}};
+  const ClothContactCase cases[] = {{&contact_method("penalty"), 0.9},
+                                    {&contact_method("continuous-time"), 0.9},
+                                    {&contact_method("simple"), 0.1}};
   for (const IntegratorMethod* method : integrator_methods()) {
     if (!method->properties.runs_3d) continue;
-    for (const Case& c : cases) {
+    for (const ClothContactCase& c : cases) {
       const std::string what = std::string(method->name) + ", " + std::string(c.collisions->name);
       // Dropped from 0.2 m above the floor.
       TestScene flat = cloth_over(*method, c.collisions, false, kFloor + kRadius + 0.2);

@@ -22,7 +22,7 @@ using testing::TestScene;
 using testing::vec;
 
 /// Takes one step of the scene through its pipeline; returns the step's record.
-StepRecord step_once(TestScene& scene) {
+StepRecord step_scene_once(TestScene& scene) {
   StepPipeline pipeline(scene.model);
   StepRecord record;
   pipeline.step(scene.initial, &record);
@@ -39,7 +39,7 @@ TEST(SimpleCollisions, CourseWorkedExampleParticleEdgeWithRestitutionHalf) {
   scene.add_edge(1, 2, 0.1);
   scene.model.collisions.method = &contact_method("simple");
   scene.model.collisions.cor = 0.5;
-  const StepRecord record = step_once(scene);
+  const StepRecord record = step_scene_once(scene);
   EXPECT_EQ(scene.initial.v[1], 0.17035110533159936);
   EXPECT_EQ(scene.initial.v[5], -0.50715214564369315);
   ASSERT_EQ(record.collisions.size(), 1u);
@@ -62,7 +62,7 @@ TEST(SimpleCollisions, TouchingExactlyOrMovingApartIsNotACollision) {
     scene.add_particle(1, vec({0, 0}), vec({vx, 0}), false, 0.5);
     scene.add_particle(1, vec({0.75, 0}), vec({0, 0}), false, 0.25);
     scene.model.collisions.method = &contact_method("simple");
-    const StepRecord record = step_once(scene);
+    const StepRecord record = step_scene_once(scene);
     // vx = 1: overlapping and approaching; 0: touching exactly; -1: overlapping, moving apart.
     EXPECT_EQ(record.collisions.size(), vx > 0.0 ? 1u : 0u) << "vx = " << vx;
   }
@@ -77,7 +77,7 @@ TEST(SimpleCollisions, CentreOnAnEdgeOrABoundaryIsNeverDetected) {
   scene.add_half_plane(vec({0, 0}), vec({0, 1}));
   scene.initial.v.setZero();
   scene.model.collisions.method = &contact_method("simple");
-  EXPECT_TRUE(step_once(scene).collisions.empty());
+  EXPECT_TRUE(step_scene_once(scene).collisions.empty());
 }
 
 TEST(SimpleCollisions, HalfPlaneDistanceIsUnsigned) {
@@ -88,7 +88,7 @@ TEST(SimpleCollisions, HalfPlaneDistanceIsUnsigned) {
     scene.add_particle(1, vec({0, -0.05}), vec({0, vy}), false, 0.1);
     scene.add_half_plane(vec({0, 0}), vec({0, 2}));  // the normal's length does not matter
     scene.model.collisions.method = &contact_method("simple");
-    const StepRecord record = step_once(scene);
+    const StepRecord record = step_scene_once(scene);
     if (vy < 0.0) {
       EXPECT_TRUE(record.collisions.empty());
       EXPECT_EQ(scene.initial.v[1], -1.0);
@@ -108,7 +108,7 @@ TEST(SimpleCollisions, GaussSeidelInTheCourseOrderPassesMomentumAlongAChain) {
   scene.add_particle(1, vec({0, 0}), vec({0, 0}), false, 0.25);
   scene.add_particle(1, vec({0.45, 0}), vec({0, 0}), false, 0.25);
   scene.model.collisions.method = &contact_method("simple");
-  const StepRecord record = step_once(scene);
+  const StepRecord record = step_scene_once(scene);
   ASSERT_EQ(record.collisions.size(), 2u);
   EXPECT_EQ(record.collisions[0].second, 1);
   EXPECT_EQ(record.collisions[1].first, 1);
@@ -123,7 +123,7 @@ TEST(SimpleCollisions, FixedParticlesHaveInfiniteMassAndDoNotMove) {
   scene.add_particle(1, vec({0, 0}), vec({1, 0}), false, 0.2);
   scene.add_particle(7, vec({0.35, 0}), vec({0, 0}), true, 0.2);
   scene.model.collisions.method = &contact_method("simple");
-  step_once(scene);
+  step_scene_once(scene);
   EXPECT_EQ(scene.initial.v[0], -1.0);  // reflected as from a wall
   EXPECT_EQ(scene.initial.v[1], 0.0);
   EXPECT_EQ(scene.initial.v[2], 0.0);
@@ -293,7 +293,7 @@ TEST(SimpleCollisions, WorkedExampleE3HalfPlaneNormalAndImpulseAreTheCoursesBits
   scene.add_half_plane(vec({-1, -1}), vec({1, 1}));
   scene.model.collisions.method = &contact_method("simple");
   scene.model.collisions.cor = 0.5;
-  const StepRecord record = step_once(scene);
+  const StepRecord record = step_scene_once(scene);
   ASSERT_EQ(record.collisions.size(), 1u);
   EXPECT_EQ(record.collisions[0].kind, CollisionKind::kParticleHalfPlane);
   EXPECT_EQ(record.collisions[0].normal[0], -0.12499999999999997);
@@ -311,12 +311,12 @@ TEST(SimpleCollisions, AFixedParticleBouncesOffAHalfPlaneAndThenMoves) {
   scene.add_half_plane(vec({0, 0}), vec({0, 1}));
   scene.model.collisions.method = &contact_method("simple");
   scene.model.collisions.cor = 0.5;
-  const StepRecord record = step_once(scene);
+  const StepRecord record = step_scene_once(scene);
   ASSERT_EQ(record.collisions.size(), 1u);
   EXPECT_EQ(scene.initial.q[1], 0.125);
   EXPECT_EQ(scene.initial.v[0], 0.0);
   EXPECT_EQ(scene.initial.v[1], 0.5);
-  step_once(scene);
+  step_scene_once(scene);
   EXPECT_EQ(scene.initial.q[1], 0.15625);
   EXPECT_EQ(scene.initial.v[1], 0.5);
 }

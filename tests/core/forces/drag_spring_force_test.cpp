@@ -9,7 +9,7 @@
 namespace fosssim {
 namespace {
 
-void expect_derivatives_pass(const Force& force, const Vector& q) {
+void expect_drag_spring_derivatives_pass(const Force& force, const Vector& q) {
   const Vector v = Vector::LinSpaced(q.size(), -0.5, 0.5);
   DerivativeCheckOptions options;
   options.step = 1e-5;
@@ -24,7 +24,7 @@ TEST(DragSpringForce, DerivativesMatchFiniteDifferences3D) {
   force.grab(1, Eigen::Vector3d(0.3, -2.0, 0.7), 250.0);
   Vector q(9);
   q << 0.1, 0.2, 0.3, -0.4, 0.5, 0.9, 1.0, 1.1, -1.2;
-  expect_derivatives_pass(force, q);
+  expect_drag_spring_derivatives_pass(force, q);
 }
 
 TEST(DragSpringForce, DerivativesMatchFiniteDifferences2D) {
@@ -32,7 +32,7 @@ TEST(DragSpringForce, DerivativesMatchFiniteDifferences2D) {
   force.grab(0, Eigen::Vector3d(0.3, -2.0, 99.0), 40.0);  // z is ignored in 2D
   Vector q(4);
   q << 0.1, 0.2, -0.4, 0.5;
-  expect_derivatives_pass(force, q);
+  expect_drag_spring_derivatives_pass(force, q);
 }
 
 TEST(DragSpringForce, PullsTheGrabbedParticleTowardTheTarget) {

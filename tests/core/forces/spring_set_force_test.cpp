@@ -39,8 +39,8 @@ RandomSprings random_springs(int dim, int n, int count, bool damped, unsigned se
 }
 
 template <int D>
-void expect_derivatives_pass(const Force& force, const Vector& q, const Vector& v,
-                             const Vector& mass) {
+void expect_spring_set_derivatives_pass(const Force& force, const Vector& q, const Vector& v,
+                                        const Vector& mass) {
   DerivativeCheckOptions options;
   options.step = suggest_finite_difference_step(q, D);
   for (const DerivativeCheck& check : check_force_derivatives(force, q, v, mass, options)) {
@@ -54,7 +54,7 @@ void check_random(bool damped) {
   for (unsigned seed = 1; seed <= 5; ++seed) {
     const RandomSprings r = random_springs(D, 6, 9, damped, seed);
     const SpringSetForce<D> force(r.springs, "random");
-    expect_derivatives_pass<D>(force, r.q, r.v, r.mass);
+    expect_spring_set_derivatives_pass<D>(force, r.q, r.v, r.mass);
   }
 }
 

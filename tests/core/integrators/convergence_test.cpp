@@ -81,7 +81,7 @@ void expect_order(const Problem& problem, const IntegratorMethod& method, int di
 }
 
 template <int D>
-Problem oscillator() {
+Problem oscillator_problem() {
   const double m = 1.5, k = 6.0, omega = std::sqrt(k / m), A = 1.0, B = 0.7;
   const auto [e1, e2] = plane_axes<D>();
   State exact;
@@ -174,7 +174,8 @@ double round_off_tolerance(std::string_view method, int steps, double h, const S
 
 TYPED_TEST(ConvergenceTest, EveryMethodHasItsDeclaredOrderOnEveryProblem) {
   constexpr int D = TypeParam::value;
-  for (const Problem& problem : {oscillator<D>(), free_fall<D>(), drag<D>(), circular_orbit<D>()}) {
+  for (const Problem& problem :
+       {oscillator_problem<D>(), free_fall<D>(), drag<D>(), circular_orbit<D>()}) {
     for (const IntegratorMethod* method : all_integrators()) expect_order(problem, *method, D);
   }
 }

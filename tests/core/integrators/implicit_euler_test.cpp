@@ -41,7 +41,7 @@ namespace {
 
 FOSSSIM_TEST_SUITE_IN_2D_AND_3D(ImplicitEulerTest);
 
-constexpr std::string_view kKind = "implicit-euler";
+constexpr std::string_view kImplicitEulerKind = "implicit-euler";
 
 /// The model's implicit Euler (its registry entry and options), bound to it.
 std::unique_ptr<ImplicitEuler> implicit_euler(const SceneModel& model) {
@@ -53,7 +53,7 @@ std::unique_ptr<ImplicitEuler> implicit_euler(const SceneModel& model) {
 }
 
 /// One step with a fresh ImplicitEuler; returns the state and the Newton iterations taken.
-std::pair<State, int> step_once(const SceneModel& model, State state) {
+std::pair<State, int> newton_step_once(const SceneModel& model, State state) {
   const auto integrator = implicit_euler(model);
   integrator->step(state);
   return {state, integrator->last_iterations()};
@@ -63,8 +63,8 @@ TYPED_TEST(ImplicitEulerTest, ParticleUnderGravity) {
   constexpr int D = TypeParam::value;
   const double h = 0.1;
   const FallingParticle p(D, 131);
-  const TestScene scene = p.scene(kKind, h);
-  const auto [next, iterations] = step_once(scene.model, scene.initial);
+  const TestScene scene = p.scene(kImplicitEulerKind, h);
+  const auto [next, iterations] = newton_step_once(scene.model, scene.initial);
   expect_close(next.v, p.w + h * p.g, 1e-15, "velocity");
   expect_close(next.q, p.x + h * p.w + h * h * p.g, 1e-15, "position");
   EXPECT_EQ(iterations, 2);
@@ -75,8 +75,8 @@ TYPED_TEST(ImplicitEulerTest, DampedSpringStepSolvesTheBackwardEulerEquations) {
   const double h = 0.1;
   for (unsigned seed = 132; seed <= 135; ++seed) {
     const AnchoredSpring s(D, seed, 1.5, 300.0, 0.7, 2.5, 0.3);
-    const TestScene scene = s.scene(kKind, h);
-    const auto [next, iterations] = step_once(scene.model, scene.initial);
+    const TestScene scene = s.scene(kImplicitEulerKind, h);
+    const auto [next, iterations] = newton_step_once(scene.model, scene.initial);
     const Vector v1 = next.v.tail(D);
     s.expect_step(next, h, s.x + h * v1, v1, 1e-15);  // fixed particle; q' = q + h v'
     const Vector force =
@@ -93,16 +93,16 @@ TYPED_TEST(ImplicitEulerTest, LinearSystemsStepInClosedFormInTwoIterations) {
   Random random(136);
   const auto r = [&] { return random.uniform_vector(D, -1.0, 1.0); };
   const LinearAnchoredSystem anchored{0.2, 1.3, 150.0, 0.7, r(), r(), r(), r()};
-  TestScene scene = anchored.scene(kKind);
-  auto [next, iterations] = step_once(scene.model, scene.initial);
+  TestScene scene = anchored.scene(kImplicitEulerKind);
+  auto [next, iterations] = newton_step_once(scene.model, scene.initial);
   State expected = anchored.backward_euler_step();
   expect_close(next.q, expected.q, 1e-14, "anchored: positions");
   expect_close(next.v, expected.v, 1e-14, "anchored: velocities");
   EXPECT_EQ(iterations, 2);
 
   const LinearPairSystem pair{0.2, 0.8, 90.0, 0.4, r(), r(), r(), r()};
-  scene = pair.scene(kKind);
-  std::tie(next, iterations) = step_once(scene.model, scene.initial);
+  scene = pair.scene(kImplicitEulerKind);
+  std::tie(next, iterations) = newton_step_once(scene.model, scene.initial);
   expected = pair.backward_euler_step();
   expect_close(next.q, expected.q, 1e-14, "pair: positions");
   expect_close(next.v, expected.v, 1e-14, "pair: velocities");
@@ -113,7 +113,7 @@ TYPED_TEST(ImplicitEulerTest, LinearSystemsStepInClosedFormInTwoIterations) {
 /// released horizontally under gravity with random velocities of size ~1 (seed 137).
 template <int D>
 TestScene stiff_chain(double k, double h, int links) {
-  TestScene scene(D, kKind, h);
+  TestScene scene(D, kImplicitEulerKind, h);
   Random random(137);
   scene.add_particle(1.0, Vector::Zero(D), Vector::Zero(D), /*fixed=*/true);
   for (int p = 1; p <= links; ++p) {
@@ -166,7 +166,7 @@ SceneModel wandering_newton_chain(State& state, bool conservative) {
   model.mass = Vector::Ones(D * n);
   model.fixed.assign(n, false);
   model.fixed[0] = true;
-  model.integrator.use(integrator_method(kKind));
+  model.integrator.use(integrator_method(kImplicitEulerKind));
   model.integrator.dt = 0.1;
   state.q = Vector::Zero(D * n);
   state.v = Vector::Zero(D * n);

@@ -13,16 +13,8 @@
 namespace fosssim {
 namespace {
 
-constexpr double kDt = 1.0 / 30.0;
+constexpr double kClothDt = 1.0 / 30.0;
 constexpr double kStiffness = 20.0;
-
-/// A cloth in motion: 12 Newton steps after release, springs stretched and compressed.
-State moving_cloth_state() {
-  Scene newton = testing::cloth(7, kStiffness, "implicit-euler", kDt);
-  Simulation simulation(newton.model, newton.initial);
-  for (int step = 0; step < 12; ++step) simulation.step();
-  return simulation.state();
-}
 
 /// The implicit Euler step from `start` by the course's Newton solver, to round-off.
 State exact_step(const SceneModel& model, const State& start) {
@@ -37,9 +29,9 @@ State exact_step(const SceneModel& model, const State& start) {
 /// from the exact step, relative to how far the exact step moves the cloth.
 double step_error(const std::string& method,
                   std::initializer_list<std::pair<std::string_view, double>> options) {
-  Scene scene = testing::cloth(7, kStiffness, method, kDt);
+  Scene scene = testing::cloth(7, kStiffness, method, kClothDt);
   for (const auto& [name, value] : options) scene.model.integrator.options.set(name, value);
-  const State start = moving_cloth_state();
+  const State start = testing::moving_cloth_state();
   const State exact = exact_step(scene.model, start);
   State state = start;
   std::unique_ptr<Integrator> integrator = make_integrator(scene.model);
@@ -72,11 +64,11 @@ TEST(ImplicitSolvers, AndersonAccelerationConvergesToTheImplicitEulerStepFarFast
 }
 
 TEST(ImplicitSolvers, ChebyshevAccelerationConvergesToTheImplicitEulerStep) {
-  Scene scene = testing::cloth(7, kStiffness, "accelerated-local-global", kDt);
+  Scene scene = testing::cloth(7, kStiffness, "accelerated-local-global", kClothDt);
   scene.model.integrator.options.set("acceleration", std::string("chebyshev"));
   scene.model.integrator.options.set("rho", 0.98);
   scene.model.integrator.options.set("iterations", 400);
-  const State start = moving_cloth_state();
+  const State start = testing::moving_cloth_state();
   const State exact = exact_step(scene.model, start);
   State state = start;
   make_integrator(scene.model)->step(state);

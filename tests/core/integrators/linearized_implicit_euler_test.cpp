@@ -33,13 +33,13 @@ namespace {
 
 FOSSSIM_TEST_SUITE_IN_2D_AND_3D(LinearizedImplicitEulerTest);
 
-constexpr std::string_view kKind = "linearized-implicit-euler";
+constexpr std::string_view kLinearizedKind = "linearized-implicit-euler";
 
 TYPED_TEST(LinearizedImplicitEulerTest, ParticleUnderGravity) {
   constexpr int D = TypeParam::value;
   const double h = 0.1;
   const FallingParticle p(D, 121);
-  const TestScene scene = p.scene(kKind, h);
+  const TestScene scene = p.scene(kLinearizedKind, h);
   const State next = run_steps(scene.model, scene.initial, 1);
   expect_close(next.v, p.w + h * p.g, 1e-15, "velocity");
   expect_close(next.q, p.x + h * p.w + h * h * p.g, 1e-15, "position");
@@ -57,7 +57,7 @@ TYPED_TEST(LinearizedImplicitEulerTest, UndampedSpringFromAMovingFixedParticle) 
     const double along = rhs.dot(n);
     const Vector dv = along * n / (s.m + h * s.c + h * h * s.k) +
                       (rhs - along * n) / (s.m + h * s.c + h * h * s.k * (l - s.l0) / l);
-    const TestScene scene = s.scene(kKind, h);
+    const TestScene scene = s.scene(kLinearizedKind, h);
     s.expect_step(run_steps(scene.model, scene.initial, 1), h, s.x + h * (s.w + dv), s.w + dv,
                   1e-14);
   }
@@ -79,7 +79,7 @@ TYPED_TEST(LinearizedImplicitEulerTest, DampedSpringFromAMovingFixedParticle) {
     const Eigen::MatrixXd A = (s.m + h * s.c) * I + h * h * hess_x + h * s.b * P;
     const Vector rhs = h * (-s.k * (l - s.l0) * n - s.b * n.dot(rel) * n - s.c * s.w);
     const Vector dv = A.partialPivLu().solve(rhs);
-    const TestScene scene = s.scene(kKind, h);
+    const TestScene scene = s.scene(kLinearizedKind, h);
     s.expect_step(run_steps(scene.model, scene.initial, 1), h, s.x + h * (s.w + dv), s.w + dv,
                   1e-14);
   }
@@ -90,14 +90,14 @@ TYPED_TEST(LinearizedImplicitEulerTest, LinearSystemsStepInClosedForm) {
   Random random(128);
   const auto r = [&] { return random.uniform_vector(D, -1.0, 1.0); };
   const LinearAnchoredSystem anchored{0.2, 1.3, 150.0, 0.7, r(), r(), r(), r()};
-  TestScene scene = anchored.scene(kKind);
+  TestScene scene = anchored.scene(kLinearizedKind);
   State next = run_steps(scene.model, scene.initial, 1);
   State expected = anchored.backward_euler_step();
   expect_close(next.q, expected.q, 1e-14, "anchored: positions");
   expect_close(next.v, expected.v, 1e-14, "anchored: velocities");
 
   const LinearPairSystem pair{0.2, 0.8, 90.0, 0.4, r(), r(), r(), r()};
-  scene = pair.scene(kKind);
+  scene = pair.scene(kLinearizedKind);
   next = run_steps(scene.model, scene.initial, 1);
   expected = pair.backward_euler_step();
   expect_close(next.q, expected.q, 1e-14, "pair: positions");

@@ -12,17 +12,9 @@
 namespace fosssim {
 namespace {
 
-/// A cloth in motion: 12 Newton steps after release, springs stretched and compressed.
-State moving_cloth_state() {
-  Scene newton = testing::cloth(7, 20.0, "implicit-euler", 1.0 / 30.0);
-  Simulation simulation(newton.model, newton.initial);
-  for (int step = 0; step < 12; ++step) simulation.step();
-  return simulation.state();
-}
-
 TEST(LocalGlobalCloth, ConvergesToNewtonsImplicitEulerAsIterationsGrow) {
   Scene scene = testing::cloth(7, 20.0, "local-global", 1.0 / 30.0);
-  const State start = moving_cloth_state();
+  const State start = testing::moving_cloth_state();
 
   State newton_state = start;
   ImplicitEuler newton(NewtonSettings{1e-13, 200});

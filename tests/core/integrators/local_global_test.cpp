@@ -19,12 +19,12 @@
 namespace fosssim {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 /// A unit mass on a spring (k = 4π², so ω = 2π; rest length 1) to a fixed particle at the
 /// origin, released 0.1 m stretched along the unit direction `axis` (in dim dimensions).
-testing::TestScene oscillator(int dim, std::string_view kind, double dt,
-                              const Eigen::Vector3d& axis) {
+constexpr double kPi = std::numbers::pi;
+
+testing::TestScene oscillator_scene(int dim, std::string_view kind, double dt,
+                                    const Eigen::Vector3d& axis) {
   std::vector<double> positions(2 * dim, 0.0);
   for (int c = 0; c < dim; ++c) positions[dim + c] = 1.1 * axis[c];
   testing::TestScene scene = testing::particles(dim, positions, 1.0, {true, false});
@@ -39,7 +39,7 @@ testing::TestScene oscillator(int dim, std::string_view kind, double dt,
 double oscillator_error(int dim, std::string_view kind, int steps) {
   const Eigen::Vector3d axis =
       dim == 3 ? Eigen::Vector3d(1.0, 2.0, 2.0) / 3.0 : Eigen::Vector3d(0.6, 0.8, 0.0);
-  Scene scene = oscillator(dim, kind, 1.0 / steps, axis);
+  Scene scene = oscillator_scene(dim, kind, 1.0 / steps, axis);
   Simulation simulation(scene.model, scene.initial);
   while (!simulation.finished()) simulation.step();
   const double amplitude = 1.0 + 0.1 * std::cos(2.0 * kPi * 1.0);
@@ -70,9 +70,9 @@ TEST(LocalGlobal, SingleSpringFollowsCosOmegaTWithFirstOrderError) {
 TEST(LocalGlobal, SingleSpringMatchesNewtonsImplicitEulerStepByStep) {
   // Along the spring the system is linear, so one local/global iteration is exact.
   const Eigen::Vector3d axis = Eigen::Vector3d(2.0, -1.0, 2.0) / 3.0;
-  Scene lg = oscillator(3, "local-global", 0.01, axis);
+  Scene lg = oscillator_scene(3, "local-global", 0.01, axis);
   lg.model.integrator.options.set("iterations", 1);
-  Scene newton = oscillator(3, "implicit-euler", 0.01, axis);
+  Scene newton = oscillator_scene(3, "implicit-euler", 0.01, axis);
   Simulation a(lg.model, lg.initial), b(newton.model, newton.initial);
   for (int step = 0; step < 100; ++step) {
     a.step();
@@ -85,8 +85,8 @@ TEST(LocalGlobal, SingleSpringMatchesNewtonsImplicitEulerStepByStep) {
 TEST(LocalGlobal, SpringDampingAlongTheSpringEqualsAxialDamping) {
   // Laplacian damping -b(v_i - v_j) equals SpringForce's b (n·dv) n when dv is along n.
   const Eigen::Vector3d axis = Eigen::Vector3d(1.0, 2.0, 2.0) / 3.0;
-  testing::TestScene lg = oscillator(3, "local-global", 0.01, axis);
-  testing::TestScene newton = oscillator(3, "implicit-euler", 0.01, axis);
+  testing::TestScene lg = oscillator_scene(3, "local-global", 0.01, axis);
+  testing::TestScene newton = oscillator_scene(3, "implicit-euler", 0.01, axis);
   for (testing::TestScene* scene : {&lg, &newton}) {
     scene->model.forces.clear();
     scene->add_spring(0, 1, 4.0 * kPi * kPi, 1.0, 1.5);

@@ -27,14 +27,14 @@
 namespace fosssim::testing {
 namespace {
 
-constexpr double kDt = 1.0 / 30.0;
+constexpr double kNewtonDt = 1.0 / 30.0;
 
 /// A 12×12 cloth of 1000 N/m springs (structural, shear and bend), squeezed around its centre
 /// to `squeeze_x` of its size along x and `squeeze_z` along z, with a small out-of-plane
 /// ripple that lets it buckle, at rest, held at two corners, in gravity; newton with `hessian`.
 TestScene squeezed_cloth(double squeeze_x, double squeeze_z, const std::string& hessian,
                          double b = 0.0) {
-  TestScene scene = cloth(12, 1000.0, "newton", kDt, /*horizontal=*/true, "corners", b);
+  TestScene scene = cloth(12, 1000.0, "newton", kNewtonDt, /*horizontal=*/true, "corners", b);
   scene.model.integrator.options.set("hessian", hessian);
   scene.model.integrator.options.set("max-iterations", 1000);
   Vector& q = scene.initial.q;
@@ -46,15 +46,15 @@ TestScene squeezed_cloth(double squeeze_x, double squeeze_z, const std::string& 
   return scene;
 }
 
-struct Outcome {
+struct NewtonOutcome {
   int iterations = 0;
   State state;
 };
 
 /// One step of the scene's newton from its initial state.
-Outcome newton_step(const TestScene& scene) {
+NewtonOutcome newton_step(const TestScene& scene) {
   auto newton = bound_integrator<Newton>(scene.model);
-  Outcome out{0, scene.initial};
+  NewtonOutcome out{0, scene.initial};
   newton->step(out.state);
   out.iterations = newton->last_iterations();
   return out;
@@ -99,7 +99,7 @@ struct StepCheck {
 
 StepCheck check_step(const TestScene& scene, const State& end) {
   const ForceSet forces(scene.model);
-  const BackwardEulerStep problem{forces, scene.initial, kDt};
+  const BackwardEulerStep problem{forces, scene.initial, kNewtonDt};
   const Vector dv = end.v - scene.initial.v;
   const Vector zero = Vector::Zero(dv.size());
   return {problem.residual(dv).lpNorm<Eigen::Infinity>() /
@@ -111,19 +111,20 @@ TEST(NewtonTest, EveryChoiceEndsAtAnImplicitEulerStepOfLowerPotential) {
   for (const char* hessian : {"adaptive", "exact", "projected"}) {
     SCOPED_TRACE(hessian);
     const TestScene scene = squeezed_cloth(0.8, 0.8, hessian);
-    const Outcome out = newton_step(scene);
+    const NewtonOutcome out = newton_step(scene);
     const StepCheck check = check_step(scene, out.state);
     EXPECT_LT(check.residual, 1e-9);
     EXPECT_LT(check.potential_end, check.potential_start);
     // Positions follow the new velocities (implicit Euler).
-    EXPECT_LT((out.state.q - scene.initial.q - kDt * out.state.v).lpNorm<Eigen::Infinity>(), 1e-15);
+    EXPECT_LT((out.state.q - scene.initial.q - kNewtonDt * out.state.v).lpNorm<Eigen::Infinity>(),
+              1e-15);
   }
 }
 
 TEST(NewtonTest, RunsGiveTheSameBits) {
   const TestScene scene = squeezed_cloth(0.6, 1.0, "adaptive");
-  const Outcome first = newton_step(scene);
-  const Outcome second = newton_step(scene);
+  const NewtonOutcome first = newton_step(scene);
+  const NewtonOutcome second = newton_step(scene);
   EXPECT_EQ(first.iterations, second.iterations);
   EXPECT_TRUE(first.state.q == second.state.q);
   EXPECT_TRUE(first.state.v == second.state.v);
@@ -133,7 +134,7 @@ TEST(NewtonTest, SolvesStepsOfDampedSpringsByTheResidual) {
   // Flat and rippled: on the squeezed cloth the residual line search stalls.
   const TestScene scene = squeezed_cloth(1.0, 1.0, "adaptive", /*b=*/0.5);
   ASSERT_FALSE(ForceSet(scene.model).is_conservative());
-  const Outcome out = newton_step(scene);
+  const NewtonOutcome out = newton_step(scene);
   EXPECT_LT(check_step(scene, out.state).residual, 1e-9);
 }
 

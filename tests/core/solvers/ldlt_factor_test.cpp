@@ -53,7 +53,7 @@ int negative_eigenvalues(const SparseMatrix& A) {
   return static_cast<int>((eigenvalues.array() < 0.0).count());
 }
 
-void expect_solves(const LdltFactor& factor, const SparseMatrix& A, unsigned seed) {
+void expect_factor_solves(const LdltFactor& factor, const SparseMatrix& A, unsigned seed) {
   const Vector b = Random(seed).uniform_vector(static_cast<int>(A.rows()), -1.0, 1.0);
   Vector x(b.size());
   factor.solve(b.data(), x.data());
@@ -77,7 +77,7 @@ TEST(LdltFactor, CountsNegativePivotsAsTheMatrixHasNegativeEigenvalues) {
     factor.analyze(A);
     ASSERT_TRUE(factor.factorize(A));
     EXPECT_EQ(factor.negative_pivots(), expected);
-    expect_solves(factor, A, 302);
+    expect_factor_solves(factor, A, 302);
     EXPECT_GT(factor.factor_nonzeros(), A.nonZeros() / 2.0);
     EXPECT_GT(factor.factor_flops(), 0.0);
   }
@@ -90,7 +90,7 @@ TEST(LdltFactor, OneAnalysisServesNewValuesOfThePattern) {
     const SparseMatrix A = grid_matrix(10, seed % 2 == 0 ? 4.5 : -0.5, seed);
     ASSERT_TRUE(factor.factorize(A));
     EXPECT_EQ(factor.negative_pivots(), negative_eigenvalues(A));
-    expect_solves(factor, A, seed + 100);
+    expect_factor_solves(factor, A, seed + 100);
   }
 }
 
@@ -103,11 +103,11 @@ TEST(LdltFactor, KeptWorkspaceServesALargerPatternAndDelayedPivots) {
   const SparseMatrix small = grid_matrix(5, 4.5, 310);
   factor.analyze(small);
   ASSERT_TRUE(factor.factorize(small));
-  expect_solves(factor, small, 311);
+  expect_factor_solves(factor, small, 311);
   const SparseMatrix large = grid_matrix(20, 4.5, 312);
   factor.analyze(large);
   ASSERT_TRUE(factor.factorize(large));
-  expect_solves(factor, large, 313);
+  expect_factor_solves(factor, large, 313);
   SparseMatrix hollow = grid_matrix(20, 0.0, 314);
   for (int k = 0; k < hollow.outerSize(); ++k) {
     for (SparseMatrix::InnerIterator it(hollow, k); it; ++it) {
@@ -116,9 +116,9 @@ TEST(LdltFactor, KeptWorkspaceServesALargerPatternAndDelayedPivots) {
   }
   ASSERT_TRUE(factor.factorize(hollow));
   EXPECT_EQ(factor.negative_pivots(), negative_eigenvalues(hollow));
-  expect_solves(factor, hollow, 315);
+  expect_factor_solves(factor, hollow, 315);
   ASSERT_TRUE(factor.factorize(large));  // and back
-  expect_solves(factor, large, 316);
+  expect_factor_solves(factor, large, 316);
 }
 
 TEST(LdltFactor, ReportsASingularMatrix) {
@@ -167,7 +167,7 @@ TEST(LdltFactor, SinglePrecisionRefusesAnEntryBeyondFloatsRange) {
   LdltFactor twice(FactorPrecision::kDouble);
   twice.analyze(A);
   ASSERT_TRUE(twice.factorize(A));
-  expect_solves(twice, A, 314);
+  expect_factor_solves(twice, A, 314);
 }
 
 }  // namespace

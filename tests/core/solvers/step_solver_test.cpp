@@ -43,7 +43,8 @@ SparseMatrix sparse(const Eigen::MatrixXd& dense_matrix) { return dense_matrix.s
 
 /// Expects x to solve A x = b as well as dense LU does: relative residual and distance to the
 /// dense solution at round-off level for the matrix's conditioning.
-void expect_solves(const SparseMatrix& A, const std::optional<Vector>& x, const Vector& b) {
+void expect_step_solver_solves(const SparseMatrix& A, const std::optional<Vector>& x,
+                               const Vector& b) {
   ASSERT_TRUE(x.has_value());
   const Eigen::MatrixXd dense_A(A);
   const Vector reference = dense_A.partialPivLu().solve(b);
@@ -97,7 +98,7 @@ TEST(StepSolver, SymmetricPositiveDefiniteSystemUsesLDLT) {
   const Vector b = Random(152).uniform_vector(24, -1.0, 1.0);
   StepSolver solver(true);
   const auto x = solver.solve(A, b);
-  expect_solves(A, x, b);
+  expect_step_solver_solves(A, x, b);
   EXPECT_EQ(solver.last_factorization(), Factorization::kLDLT);
 }
 
@@ -106,11 +107,11 @@ TEST(StepSolver, NonSymmetricSystemUsesLU) {
   ASSERT_GT(asymmetry(Eigen::MatrixXd(A)), 1e-3) << "precondition: A is not symmetric";
   const Vector b = Random(154).uniform_vector(16, -1.0, 1.0);
   StepSolver solver(false);
-  expect_solves(A, solver.solve(A, b), b);
+  expect_step_solver_solves(A, solver.solve(A, b), b);
   EXPECT_EQ(solver.last_factorization(), Factorization::kLU);
 
   StepSolver misinformed(true);  // told "symmetric": LDLᵀ sees one triangle, the residual check
-  expect_solves(A, misinformed.solve(A, b), b);  // rejects its answer
+  expect_step_solver_solves(A, misinformed.solve(A, b), b);  // rejects its answer
   EXPECT_EQ(misinformed.last_factorization(), Factorization::kLU);
 }
 
@@ -123,7 +124,7 @@ TEST(StepSolver, IndefiniteSymmetricSystemStillSolvesAccurately) {
   ASSERT_GT(eigenvalues.maxCoeff(), 0.0);
   const Vector b = Random(156).uniform_vector(12, -1.0, 1.0);
   StepSolver solver(true);
-  expect_solves(A, solver.solve(A, b), b);
+  expect_step_solver_solves(A, solver.solve(A, b), b);
   std::printf("indefinite step matrix (eigenvalues %.3g .. %.3g) solved by %s\n",
               eigenvalues.minCoeff(), eigenvalues.maxCoeff(),
               solver.last_factorization() == Factorization::kLDLT ? "LDLT" : "LU");
@@ -133,7 +134,7 @@ TEST(StepSolver, IndefiniteSymmetricSystemStillSolvesAccurately) {
   tricky << 1e-17, 1.0, 1.0, 1e-17;
   const Vector ones = Vector::Ones(2);
   const auto x = solver.solve(sparse(tricky), ones);
-  expect_solves(sparse(tricky), x, ones);
+  expect_step_solver_solves(sparse(tricky), x, ones);
   EXPECT_EQ(solver.last_factorization(), Factorization::kLU);
 }
 
@@ -182,14 +183,14 @@ TEST(StepSolver, ReusesTheAnalysisForTheSamePatternAndRedoesItForANewOne) {
   for (bool symmetric : {true, false}) {
     SCOPED_TRACE(symmetric ? "LDLT" : "LU");
     StepSolver solver(symmetric);
-    expect_solves(patterned(first, 1.0), solver.solve(patterned(first, 1.0), b), b);
-    expect_solves(patterned(first, -1.7), solver.solve(patterned(first, -1.7), b), b);
+    expect_step_solver_solves(patterned(first, 1.0), solver.solve(patterned(first, 1.0), b), b);
+    expect_step_solver_solves(patterned(first, -1.7), solver.solve(patterned(first, -1.7), b), b);
     ASSERT_EQ(patterned(other, 1.3).nonZeros(), patterned(first, 1.3).nonZeros());
-    expect_solves(patterned(other, 1.3), solver.solve(patterned(other, 1.3), b), b);
-    expect_solves(patterned(first, 0.9), solver.solve(patterned(first, 0.9), b), b);
+    expect_step_solver_solves(patterned(other, 1.3), solver.solve(patterned(other, 1.3), b), b);
+    expect_step_solver_solves(patterned(first, 0.9), solver.solve(patterned(first, 0.9), b), b);
     const SparseMatrix bigger = chain_step_matrix<2>(5, 0.5, 0.0, 0.1, 158);
     const Vector b10 = Vector::LinSpaced(10, -1.0, 1.0);
-    expect_solves(bigger, solver.solve(bigger, b10), b10);
+    expect_step_solver_solves(bigger, solver.solve(bigger, b10), b10);
   }
 }
 
@@ -217,7 +218,7 @@ TEST(StepSolver, SparseDirectPathFactorsInSinglePrecisionAndRefinesToRoundOff) {
   const SparseMatrix A = chain_step_matrix<3>(40, 0.5, 0.0, 0.1, 171);
   const Vector b = Random(172).uniform_vector(120, -1.0, 1.0);
   StepSolver solver(true, SolverChoice::kSparseDirect);
-  expect_solves(A, solver.solve(A, b), b);
+  expect_step_solver_solves(A, solver.solve(A, b), b);
   EXPECT_EQ(solver.statistics().ldlt_factorizations, 1);
   EXPECT_EQ(solver.statistics().single_precision_factorizations, 1);
   // GMRES starts from M⁻¹b: a double factor's is often the answer, a float one's never.
@@ -244,7 +245,7 @@ TEST(StepSolver, SparseDirectPathSolvesNonSymmetricMatrices) {
   ASSERT_GT(asymmetry(Eigen::MatrixXd(A)), 1e-3) << "precondition: A is not symmetric";
   const Vector b = Random(164).uniform_vector(80, -1.0, 1.0);
   StepSolver solver(false, SolverChoice::kSparseDirect);
-  expect_solves(A, solver.solve(A, b), b);
+  expect_step_solver_solves(A, solver.solve(A, b), b);
   EXPECT_TRUE(solver.last_factorization() == Factorization::kCholesky ||
               solver.last_factorization() == Factorization::kUmfpack);
   EXPECT_EQ(solver.statistics().ldlt_factorizations, 0);

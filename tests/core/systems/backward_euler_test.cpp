@@ -29,7 +29,7 @@ FOSSSIM_TEST_SUITE_IN_2D_AND_3D(BackwardEulerTest);
 
 /// A stretched chain hanging from a fixed particle, under gravity: conservative.
 template <int D>
-TestScene chain(double h) {
+TestScene spring_chain(double h) {
   Random random(301);
   TestScene scene(D, "implicit-euler", h);
   scene.add_particle(1.0, Vector::Zero(D), Vector::Zero(D), /*fixed=*/true);
@@ -46,7 +46,7 @@ TestScene chain(double h) {
 
 TYPED_TEST(BackwardEulerTest, TheResidualVanishesAtImplicitEulersStep) {
   constexpr int D = TypeParam::value;
-  const TestScene scene = chain<D>(0.05);
+  const TestScene scene = spring_chain<D>(0.05);
   const ForceSet forces(scene.model);
   const BackwardEulerStep problem{forces, scene.initial, 0.05};
   State next = scene.initial;
@@ -60,7 +60,7 @@ TYPED_TEST(BackwardEulerTest, TheResidualVanishesAtImplicitEulersStep) {
 
 TYPED_TEST(BackwardEulerTest, MinusTheResidualIsTheGradientOfTheIncrementalPotential) {
   constexpr int D = TypeParam::value;
-  const TestScene scene = chain<D>(0.05);
+  const TestScene scene = spring_chain<D>(0.05);
   const ForceSet forces(scene.model);
   const BackwardEulerStep problem{forces, scene.initial, 0.05};
   Random random(302);
@@ -80,7 +80,7 @@ TYPED_TEST(BackwardEulerTest, MinusTheResidualIsTheGradientOfTheIncrementalPoten
 
 TYPED_TEST(BackwardEulerTest, LineSearchesDecreaseTheirMerit) {
   constexpr int D = TypeParam::value;
-  const TestScene scene = chain<D>(0.2);  // a large step: the full Newton step may overshoot
+  const TestScene scene = spring_chain<D>(0.2);  // a large step: the full Newton step may overshoot
   const ForceSet forces(scene.model);
   const BackwardEulerStep problem{forces, scene.initial, 0.2};
   const Vector dv = Vector::Zero(scene.model.num_dofs());

@@ -10,8 +10,8 @@
 //   and none on the fixed ones; reassembling gives the same matrix; given a vector u, the
 //   right-hand side loses h² hessX u over every DOF (before the fixed-particle rule);
 // - writes: when every spring is damped, the hessV pass writes the blocks of the hessX pass and
-//   the recorded list is kept once (as long as an undamped chain's), walked twice with the same
-//   bits as triplets; when the passes stop matching, they are recorded anew;
+//   the recorded list is kept once (as long as an undamped chain's), walked twice with the
+//   same bits as triplets; when the passes stop matching, they are recorded anew;
 // - definite_hessian: a compressed spring's block loses its negative transverse stiffness, so
 //   the matrix differs from the exact one exactly where that spring's blocks are.
 
@@ -102,7 +102,7 @@ TYPED_TEST(StepMatrixTest, EliminationKeepsOnlyTheFreeDofs) {
 
 /// Four particles, the second fixed, in a chain of springs with damping `b` (the last one of
 /// rest length 0).
-TestScene chain(int dim, double b) {
+TestScene damped_chain(int dim, double b) {
   Random random(31);
   TestScene scene(dim, "implicit-euler", 0.05);
   for (int p = 0; p < 4; ++p) {
@@ -118,8 +118,8 @@ TestScene chain(int dim, double b) {
 
 TYPED_TEST(StepMatrixTest, AHessVPassThatRepeatsTheHessXPassIsKeptOnce) {
   constexpr int D = TypeParam::value;
-  const TestScene damped = chain(D, 0.5);
-  const TestScene undamped = chain(D, 0.0);  // hessV has no entries
+  const TestScene damped = damped_chain(D, 0.5);
+  const TestScene undamped = damped_chain(D, 0.0);  // hessV has no entries
   const ForceSet damped_forces(damped.model), undamped_forces(undamped.model);
   StepMatrix matrix(damped_forces, FixedParticleRule::kIdentityRows);
   StepMatrix reference(damped_forces, FixedParticleRule::kIdentityRows);
