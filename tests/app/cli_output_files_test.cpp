@@ -28,11 +28,18 @@ class CliOutputFiles : public ::testing::Test {
     folder_.write("scene.xml", testing::kTinyScene);
     ASSERT_EQ(::mkfifo((folder_ / "fifo").c_str(), 0600), 0);
   }
-  /// Runs FOSSSim with `arguments` while `timeout 20 cat fifo > copy` reads the FIFO.
+  /// Runs FOSSSim with `arguments` while `cat` copies the FIFO to `copy` (at most 20 s). FOSSSim
+  /// starts in about 10 ms and could open the FIFO before a background reader had, so the order
+  /// is made certain: the shell holds the FIFO open read-write (which does not block on Linux),
+  /// the reader opens it and says so by creating `ready`, FOSSSim runs once `ready` exists, and
+  /// the shell's end is closed after FOSSSim's, so that the reader sees the end of the data.
   testing::ProgramResult fosssim_with_reader(const std::string& arguments) {
-    return testing::run_command(folder_, "timeout 20 cat fifo > copy & reader=$!; " +
-                                             testing::quoted(testing::fosssim_program()) + " " +
-                                             arguments + "; status=$?; wait $reader; exit $status");
+    return testing::run_command(
+        folder_, "exec 3<>fifo; (exec 3<&-; exec 4<fifo; : > ready; exec timeout 20 cat <&4 > copy) "
+                 "& reader=$!; n=0; while [ ! -e ready ] && [ $n -lt 2000 ]; do sleep 0.01; "
+                 "n=$((n+1)); done; " +
+                     testing::quoted(testing::fosssim_program()) + " " + arguments +
+                     " 3<&-; status=$?; exec 3<&-; wait $reader; exit $status");
   }
   testing::ProgramResult fosssim(const std::string& arguments) {
     return testing::run_command(
