@@ -57,10 +57,10 @@ TEST(Gmres, SolvesInOneIterationWithAnExactPreconditionerAndInAFewWithANearbyOne
 }
 
 TEST(Gmres, SolvesAnNByNSystemInNIterationsWithoutPreconditioner) {
-  const int n = 12;
+  constexpr int n = 12;
   const SparseMatrix A = tridiagonal(n, 0.1);  // poorly conditioned, non-symmetric
   const Vector b = Random(402).uniform_vector(n, -1.0, 1.0);
-  const auto identity = [n](const double* r, double* z) { std::copy(r, r + n, z); };
+  const auto identity = [](const double* r, double* z) { std::copy(r, r + n, z); };
   Gmres gmres;
   Vector x = Vector::Zero(n);
   const KrylovResult result = gmres.solve(A, b, x, identity, 1e-10 * b.norm(), n);
@@ -70,10 +70,10 @@ TEST(Gmres, SolvesAnNByNSystemInNIterationsWithoutPreconditioner) {
 }
 
 TEST(Gmres, GivesUpEarlyOnAPreconditionerThatCannotReachTheTolerance) {
-  const int n = 400;
+  constexpr int n = 400;
   const SparseMatrix A = tridiagonal(n, 0.05);
   const Vector b = Random(403).uniform_vector(n, -1.0, 1.0);
-  const auto identity = [n](const double* r, double* z) { std::copy(r, r + n, z); };
+  const auto identity = [](const double* r, double* z) { std::copy(r, r + n, z); };
   Gmres gmres;
   Vector x = Vector::Zero(n);
   const KrylovResult patient = gmres.solve(A, b, x, identity, 1e-12 * b.norm(), 30);
