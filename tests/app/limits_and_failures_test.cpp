@@ -27,23 +27,15 @@
 
 #include "core/integrators/integrator_registry.h"
 #include "support/run_program.h"
+#include "support/tiny_scenes.h"
 #include "core/sanitizers.h"
 
 namespace fosssim {
 namespace {
 
 namespace fs = std::filesystem;
+using fosssim::testing::kFixedSpringScene;
 using fosssim::testing::ProgramResult;
-
-constexpr const char* kFixedSpringScene = R"(<scene>
-  <duration time="1.0"/>
-  <integrator type="implicit-euler" dt="0.01"/>
-  <particle m="1" px="0" py="0" vx="0" vy="0" fixed="1"/>
-  <particle m="1" px="1.2" py="0.1" vx="0" vy="0" fixed="0"/>
-  <edge i="0" j="1"/>
-  <springforce edge="0" k="20" l0="1" b="0.3"/>
-  <simplegravity fx="0" fy="-9.81"/>
-</scene>)";
 
 constexpr const char* kClothScene = R"(<scene dim="3">
   <duration time="0.1"/>

@@ -29,6 +29,18 @@ inline constexpr const char* kTinyScene = R"(<scene>
 </scene>)";
 inline constexpr int kTinySteps = 30;
 
+// One free particle on a damped spring to a fixed one, under gravity: implicit Euler, 100 steps.
+// The edge is on line 6 (tests that add attributes to it name that line).
+inline constexpr const char* kFixedSpringScene = R"(<scene>
+  <duration time="1.0"/>
+  <integrator type="implicit-euler" dt="0.01"/>
+  <particle m="1" px="0" py="0" vx="0" vy="0" fixed="1"/>
+  <particle m="1" px="1.2" py="0.1" vx="0" vy="0" fixed="0"/>
+  <edge i="0" j="1"/>
+  <springforce edge="0" k="20" l0="1" b="0.3"/>
+  <simplegravity fx="0" fy="-9.81"/>
+</scene>)";
+
 inline constexpr Color kRed{1, 0, 0};
 inline constexpr Color kGreen{0, 1, 0};
 inline constexpr Color kYellow{1, 1, 0};
