@@ -39,6 +39,7 @@ import math
 import os
 import re
 import shutil
+import signal
 import socket
 import subprocess
 import sys
@@ -444,6 +445,9 @@ def test_offline(args, browser):
     expected = read_manifest(args.manifest).get(scene)
     if expected is None:
         fail(f"{scene}: no entry in {args.manifest}")
+    # Stopped from outside (`timeout`, ctest), the test still closes Chromium, which runs in a
+    # process group of its own, and removes its folder: SIGTERM unwinds like a failure.
+    signal.signal(signal.SIGTERM, lambda *_: fail("terminated (SIGTERM)"))
     server = Server(args.page, no_store=True)
     try:
         with server as base, Browser(browser, OFFLINE_SECONDS) as chromium:

@@ -62,8 +62,9 @@ class Browser:
                        "--remote-debugging-pipe",
                        f"--user-data-dir={os.path.join(self.folder, 'profile')}",
                        "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1",
-                       "--disable-background-networking", "--disable-component-update", "--disable-sync", "--disable-default-apps",
-                       "--no-default-browser-check", "--metrics-recording-only", *extra,
+                       "--disable-background-networking", "--disable-component-update",
+                       "--disable-sync", "--disable-default-apps", "--no-default-browser-check",
+                       "--metrics-recording-only", *extra,
                        "about:blank"]
             # A process group of its own (timeout makes one too): close() ends all of it. Its
             # messages go to a file, which never fills up as an unread pipe would.
