@@ -50,6 +50,8 @@ import urllib.parse
 import xml.etree.ElementTree as ElementTree
 import zlib
 
+from devtools_pipe import Browser, DevToolsError
+
 BROWSER_SECONDS = 300  # the longest browser run: the digests of a set of scenes
 
 
@@ -424,6 +426,64 @@ PROBE_JS = """fetch("scenes/not-a-scene-offline-probe.xml")
   .then((response) => `answered: HTTP ${response.status}`, (e) => `failed: ${e.message}`)"""
 
 
+def offline_run(chromium, page, url, expected, what):
+    """Opens the page's digest test at `url` and checks the scene's (size, SHA-256)."""
+    chromium.evaluate(page, "window.fosssimOld = true")
+    try:
+        chromium.navigate(page, url)
+    except DevToolsError as problem:
+        fail(f"{what}: the page does not load: {problem}")
+    text = chromium.wait_for(page, TEST_RESULT_JS, WAIT_SECONDS,
+                             f"{what}: the page's result (#test-result)")
+    scene, *got = text.split("\t")
+    if tuple(got) != expected:
+        fail(f"{what}: the page gave {text!r}, the manifest has {list(expected)}")
+    print(f"{what}: {scene} runs to the manifest's bytes ({got[0]} bytes, sha256 {got[1]})")
+
+
+def offline_checks(chromium, page, url, expected, what):
+    """With the server gone: the page runs the scene, under its worker's control, and a file it
+    never fetched does not load (nothing but the worker's cache answers)."""
+    offline_run(chromium, page, url, expected, what)
+    if not chromium.evaluate(page, CONTROLLED_JS):
+        fail(f"{what}: the page loaded but no service worker controls it")
+    probe = chromium.evaluate(page, PROBE_JS)
+    if not probe.startswith("failed"):
+        fail(f"{what}: a file the page never fetched still loads ({probe}): "
+             "something else than the service worker's cache answers")
+    print(f"{what}: a file never fetched does not load ({probe})")
+
+
+def bypassed_worker_fails(chromium, page, url):
+    """The control: with the service worker bypassed the page must not load, so nothing else
+    served it (Chromium's HTTP cache, a server still answering). The bypass takes effect only
+    where the Network domain is enabled."""
+    chromium.send("Network.enable", session=page)
+    chromium.send("Network.setBypassServiceWorker", {"bypass": True}, session=page)
+    try:
+        chromium.evaluate(page, "window.fosssimOld = true")
+        chromium.navigate(page, url)
+        fail("server stopped, the page loads with its service worker bypassed: "
+             "the test does not show that the worker served it")
+    except DevToolsError as refused:
+        print(f"server stopped, the service worker bypassed: the page does not load ({refused})")
+    chromium.send("Network.setBypassServiceWorker", {"bypass": False}, session=page)
+
+
+def emulate_offline(chromium, page):
+    """The network emulated offline in the page and in its service worker, whose own fetch()
+    the page's emulation does not reach."""
+    workers = [chromium.attach(worker) for worker in chromium.targets("service_worker")]
+    if not workers:
+        fail("no service worker target to take offline")
+    for session in workers:
+        chromium.send("Network.enable", session=session)
+    for session in [page] + workers:
+        chromium.send("Network.emulateNetworkConditions",
+                      {"offline": True, "latency": 0, "downloadThroughput": -1,
+                       "uploadThroughput": -1}, session=session)
+
+
 def test_offline(args, browser):
     """Offline use: once its service worker has taken control, the page runs a scene with the
     server stopped, and with the network off. Chromium is driven in real time through its
@@ -439,8 +499,6 @@ def test_offline(args, browser):
     with the worker bypassed must fail to load, so nothing else served it (Chromium's HTTP
     cache, which the server's no-store keeps empty; it served the page without it). Then the
     page and the worker are emulated offline too, and the page must run the scene again."""
-    from devtools_pipe import Browser, DevToolsError
-
     scene = args.items[0]
     expected = read_manifest(args.manifest).get(scene)
     if expected is None:
@@ -453,21 +511,6 @@ def test_offline(args, browser):
         with server as base, Browser(browser, OFFLINE_SECONDS) as chromium:
             url = f"{base}index.html?test=digests&scenes={scene}"
             _, page = chromium.new_page()
-
-            def open_and_run(what):
-                chromium.evaluate(page, "window.fosssimOld = true")
-                try:
-                    chromium.navigate(page, url)
-                except DevToolsError as problem:
-                    fail(f"{what}: the page does not load: {problem}")
-                text = chromium.wait_for(page, TEST_RESULT_JS, WAIT_SECONDS,
-                                         f"{what}: the page's result (#test-result)")
-                got = tuple(text.split("\t")[1:])
-                if got != expected:
-                    fail(f"{what}: the page gave {text!r}, the manifest has {list(expected)}")
-                print(f"{what}: {scene} runs to the manifest's bytes ({got[0]} bytes, "
-                      f"sha256 {got[1]})")
-
             chromium.navigate(page, f"{base}index.html")
             chromium.wait_for(page, "window.fosssimReady === true", WAIT_SECONDS,
                               "the page loading FOSSSim (window.fosssimReady)")
@@ -475,7 +518,7 @@ def test_offline(args, browser):
                               "an activated service worker controlling the page "
                               "(navigator.serviceWorker.controller)")
             print("online: the service worker is activated and controls the page")
-            open_and_run("online")
+            offline_run(chromium, page, url, expected, "online")
             # The worker stores what it fetched after answering: wait for the scene to be
             # there. Not an assertion (the offline runs below are): when it never comes, they
             # fail on what is missing.
@@ -495,45 +538,11 @@ def test_offline(args, browser):
                 fail(f"the server still answers on port {port} after it was stopped")
             except ConnectionRefusedError:
                 pass
-
-            def offline_checks(what):
-                open_and_run(what)
-                if not chromium.evaluate(page, CONTROLLED_JS):
-                    fail(f"{what}: the page loaded but no service worker controls it")
-                probe = chromium.evaluate(page, PROBE_JS)
-                if not probe.startswith("failed"):
-                    fail(f"{what}: a file the page never fetched still loads ({probe}): "
-                         "something else than the service worker's cache answers")
-                print(f"{what}: a file never fetched does not load ({probe})")
-
-            offline_checks(f"server stopped (port {port} refuses connections)")
-            # The control: the same page with the service worker bypassed must not load, so
-            # nothing else served it (Chromium's HTTP cache, a server still answering). The
-            # bypass takes effect only where the Network domain is enabled.
-            chromium.send("Network.enable", session=page)
-            chromium.send("Network.setBypassServiceWorker", {"bypass": True}, session=page)
-            try:
-                chromium.evaluate(page, "window.fosssimOld = true")
-                chromium.navigate(page, url)
-                fail("server stopped, the page loads with its service worker bypassed: "
-                     "the test does not show that the worker served it")
-            except DevToolsError as refused:
-                print(f"server stopped, the service worker bypassed: the page does not load "
-                      f"({refused})")
-            chromium.send("Network.setBypassServiceWorker", {"bypass": False}, session=page)
-
-            # And with the network emulated offline too, in the page and its service worker.
-            sessions = [page] + [chromium.attach(worker)
-                                 for worker in chromium.targets("service_worker")]
-            if len(sessions) < 2:
-                fail("no service worker target to take offline")
-            for session in sessions[1:]:
-                chromium.send("Network.enable", session=session)
-            for session in sessions:
-                chromium.send("Network.emulateNetworkConditions",
-                              {"offline": True, "latency": 0, "downloadThroughput": -1,
-                               "uploadThroughput": -1}, session=session)
-            offline_checks("server stopped and network offline")
+            offline_checks(chromium, page, url, expected,
+                           f"server stopped (port {port} refuses connections)")
+            bypassed_worker_fails(chromium, page, url)
+            emulate_offline(chromium, page)
+            offline_checks(chromium, page, url, expected, "server stopped and network offline")
     except DevToolsError as problem:
         fail(str(problem))
 
