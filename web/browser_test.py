@@ -4,8 +4,9 @@
 Each test serves the page over HTTP on 127.0.0.1 (a free port; /fixtures/ serves the test's
 work folder), opens it with a ?test=... query (web/page/fosssim-page.js, runTest), lets
 Chromium run it and reads the result the page writes into <pre id="test-result"> from the DOM
-Chromium dumps (--dump-dom), or takes a screenshot (--screenshot). Every browser run is bounded
-by `timeout -k`.
+Chromium dumps (--dump-dom), or takes a screenshot (--screenshot). The offline test drives
+Chromium through its DevTools protocol instead (devtools_pipe.py), in real time, since a service
+worker never registers under virtual time. Every browser run is bounded by `timeout -k`.
 
 Chromium runs with --no-sandbox: as root (CI, containers) it refuses to start otherwise, since
 its sandbox relies on unprivileged user namespaces. Here that is acceptable: it loads only our
@@ -19,6 +20,7 @@ site or network access, in a throwaway profile.
   browser_test.py drag     --page DIR --browser chromium
   browser_test.py references --page DIR --browser chromium --native FOSSSim --work DIR
                            --user SCENE,FILE... SCENE...
+  browser_test.py offline  --page DIR --browser chromium --manifest golden.tsv SCENE
   browser_test.py timing   --page DIR --browser chromium [--native FOSSSim] SCENE_FILE
       (a measurement, not a test: the page's load time and the time per step of SCENE_FILE in
        the browser, and with --native the native program's time per step on the same scene)
@@ -37,6 +39,8 @@ import math
 import os
 import re
 import shutil
+import signal
+import socket
 import subprocess
 import sys
 import tempfile
@@ -46,6 +50,8 @@ import urllib.parse
 import xml.etree.ElementTree as ElementTree
 import zlib
 
+from devtools_pipe import Browser, DevToolsError
+
 BROWSER_SECONDS = 300  # the longest browser run: the digests of a set of scenes
 
 
@@ -53,6 +59,12 @@ class Handler(http.server.SimpleHTTPRequestHandler):
     """The page's folder, and /fixtures/NAME from the test's work folder."""
 
     fixtures = None
+    no_store = False
+
+    def end_headers(self):
+        if self.no_store:  # the offline test: nothing kept in Chromium's HTTP cache
+            self.send_header("Cache-Control", "no-store")
+        super().end_headers()
 
     def translate_path(self, path):
         route = urllib.parse.urlsplit(path).path
@@ -73,8 +85,8 @@ class Handler(http.server.SimpleHTTPRequestHandler):
 
 
 class Server:
-    def __init__(self, page, fixtures=None):
-        handler = type("TestHandler", (Handler,), {"fixtures": fixtures})
+    def __init__(self, page, fixtures=None, no_store=False):
+        handler = type("TestHandler", (Handler,), {"fixtures": fixtures, "no_store": no_store})
         self.httpd = http.server.ThreadingHTTPServer(
             ("127.0.0.1", 0), functools.partial(handler, directory=page))
         self.httpd.arrived = threading.Event()
@@ -86,7 +98,13 @@ class Server:
         return f"http://127.0.0.1:{self.httpd.server_address[1]}/"
 
     def __exit__(self, *args):
-        self.httpd.shutdown()
+        self.stop()
+
+    def stop(self):
+        """Stops serving and closes the listening socket: its port refuses connections."""
+        if self.thread.is_alive():
+            self.httpd.shutdown()
+            self.thread.join()
         self.httpd.server_close()
 
 
@@ -131,14 +149,20 @@ def native_or_skip(native):
         sys.exit(0)
 
 
-def test_digests(args, browser):
-    """The trajectory digests computed in the page equal the native manifest's."""
+def read_manifest(path):
+    """scene -> (trajectory size, SHA-256) of the regression manifest (oracle/manifest)."""
     manifest = {}
-    with open(args.manifest) as lines:
+    with open(path) as lines:
         for line in lines:
             fields = line.rstrip("\n").split("\t")
             if len(fields) >= 5:
                 manifest[fields[0]] = (fields[3], fields[4])
+    return manifest
+
+
+def test_digests(args, browser):
+    """The trajectory digests computed in the page equal the native manifest's."""
+    manifest = read_manifest(args.manifest)
     with Server(args.page) as base:
         text = page_result(browser, f"{base}index.html?test=digests&scenes={','.join(args.items)}")
     rows = {row.split("\t")[0]: row.split("\t")[1:] for row in text.splitlines() if row}
@@ -384,6 +408,145 @@ def test_references(args, browser):
         fail(f"opened alone, the scene does not say that {mesh} is missing: {alone!r}")
 
 
+OFFLINE_SECONDS = 240  # the offline test's Chromium, from its start to its close
+WAIT_SECONDS = 90      # the longest wait for one thing in that run (a page's test, the worker)
+CACHE_SECONDS = 20     # the longest wait for the worker to store a scene it fetched
+
+# JavaScript polled in the page (devtools_pipe.Browser.wait_for). A document of this test's
+# own navigation has no window.fosssimOld, which marks the document it replaces.
+TEST_RESULT_JS = """(() => {
+  const out = document.getElementById("test-result");
+  return !window.fosssimOld && out && out.dataset.done === "1" ? out.textContent : null;
+})()"""
+CONTROLLED_JS = ("navigator.serviceWorker.controller && "
+                 "navigator.serviceWorker.controller.state === 'activated'")
+CACHED_JS = """caches.open("fosssim-page").then((cache) => cache.keys())
+  .then((requests) => requests.map((r) => new URL(r.url).pathname))"""
+PROBE_JS = """fetch("scenes/not-a-scene-offline-probe.xml")
+  .then((response) => `answered: HTTP ${response.status}`, (e) => `failed: ${e.message}`)"""
+
+
+def offline_run(chromium, page, url, expected, what):
+    """Opens the page's digest test at `url` and checks the scene's (size, SHA-256)."""
+    chromium.evaluate(page, "window.fosssimOld = true")
+    try:
+        chromium.navigate(page, url)
+    except DevToolsError as problem:
+        fail(f"{what}: the page does not load: {problem}")
+    text = chromium.wait_for(page, TEST_RESULT_JS, WAIT_SECONDS,
+                             f"{what}: the page's result (#test-result)")
+    scene, *got = text.split("\t")
+    if tuple(got) != expected:
+        fail(f"{what}: the page gave {text!r}, the manifest has {list(expected)}")
+    print(f"{what}: {scene} runs to the manifest's bytes ({got[0]} bytes, sha256 {got[1]})")
+
+
+def offline_checks(chromium, page, url, expected, what):
+    """With the server gone: the page runs the scene, under its worker's control, and a file it
+    never fetched does not load (nothing but the worker's cache answers)."""
+    offline_run(chromium, page, url, expected, what)
+    if not chromium.evaluate(page, CONTROLLED_JS):
+        fail(f"{what}: the page loaded but no service worker controls it")
+    probe = chromium.evaluate(page, PROBE_JS)
+    if not probe.startswith("failed"):
+        fail(f"{what}: a file the page never fetched still loads ({probe}): "
+             "something else than the service worker's cache answers")
+    print(f"{what}: a file never fetched does not load ({probe})")
+
+
+def bypassed_worker_fails(chromium, page, url):
+    """The control: with the service worker bypassed the page must not load, so nothing else
+    served it (Chromium's HTTP cache, a server still answering). The bypass takes effect only
+    where the Network domain is enabled."""
+    chromium.send("Network.enable", session=page)
+    chromium.send("Network.setBypassServiceWorker", {"bypass": True}, session=page)
+    try:
+        chromium.evaluate(page, "window.fosssimOld = true")
+        chromium.navigate(page, url)
+        fail("server stopped, the page loads with its service worker bypassed: "
+             "the test does not show that the worker served it")
+    except DevToolsError as refused:
+        print(f"server stopped, the service worker bypassed: the page does not load ({refused})")
+    chromium.send("Network.setBypassServiceWorker", {"bypass": False}, session=page)
+
+
+def emulate_offline(chromium, page):
+    """The network emulated offline in the page and in its service worker, whose own fetch()
+    the page's emulation does not reach."""
+    workers = [chromium.attach(worker) for worker in chromium.targets("service_worker")]
+    if not workers:
+        fail("no service worker target to take offline")
+    for session in workers:
+        chromium.send("Network.enable", session=session)
+    for session in [page] + workers:
+        chromium.send("Network.emulateNetworkConditions",
+                      {"offline": True, "latency": 0, "downloadThroughput": -1,
+                       "uploadThroughput": -1}, session=session)
+
+
+def test_offline(args, browser):
+    """Offline use: once its service worker has taken control, the page runs a scene with the
+    server stopped, and with the network off. Chromium is driven in real time through its
+    DevTools protocol (web/devtools_pipe.py): under --virtual-time-budget, which the other tests
+    use, navigator.serviceWorker.register() never settles.
+
+    The page is opened (it registers the worker, which caches the page, fosssim.js and the
+    scene index as it installs) until the worker is activated and controls it; then the page
+    computes a manifest scene's trajectory digest online, which fetches the scene through the
+    worker (it caches it). The server is stopped (its port refuses connections) and the same
+    URL opened again: it must be controlled by the worker, run the scene to the manifest's
+    bytes, and fail to fetch a file it never fetched before. The control: the same URL opened
+    with the worker bypassed must fail to load, so nothing else served it (Chromium's HTTP
+    cache, which the server's no-store keeps empty; it served the page without it). Then the
+    page and the worker are emulated offline too, and the page must run the scene again."""
+    scene = args.items[0]
+    expected = read_manifest(args.manifest).get(scene)
+    if expected is None:
+        fail(f"{scene}: no entry in {args.manifest}")
+    # Stopped from outside (`timeout`, ctest), the test still closes Chromium, which runs in a
+    # process group of its own, and removes its folder: SIGTERM unwinds like a failure.
+    signal.signal(signal.SIGTERM, lambda *_: fail("terminated (SIGTERM)"))
+    server = Server(args.page, no_store=True)
+    try:
+        with server as base, Browser(browser, OFFLINE_SECONDS) as chromium:
+            url = f"{base}index.html?test=digests&scenes={scene}"
+            _, page = chromium.new_page()
+            chromium.navigate(page, f"{base}index.html")
+            chromium.wait_for(page, "window.fosssimReady === true", WAIT_SECONDS,
+                              "the page loading FOSSSim (window.fosssimReady)")
+            chromium.wait_for(page, CONTROLLED_JS, WAIT_SECONDS,
+                              "an activated service worker controlling the page "
+                              "(navigator.serviceWorker.controller)")
+            print("online: the service worker is activated and controls the page")
+            offline_run(chromium, page, url, expected, "online")
+            # The worker stores what it fetched after answering: wait for the scene to be
+            # there. Not an assertion (the offline runs below are): when it never comes, they
+            # fail on what is missing.
+            try:
+                chromium.wait_for(
+                    page, f"({CACHED_JS}).then((paths) => paths.includes('/scenes/{scene}'))",
+                    CACHE_SECONDS, f"scenes/{scene} in the service worker's cache")
+            except DevToolsError as problem:
+                print(f"online: {problem}")
+            cached = chromium.evaluate(page, CACHED_JS)
+            print(f"online: the service worker's cache holds {', '.join(sorted(cached))}")
+
+            server.stop()
+            port = urllib.parse.urlsplit(base).port
+            try:
+                socket.create_connection(("127.0.0.1", port), timeout=5).close()
+                fail(f"the server still answers on port {port} after it was stopped")
+            except ConnectionRefusedError:
+                pass
+            offline_checks(chromium, page, url, expected,
+                           f"server stopped (port {port} refuses connections)")
+            bypassed_worker_fails(chromium, page, url)
+            emulate_offline(chromium, page)
+            offline_checks(chromium, page, url, expected, "server stopped and network offline")
+    except DevToolsError as problem:
+        fail(str(problem))
+
+
 def test_timing(args, browser):
     """Prints the page's load time and a scene's time per step, in the browser and natively."""
     scene = os.path.abspath(args.items[0])
@@ -419,7 +582,7 @@ def test_timing(args, browser):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("test", choices=["digests", "error", "grade", "picture", "drag",
-                                         "references", "timing"])
+                                         "references", "offline", "timing"])
     parser.add_argument("items", nargs="*")
     parser.add_argument("--page", required=True)
     parser.add_argument("--browser", required=True)
@@ -433,7 +596,7 @@ def main():
         fail(f"no browser {args.browser}; tools/install-deps.sh installs Debian's chromium")
     {"digests": test_digests, "error": test_error, "grade": test_grade,
      "picture": test_picture, "drag": test_drag, "references": test_references,
-     "timing": test_timing}[args.test](args, args.browser)
+     "offline": test_offline, "timing": test_timing}[args.test](args, args.browser)
     if args.test != "timing":
         print("passed")
 
