@@ -17,6 +17,7 @@ namespace fosssim {
 namespace {
 
 using testing::front_camera;
+using testing::membrane_scene;
 using testing::particles_at;
 
 Drawing draw(const Scene& scene, const OrbitCamera& camera, const Overlay& overlay = {}) {
@@ -162,30 +163,6 @@ TEST(ComposeDrawing3D, DrawsTrailsAsSegmentsAmongTheShapes) {
   EXPECT_TRUE(std::holds_alternative<Capsule>(d.shapes[0]));  // z from -2 to -1: farthest
   EXPECT_TRUE(std::holds_alternative<Capsule>(d.shapes[1]));
   EXPECT_TRUE(std::holds_alternative<Disc>(d.shapes[2]));
-}
-
-/// Two membrane triangles in the plane z = 0 facing the front camera (51.2 pixels per unit
-/// there): particles 0-2 stretched to 1.5 times their rest width along x (strain +0.5),
-/// particles 3-5 compressed to 0.75 of it (strain -0.25); both keep their height. Centroids
-/// (-1.5, -1/3, 0) and (1, -1/3, 0): pixels (179.2, 273.07) and (307.2, 273.07). Particle 0 is
-/// fixed; particle 6 is loose, joined by an edge to particle 5, which an edge also joins to 4.
-Scene membrane_scene() {
-  return load_scene_text(R"(<scene dim="3">
-    <duration time="0.1"/><integrator type="implicit-euler" dt="0.1"/>
-    <particle m="1" px="-2" py="-1" pz="0" vx="0" vy="0" vz="0" fixed="1"/>
-    <particle m="1" px="-0.5" py="-1" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
-    <particle m="1" px="-2" py="1" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
-    <particle m="1" px="0.5" py="-1" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
-    <particle m="1" px="2" py="-1" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
-    <particle m="1" px="0.5" py="1" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
-    <particle m="1" px="1.5" py="1.5" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
-    <edge i="4" j="5"/>
-    <edge i="5" j="6"/>
-    <elasticbodycstforce i1="0" i2="1" i3="2" youngsmodulus="10" poissonratio="0.3" xb2x="-1"/>
-    <elasticbodycstforce i1="3" i2="4" i3="5" youngsmodulus="10" poissonratio="0.3"
-                         xb2x="2.5"/>
-  </scene>)",
-                         "membranes.xml");
 }
 
 /// The triangles of a drawing, in painting order.
