@@ -128,8 +128,8 @@ void add_faces(const Scene3DView& view, const SceneParts3D& parts, DepthSortedSh
 
 /// The elements the forces show at the view's state: membrane triangles shaded like faces,
 /// hinges as capsules. Returns the colour scale, 0 without elements.
-double add_elements(const Scene3DView& view, const SceneParts3D& parts,
-                    const ElementColors& colors, DepthSortedShapes& shapes) {
+double add_elements(const Scene3DView& view, const SceneParts3D& parts, const ElementColors& colors,
+                    DepthSortedShapes& shapes) {
   std::vector<ForceElement> elements;
   for (int f : parts.element_forces) {
     view.scene.model.forces[f]->append_elements(view.state.q, elements);
@@ -142,8 +142,7 @@ double add_elements(const Scene3DView& view, const SceneParts3D& parts,
   }
   const bool outline = sides.mean() >= kOutlineMinPixels;
   const Lighting light = view_lighting(view);
-  const BackSide back =
-      colors.by == ElementColoring::kPlain ? BackSide::kTinted : BackSide::kSame;
+  const BackSide back = colors.by == ElementColoring::kPlain ? BackSide::kTinted : BackSide::kSame;
   for (const ForceElement& e : elements) {
     if (e.kind == ForceElement::Kind::kTriangle) {
       const Color base = element_color(e, colors, scale, kPlainTriangleColor);

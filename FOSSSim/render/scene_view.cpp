@@ -31,8 +31,7 @@ Drawing SceneView::compose(const State& state, const Overlay& overlay) const {
   Overlay with_colors = overlay;
   with_colors.elements = element_colors_;
   if (orbit_) {
-    return compose_drawing_3d(scene_, parts_, state, paths_, *orbit_, width_, height_,
-                              with_colors);
+    return compose_drawing_3d(scene_, parts_, state, paths_, *orbit_, width_, height_, with_colors);
   }
   return compose_drawing(scene_, state, paths_, camera_, width_, height_, with_colors);
 }

@@ -277,8 +277,7 @@ TEST(ComposeDrawing3D, ColouredMembranesLookTheSameFromBehindPlainOnesAreTinted)
   expect_color_near(stretched, shaded(scene, behind, 0, 1, 2, red, BackSide::kSame));
   EXPECT_NE(stretched, shaded(scene, behind, 0, 1, 2, red, BackSide::kTinted));
   const Color plain = triangles_of(draw(scene, behind)).at(0).color;
-  expect_color_near(plain, shaded(scene, behind, 0, 1, 2, kPlainTriangleColor,
-                                  BackSide::kTinted));
+  expect_color_near(plain, shaded(scene, behind, 0, 1, 2, kPlainTriangleColor, BackSide::kTinted));
   EXPECT_NE(plain, shaded(scene, behind, 0, 1, 2, kPlainTriangleColor, BackSide::kSame));
 }
 
