@@ -3,7 +3,9 @@
 // al. 2013 (assets3d/scenes/cloth_81.xml) after it has fallen for a while. Beside it, the
 // baselines measured in the same process: one simulation step of the scene, and the flat
 // drawing 3D scenes had before (every spring as a capsule and every particle as a disc, seen
-// along -z). Usage: bench_drawing [SCENE.xml [STEPS]]   (defaults: the 81 × 81 cloth, 45 steps)
+// along -z). The same picture coloured by strain (--color-by strain) times the elements that
+// forces show (3D membranes: Creative/membrane_drape.xml).
+// Usage: bench_drawing [SCENE.xml [STEPS]]   (defaults: the 81 × 81 cloth, 45 steps)
 
 #include <algorithm>
 #include <chrono>
@@ -63,6 +65,16 @@ int main(int argc, char** argv) {
   const double compose_ms = median_ms(kRepeats, [&] { drawing = view.compose(state); });
   const double paint_ms = median_ms(kRepeats, [&] { render_image(drawing); });
   const std::size_t shapes = drawing.shapes.size();
+  // Membranes (elastic triangles in 3D) coloured by strain: the forces' elements with their
+  // strains and energies are computed for every picture.
+  SceneView strain_view(scene, state, 512, 512);
+  strain_view.set_element_colors({ElementColoring::kStrain, 0.0});
+  Drawing strain_drawing;
+  const double strain_compose_ms =
+      median_ms(kRepeats, [&] { strain_drawing = strain_view.compose(state); });
+  const double strain_paint_ms = median_ms(kRepeats, [&] { render_image(strain_drawing); });
+  std::vector<ForceElement> elements;
+  for (const auto& force : scene.model.forces) force->append_elements(state.q, elements);
 
   Overlay overlay;
   const Camera flat_camera = fit_camera(state.q, 3, 512, 512);
@@ -72,9 +84,9 @@ int main(int argc, char** argv) {
   });
   const double flat_paint_ms = median_ms(kRepeats, [&] { render_image(flat); });
 
-  std::printf("scene %s after %d steps: %d particles, %zu edges, %zu triangles\n", path.c_str(),
-              steps, scene.model.num_particles(), scene.model.edges.size(),
-              scene.appearance.triangles.size());
+  std::printf("scene %s after %d steps: %d particles, %zu edges, %zu triangles, %zu elements\n",
+              path.c_str(), steps, scene.model.num_particles(), scene.model.edges.size(),
+              scene.appearance.triangles.size(), elements.size());
   std::printf("load average %s; medians of %d runs, 512 x 512 pixels\n\n", load_average().c_str(),
               kRepeats);
   std::printf("%-44s %10s %10s\n", "", "ms", "ratio");
@@ -84,6 +96,10 @@ int main(int argc, char** argv) {
   std::printf("%-44s %10.2f %10.2f\n", "3D: paint with Cairo", paint_ms, paint_ms / step_ms);
   std::printf("%-44s %10.2f %10.2f\n", "3D: picture total", compose_ms + paint_ms,
               (compose_ms + paint_ms) / step_ms);
+  std::printf("%-44s %10.2f %10.2f\n", "3D by strain: compose", strain_compose_ms,
+              strain_compose_ms / step_ms);
+  std::printf("%-44s %10.2f %10.2f\n", "3D by strain: picture total",
+              strain_compose_ms + strain_paint_ms, (strain_compose_ms + strain_paint_ms) / step_ms);
   std::printf("%-44s %10.2f %10.2f\n", "flat along -z, every spring: compose", flat_compose_ms,
               flat_compose_ms / step_ms);
   std::printf("%-44s %10.2f %10.2f\n", "flat along -z, every spring: paint", flat_paint_ms,

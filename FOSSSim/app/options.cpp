@@ -75,8 +75,9 @@ void add_picture_options(CLI::App& app, Options& options) {
       ->capture_default_str()
       ->group(group);
   app.add_option("--color-by", options.color_by,
-                 "2D elastic bodies: colour their triangles and hinges plain, by strain (blue\n"
-                 "compressed, grey at rest, red stretched) or by energy density")
+                 "Elastic bodies: colour their triangles and hinges (2D) and membranes (3D)\n"
+                 "plain, by strain (blue compressed, grey at rest, red stretched) or by energy\n"
+                 "density")
       ->check(CLI::IsMember({"plain", "strain", "energy"}))
       ->capture_default_str()
       ->group(group);

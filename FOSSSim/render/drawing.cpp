@@ -160,38 +160,17 @@ double add_elastic_elements(const Scene& scene, const State& state, const PixelM
   std::vector<ForceElement> elements;
   for (const auto& force : scene.model.forces) force->append_elements(state.q, elements);
   if (elements.empty()) return 0.0;
-  double scale = colors.scale;
-  if (scale <= 0.0) {
-    scale = kDefaultStrainScale;
-    if (colors.by == ElementColoring::kEnergy) {
-      scale = 0.0;
-      for (const ForceElement& e : elements) {
-        if (std::isfinite(e.energy_density)) scale = std::max(scale, e.energy_density);
-      }
-      if (scale <= 0.0) scale = 1.0;  // everything at rest: any scale draws it pale
-    }
-  }
+  const double scale = element_color_scale(elements, colors);
   const int dim = scene.model.dim;
-  const auto color_of = [&](const ForceElement& e, const Color& plain) {
-    switch (colors.by) {
-      case ElementColoring::kStrain:
-        return strain_color(e.strain, scale);
-      case ElementColoring::kEnergy:
-        return energy_color(e.energy_density, scale);
-      case ElementColoring::kPlain:
-        break;
-    }
-    return plain;
-  };
   for (const ForceElement& e : elements) {
     const Point2 a = position(state, dim, mapping, e.particles[0]);
     const Point2 b = position(state, dim, mapping, e.particles[1]);
     const Point2 c = position(state, dim, mapping, e.particles[2]);
     if (e.kind == ForceElement::Kind::kTriangle) {
-      const Color fill = color_of(e, kPlainTriangleColor);
+      const Color fill = element_color(e, colors, scale, kPlainTriangleColor);
       drawing.shapes.push_back(Triangle{std::array<Point2, 3>{a, b, c}, fill, 1.0, darker(fill)});
     } else {
-      const Color line = color_of(e, kPlainHingeColor);
+      const Color line = element_color(e, colors, scale, kPlainHingeColor);
       drawing.shapes.push_back(Capsule{a, b, kHingeRadius, line});
       drawing.shapes.push_back(Capsule{b, c, kHingeRadius, line});
       drawing.shapes.push_back(Disc{b, 2.0 * kHingeRadius, line});
@@ -200,7 +179,31 @@ double add_elastic_elements(const Scene& scene, const State& state, const PixelM
   return scale;
 }
 
-/// "triangles and hinges by strain: red +10%, blue -10%" and the like.
+}  // namespace
+
+double element_color_scale(const std::vector<ForceElement>& elements, const ElementColors& colors) {
+  if (colors.scale > 0.0) return colors.scale;
+  if (colors.by != ElementColoring::kEnergy) return kDefaultStrainScale;
+  double scale = 0.0;
+  for (const ForceElement& e : elements) {
+    if (std::isfinite(e.energy_density)) scale = std::max(scale, e.energy_density);
+  }
+  return scale > 0.0 ? scale : 1.0;  // everything at rest: any scale draws it pale
+}
+
+Color element_color(const ForceElement& element, const ElementColors& colors, double scale,
+                    const Color& plain) {
+  switch (colors.by) {
+    case ElementColoring::kStrain:
+      return strain_color(element.strain, scale);
+    case ElementColoring::kEnergy:
+      return energy_color(element.energy_density, scale);
+    case ElementColoring::kPlain:
+      break;
+  }
+  return plain;
+}
+
 std::string element_legend(ElementColoring by, double scale) {
   char buffer[128];
   if (by == ElementColoring::kStrain) {
@@ -210,8 +213,6 @@ std::string element_legend(ElementColoring by, double scale) {
   }
   return buffer;
 }
-
-}  // namespace
 
 Color strain_color(double strain, double scale) {
   if (std::isnan(strain)) return {0.0, 0.0, 0.0};

@@ -119,6 +119,18 @@ inline constexpr Color kPlainHingeColor{0.30, 0.30, 0.38};
 /// unless a scale is given.
 inline constexpr double kDefaultStrainScale = 0.1;
 
+/// The value elements are drawn in full colour at: colors.scale when positive, else
+/// kDefaultStrainScale for strain and the largest finite energy density of `elements` for energy
+/// (1 when they are all at rest). The same rule in 2D and 3D pictures.
+double element_color_scale(const std::vector<ForceElement>& elements, const ElementColors& colors);
+/// The colour of `element` as `colors` asks at `scale` (element_color_scale): strain_color,
+/// energy_color, or `plain` for ElementColoring::kPlain.
+Color element_color(const ForceElement& element, const ElementColors& colors, double scale,
+                    const Color& plain);
+/// The legend line of a colouring that is not plain: "strain: red +0.1, blue -0.1" or
+/// "energy density: dark red 1.06".
+std::string element_legend(ElementColoring by, double scale);
+
 /// The colour of a signed strain s at `scale`: a diverging map from blue (s ≤ -scale) through
 /// light grey (0) to red (s ≥ scale), linear in between; NaN is black.
 Color strain_color(double strain, double scale);
@@ -132,8 +144,8 @@ struct Overlay {
   std::vector<std::string> status;  ///< more text lines below the time
   std::vector<ParticleMark> marks;
   std::optional<DragGuide> drag;
-  /// How elastic triangles and hinges are coloured (2D pictures); a line of text says what the
-  /// colours mean when they are not plain.
+  /// How elastic triangles and hinges (2D) and membranes (3D) are coloured; a line of text
+  /// says what the colours mean when they are not plain.
   ElementColors elements;
 };
 

@@ -1,9 +1,11 @@
 #include "render/drawing_3d.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <utility>
+#include <vector>
 
 #include "render/shading.h"
 
@@ -19,6 +21,8 @@ constexpr double kMinCapsulePixels = 0.75;
 /// Trails: segments of this radius in pixels (the 2D trails are 1.5 pixels wide).
 constexpr double kTrailRadius = 0.75;
 constexpr double kPinRingWidth = 1.5;
+/// Hinges: capsules of this radius in pixels, a disc of twice it on the hinge (as in 2D).
+constexpr double kHingePixels = 1.5;
 
 /// Shapes with their sort depths, handed over farthest first. Equal depths keep the order in
 /// which the shapes were added.
@@ -66,41 +70,94 @@ struct Scene3DView {
   }
 };
 
-/// The mean projected side length of the visible triangles, pixels (0 without any).
-double mean_side_pixels(const Scene3DView& view) {
-  double sum = 0.0;
-  std::size_t sides = 0;
-  for (const auto& t : view.scene.appearance.triangles) {
+/// The mean projected side length of a set of triangles, pixels (0 without any visible).
+class SideLengths {
+ public:
+  void add(const Scene3DView& view, const std::array<int, 3>& t) {
     const ProjectedPoint &a = view.seen[t[0]], &b = view.seen[t[1]], &c = view.seen[t[2]];
-    if (!a.visible || !b.visible || !c.visible) continue;
-    sum += distance(a.pixel, b.pixel) + distance(b.pixel, c.pixel) + distance(c.pixel, a.pixel);
-    sides += 3;
+    if (!a.visible || !b.visible || !c.visible) return;
+    sum_ += distance(a.pixel, b.pixel) + distance(b.pixel, c.pixel) + distance(c.pixel, a.pixel);
+    sides_ += 3;
   }
-  return sides == 0 ? 0.0 : sum / sides;
+  double mean() const { return sides_ == 0 ? 0.0 : sum_ / static_cast<double>(sides_); }
+
+ private:
+  double sum_ = 0.0;
+  std::size_t sides_ = 0;
+};
+
+/// Triangle t filled with `base` shaded as seen, with its depth; nothing when a corner is
+/// behind the near plane.
+void add_shaded_triangle(const Scene3DView& view, const std::array<int, 3>& t, const Color& base,
+                         BackSide back, bool outline, const Lighting& light,
+                         DepthSortedShapes& shapes) {
+  const ProjectedPoint &a = view.seen[t[0]], &b = view.seen[t[1]], &c = view.seen[t[2]];
+  if (!a.visible || !b.visible || !c.visible) return;
+  const Eigen::Vector3d pa = view.position(t[0]), pb = view.position(t[1]),
+                        pc = view.position(t[2]);
+  Triangle triangle;
+  triangle.corners = {a.pixel, b.pixel, c.pixel};
+  triangle.color =
+      shade_triangle(base, pa, pb, pc, view.view_toward((pa + pb + pc) / 3.0), light, back);
+  if (outline) {
+    triangle.outline_width = kOutlineWidth;
+    triangle.outline_color = darker(triangle.color, kOutlineShade);
+  }
+  shapes.add((a.depth + b.depth + c.depth) / 3.0, triangle);
 }
 
-void add_triangles(const Scene3DView& view, DepthSortedShapes& shapes) {
-  const Appearance& look = view.scene.appearance;
+Lighting view_lighting(const Scene3DView& view) {
   const OrbitProjection& projection = view.projection;
-  const Lighting light = camera_lighting(projection.right(), projection.up(), projection.forward());
-  const bool outline = mean_side_pixels(view) >= kOutlineMinPixels;
-  for (const auto& t : look.triangles) {
-    const ProjectedPoint &a = view.seen[t[0]], &b = view.seen[t[1]], &c = view.seen[t[2]];
-    if (!a.visible || !b.visible || !c.visible) continue;
-    const Eigen::Vector3d pa = view.position(t[0]), pb = view.position(t[1]),
-                          pc = view.position(t[2]);
+  return camera_lighting(projection.right(), projection.up(), projection.forward());
+}
+
+/// The mesh faces, in the mean colour of their corners' particles.
+void add_faces(const Scene3DView& view, const SceneParts3D& parts, DepthSortedShapes& shapes) {
+  const Appearance& look = view.scene.appearance;
+  SideLengths sides;
+  for (int f : parts.faces) sides.add(view, look.triangles[f]);
+  const bool outline = sides.mean() >= kOutlineMinPixels;
+  const Lighting light = view_lighting(view);
+  for (int f : parts.faces) {
+    const auto& t = look.triangles[f];
     const Color base =
         mean_color(look.particle_color[t[0]], look.particle_color[t[1]], look.particle_color[t[2]]);
-    Triangle triangle;
-    triangle.corners = {a.pixel, b.pixel, c.pixel};
-    triangle.color =
-        shade_triangle(base, pa, pb, pc, view.view_toward((pa + pb + pc) / 3.0), light);
-    if (outline) {
-      triangle.outline_width = kOutlineWidth;
-      triangle.outline_color = darker(triangle.color, kOutlineShade);
-    }
-    shapes.add((a.depth + b.depth + c.depth) / 3.0, triangle);
+    add_shaded_triangle(view, t, base, BackSide::kTinted, outline, light, shapes);
   }
+}
+
+/// The elements the forces show at the view's state: membrane triangles shaded like faces,
+/// hinges as capsules. Returns the colour scale, 0 without elements.
+double add_elements(const Scene3DView& view, const SceneParts3D& parts, const ElementColors& colors,
+                    DepthSortedShapes& shapes) {
+  std::vector<ForceElement> elements;
+  for (int f : parts.element_forces) {
+    view.scene.model.forces[f]->append_elements(view.state.q, elements);
+  }
+  if (elements.empty()) return 0.0;
+  const double scale = element_color_scale(elements, colors);
+  SideLengths sides;
+  for (const ForceElement& e : elements) {
+    if (e.kind == ForceElement::Kind::kTriangle) sides.add(view, e.particles);
+  }
+  const bool outline = sides.mean() >= kOutlineMinPixels;
+  const Lighting light = view_lighting(view);
+  const BackSide back = colors.by == ElementColoring::kPlain ? BackSide::kTinted : BackSide::kSame;
+  for (const ForceElement& e : elements) {
+    if (e.kind == ForceElement::Kind::kTriangle) {
+      const Color base = element_color(e, colors, scale, kPlainTriangleColor);
+      add_shaded_triangle(view, e.particles, base, back, outline, light, shapes);
+      continue;
+    }
+    const ProjectedPoint &a = view.seen[e.particles[0]], &b = view.seen[e.particles[1]],
+                         &c = view.seen[e.particles[2]];
+    if (!a.visible || !b.visible || !c.visible) continue;
+    const Color line = element_color(e, colors, scale, kPlainHingeColor);
+    shapes.add(0.5 * (a.depth + b.depth), Capsule{a.pixel, b.pixel, kHingePixels, line});
+    shapes.add(0.5 * (b.depth + c.depth), Capsule{b.pixel, c.pixel, kHingePixels, line});
+    shapes.add(b.depth, Disc{b.pixel, 2.0 * kHingePixels, line});
+  }
+  return scale;
 }
 
 void add_edges(const Scene3DView& view, const SceneParts3D& parts, DepthSortedShapes& shapes) {
@@ -174,12 +231,36 @@ void add_overlay(const Scene3DView& view, const Overlay& overlay, Drawing& drawi
 SceneParts3D compute_scene_parts_3d(const Scene& scene) {
   const int n = scene.model.num_particles();
   const Appearance& look = scene.appearance;
+  SceneParts3D parts;
   std::vector<bool> on_surface(n, false), inside(n, false);
-  for (const auto& t : look.triangles)
-    for (int p : t) on_surface[p] = true;
+  // Membranes: the triangles the forces show, with their corners sorted to find faces that are
+  // membranes too.
+  std::vector<std::array<int, 3>> membranes;
+  const auto& forces = scene.model.forces;
+  for (std::size_t f = 0; f < forces.size(); ++f) {
+    std::vector<ForceElement> elements;
+    forces[f]->append_elements(scene.initial.q, elements);
+    if (elements.empty()) continue;
+    parts.element_forces.push_back(static_cast<int>(f));
+    for (const ForceElement& e : elements) {
+      if (e.kind != ForceElement::Kind::kTriangle) continue;
+      for (int p : e.particles) on_surface[p] = true;
+      std::array<int, 3> sorted = e.particles;
+      std::sort(sorted.begin(), sorted.end());
+      membranes.push_back(sorted);
+    }
+  }
+  std::sort(membranes.begin(), membranes.end());
+  for (std::size_t t = 0; t < look.triangles.size(); ++t) {
+    std::array<int, 3> sorted = look.triangles[t];
+    for (int p : sorted) on_surface[p] = true;
+    std::sort(sorted.begin(), sorted.end());
+    if (!std::binary_search(membranes.begin(), membranes.end(), sorted)) {
+      parts.faces.push_back(static_cast<int>(t));
+    }
+  }
   for (int p : look.interior_particles) inside[p] = true;
   auto stood_for = [&](int p) { return on_surface[p] || inside[p]; };
-  SceneParts3D parts;
   for (int p = 0; p < n; ++p) {
     if (!stood_for(p)) {
       parts.particles.push_back(p);
@@ -211,7 +292,8 @@ Drawing compose_drawing_3d(const Scene& scene, const SceneParts3D& parts, const 
   drawing.text_color = text_color_for(scene.appearance.background);
   DepthSortedShapes shapes;
   add_trails(view, paths, shapes);
-  add_triangles(view, shapes);
+  add_faces(view, parts, shapes);
+  const double element_scale = add_elements(view, parts, overlay.elements, shapes);
   add_edges(view, parts, shapes);
   add_particles(view, parts, drawing.text_color, shapes);
   for (DepthShape& facet : sphere_triangles(scene, camera, view.projection)) {
@@ -221,6 +303,9 @@ Drawing compose_drawing_3d(const Scene& scene, const SceneParts3D& parts, const 
   drawing.shapes = shapes.farthest_first();
   add_overlay(view, overlay, drawing);
   drawing.text = overlay_text(overlay, state.time, scene.model.integrator.dt);
+  if (element_scale > 0.0 && overlay.elements.by != ElementColoring::kPlain) {
+    drawing.text.push_back(element_legend(overlay.elements.by, element_scale));
+  }
   return drawing;
 }
 

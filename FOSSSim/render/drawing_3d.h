@@ -21,24 +21,39 @@ inline constexpr double kOutlineMinPixels = 10.0;
 /// black or white, whichever reads on the background (text_color_for).
 inline constexpr double kPinMinPixels = 3.0;
 
-/// Which parts of a 3D scene are drawn besides its surfaces (Appearance::triangles). A surface
-/// stands for its mesh: the particles on it or inside it (Appearance::interior_particles) and
-/// the edges between them are not drawn; the fixed ones on it are marked as pins.
+/// Which parts of a 3D scene are drawn besides its surfaces. Surfaces are the mesh faces
+/// (Appearance::triangles) and the membranes: the triangles the model's forces show
+/// (Force::append_elements, the elastic bodies' constant strain triangles). A surface stands
+/// for its mesh: the particles on it or inside it (Appearance::interior_particles) and the
+/// edges between them are not drawn; the fixed ones on it are marked as pins.
 struct SceneParts3D {
   std::vector<int> particles;  ///< drawn as discs: on no surface and inside none
   std::vector<int> pins;       ///< fixed particles on a surface: drawn as dots
   std::vector<int> edges;      ///< drawn as capsules: with an end on no surface and inside none
-  ObstacleFrame obstacles;     ///< where half-spaces are drawn (render/obstacles_3d.h)
+  /// The model's forces (indices into SceneModel::forces) that show elements: asked for them
+  /// at every picture.
+  std::vector<int> element_forces;
+  /// The mesh faces drawn (indices into Appearance::triangles): those that are not also a
+  /// membrane triangle (same corners), which is drawn instead so that it can be coloured.
+  std::vector<int> faces;
+  ObstacleFrame obstacles;  ///< where half-spaces are drawn (render/obstacles_3d.h)
 };
 
-/// Works out SceneParts3D once for a scene (its topology does not change while it runs).
+/// Works out SceneParts3D once for a scene (its topology does not change while it runs; the
+/// forces' elements are asked for at the initial state).
 SceneParts3D compute_scene_parts_3d(const Scene& scene);
 
 /// The drawing of `state` of a 3D scene seen through `camera` on a width × height picture,
 /// every shape sorted farthest first by the depth of its point nearest the eye:
-/// - each surface triangle filled with the mean colour of its corners' particles, shaded by
-///   shade_triangle under camera_lighting, outlined in a darker colour when the surface is coarse
+/// - each mesh face filled with the mean colour of its corners' particles, shaded by
+///   shade_triangle under camera_lighting, outlined in a darker colour when the faces are coarse
 ///   (kOutlineMinPixels);
+/// - each membrane triangle (the triangles of `parts.element_forces` at `state`) the same way,
+///   filled with kPlainTriangleColor, or with the colour of its strain or energy density when
+///   overlay.elements asks (element_color, the 2D colour maps), then shaded alike on both sides
+///   (BackSide::kSame: the hue keeps its value, the brightness shows the shape), outlined when
+///   the membranes are coarse; a legend line (element_legend) when coloured by a value;
+/// - hinges the forces show, as two capsules and a disc on the hinge particle, in their colour;
 /// - `parts.edges` as capsules and `parts.particles` as discs, their radii scaled by the
 ///   perspective at their depth; fixed particles at least kPinMinPixels and ringed in the pin
 ///   colour; `parts.pins` as dots;

@@ -28,11 +28,11 @@ SceneView::SceneView(const Scene& scene, const State& initial, int width, int he
 void SceneView::record(const State& state) { paths_.record(state.q, scene_.model.dim); }
 
 Drawing SceneView::compose(const State& state, const Overlay& overlay) const {
-  if (orbit_) {
-    return compose_drawing_3d(scene_, parts_, state, paths_, *orbit_, width_, height_, overlay);
-  }
   Overlay with_colors = overlay;
   with_colors.elements = element_colors_;
+  if (orbit_) {
+    return compose_drawing_3d(scene_, parts_, state, paths_, *orbit_, width_, height_, with_colors);
+  }
   return compose_drawing(scene_, state, paths_, camera_, width_, height_, with_colors);
 }
 

@@ -28,11 +28,15 @@ Color back_side_color(const Color& front) {
 }
 
 Color shade_triangle(const Color& front, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                     const Eigen::Vector3d& c, const Eigen::Vector3d& view, Lighting light) {
+                     const Eigen::Vector3d& c, const Eigen::Vector3d& view, Lighting light,
+                     BackSide back) {
   const double length = view.norm();
   if (length > 0.0) light.to_eye = -view / length;
   const Eigen::Vector3d normal = (b - a).cross(c - a);
-  if (normal.dot(view) > 0.0) return shade_lambert(back_side_color(front), -normal, light);
+  if (normal.dot(view) > 0.0) {
+    const Color seen = back == BackSide::kTinted ? back_side_color(front) : front;
+    return shade_lambert(seen, -normal, light);
+  }
   return shade_lambert(front, normal, light);
 }
 

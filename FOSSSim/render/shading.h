@@ -29,11 +29,19 @@ Color shade_lambert(const Color& base, const Eigen::Vector3d& normal, const Ligh
 /// inside of a cloth reads apart from its outside.
 Color back_side_color(const Color& front);
 
+/// How the back of a two-sided surface is coloured.
+enum class BackSide {
+  kTinted,  ///< back_side_color(front): the inside of a cloth reads apart from its outside
+  kSame,    ///< the front colour: the colour carries a value (strain, energy) on either side
+};
+
 /// The shaded colour of a triangle with corners a, b, c seen along `view` (from the eye toward
 /// the triangle): two-sided, so the normal (b - a) × (c - a) is turned toward the viewer, and
-/// the back side takes back_side_color(front). `light.to_eye` is taken as -view (normalised).
+/// the back side takes back_side_color(front) unless `back` is BackSide::kSame.
+/// `light.to_eye` is taken as -view (normalised).
 Color shade_triangle(const Color& front, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                     const Eigen::Vector3d& c, const Eigen::Vector3d& view, Lighting light);
+                     const Eigen::Vector3d& c, const Eigen::Vector3d& view, Lighting light,
+                     BackSide back = BackSide::kTinted);
 
 /// The lighting of a 3D picture, fixed to the camera: the key light from above, to the left of
 /// and in front of the viewer. right, up, forward: the camera's unit axes (forward from the eye

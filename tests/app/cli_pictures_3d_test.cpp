@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <set>
+#include <string>
 
 #include "pictures/cairo_painter.h"
 #include "support/run_program.h"
@@ -93,6 +94,29 @@ TEST_F(CliPictures3D, SvgsOfA3DSceneAreValidXml) {
   ASSERT_EQ(document.LoadFile((folder_ / "svgs/frame_00002.svg").c_str()), tinyxml2::XML_SUCCESS)
       << document.ErrorStr();
   EXPECT_STREQ(document.RootElement()->Name(), "svg");
+}
+
+TEST_F(CliPictures3D, MembranesAreLightBlueOrColouredByStrainOnRequest) {
+  // The two membrane triangles of testing::kMembraneScene seen by the front camera (eye at
+  // z = 5, 90° field of view): the stretched one's centroid at pixel (179, 273), the
+  // compressed one's at (307, 273).
+  std::string scene = testing::kMembraneScene;
+  scene.insert(scene.rfind("</scene>"),
+               R"(<camera3d yaw="0" pitch="0" distance="5" tx="0" ty="0" tz="0" fov="90"/>)");
+  folder_.write("membranes.xml", scene);
+  ASSERT_EQ(fosssim("-s membranes.xml -d 0 -q -g 1 --png-dir plain").status, 0);
+  const Image plain = read_png(folder_ / "plain/frame_00000.png");
+  for (int x : {179, 307}) {  // light blue (kPlainTriangleColor 0.62, 0.78, 0.93), shaded
+    const Color c = plain.color_at(x, 273);
+    EXPECT_TRUE(c.b > c.g && c.g > c.r && c.r > 0.3 && c.b < 0.98) << x;
+  }
+  const auto result = fosssim("-s membranes.xml -d 0 -q -g 1 --png-dir strain --color-by strain");
+  ASSERT_EQ(result.status, 0) << result.err;
+  const Image strain = read_png(folder_ / "strain/frame_00000.png");
+  const Color red = strain.color_at(179, 273), blue = strain.color_at(307, 273);
+  EXPECT_TRUE(red.r > 3.0 * red.g && red.r > 3.0 * red.b) << red.r << " " << red.g << " " << red.b;
+  EXPECT_TRUE(blue.b > 2.0 * blue.r && blue.b > 2.0 * blue.g)
+      << blue.r << " " << blue.g << " " << blue.b;
 }
 
 TEST_F(CliPictures3D, MoviesOfA3DSceneRenderHeadless) {

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 #include <tinyxml2.h>
 
+#include <utility>
+#include <vector>
+
 #include "pictures/cairo_painter.h"
 #include "render/drawing_3d.h"
 #include "support/scene_builder.h"
@@ -98,6 +101,56 @@ TEST(Render3D, LeavesNoSeamsBetweenTheTrianglesOfASurface) {
       ASSERT_LE(color_distance(image.color_at(x, y), face), kTwoLevels) << x << ", " << y;
     }
   }
+}
+
+/// The membrane scene (support/tiny_scenes.h) drawn through the front camera, coloured `by`.
+Drawing draw_membranes(ElementColoring by) {
+  const Scene scene = testing::membrane_scene();
+  Overlay overlay;
+  overlay.show_time = false;
+  overlay.elements.by = by;
+  return compose_drawing_3d(scene, compute_scene_parts_3d(scene), scene.initial, PathHistory(scene),
+                            testing::front_camera(), 512, 512, overlay);
+}
+
+/// The first two triangles of a drawing: the membrane scene's stretched and compressed ones.
+std::pair<Color, Color> membrane_colors(const Drawing& drawing) {
+  std::vector<Color> colors;
+  for (const Shape& shape : drawing.shapes) {
+    if (const auto* t = std::get_if<Triangle>(&shape)) colors.push_back(t->color);
+  }
+  EXPECT_EQ(colors.size(), 2u);
+  return {colors.at(0), colors.at(1)};
+}
+
+TEST(Render3D, PaintsMembranesLightBlueByDefault) {
+  const Drawing drawing = draw_membranes(ElementColoring::kPlain);
+  const auto [left, right] = membrane_colors(drawing);
+  const Image image = render_image(drawing);
+  // The centroids' pixels, (179, 273) and (307, 273), show each triangle's shaded colour: the
+  // light blue, bluest of its components, and never the background.
+  for (const auto& [x, color] : {std::pair{179, left}, std::pair{307, right}}) {
+    const Color shown = image.color_at(x, 273);
+    EXPECT_LE(color_distance(shown, color), kOneColourLevel) << x;
+    EXPECT_GT(shown.b, shown.g) << x;
+    EXPECT_GT(shown.g, shown.r) << x;
+    EXPECT_GT(color_distance(shown, kWhite), 0.2) << x;
+  }
+  // Between the two triangles (x = 0, pixel 256) is background.
+  EXPECT_LE(color_distance(image.color_at(256, 273), kWhite), kOneColourLevel);
+}
+
+TEST(Render3D, PaintsStretchedMembranesRedAndCompressedOnesBlue) {
+  const Drawing drawing = draw_membranes(ElementColoring::kStrain);
+  const auto [stretched, compressed] = membrane_colors(drawing);
+  const Image image = render_image(drawing);
+  const Color red = image.color_at(179, 273), blue = image.color_at(307, 273);
+  EXPECT_LE(color_distance(red, stretched), kOneColourLevel);
+  EXPECT_LE(color_distance(blue, compressed), kOneColourLevel);
+  EXPECT_GT(red.r, 3.0 * red.b);
+  EXPECT_GT(red.r, 3.0 * red.g);
+  EXPECT_GT(blue.b, 2.0 * blue.r);
+  EXPECT_GT(blue.b, 2.0 * blue.g);
 }
 
 /// The elements named `name` anywhere under `element`.

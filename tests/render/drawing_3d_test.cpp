@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <numbers>
 
 #include "io/scene_loader.h"
 #include "render/scene_view.h"
@@ -15,6 +17,7 @@ namespace fosssim {
 namespace {
 
 using testing::front_camera;
+using testing::membrane_scene;
 using testing::particles_at;
 
 Drawing draw(const Scene& scene, const OrbitCamera& camera, const Overlay& overlay = {}) {
@@ -160,6 +163,183 @@ TEST(ComposeDrawing3D, DrawsTrailsAsSegmentsAmongTheShapes) {
   EXPECT_TRUE(std::holds_alternative<Capsule>(d.shapes[0]));  // z from -2 to -1: farthest
   EXPECT_TRUE(std::holds_alternative<Capsule>(d.shapes[1]));
   EXPECT_TRUE(std::holds_alternative<Disc>(d.shapes[2]));
+}
+
+/// The triangles of a drawing, in painting order.
+std::vector<Triangle> triangles_of(const Drawing& d) {
+  std::vector<Triangle> found;
+  for (const Shape& shape : d.shapes) {
+    if (const auto* t = std::get_if<Triangle>(&shape)) found.push_back(*t);
+  }
+  return found;
+}
+
+/// The colour triangle (a, b, c) of `scene` takes in colour `base` seen through `camera`.
+Color shaded(const Scene& scene, const OrbitCamera& camera, int a, int b, int c, const Color& base,
+             BackSide back) {
+  const OrbitProjection view(camera, 512, 512);
+  const Lighting light = camera_lighting(view.right(), view.up(), view.forward());
+  const Eigen::Vector3d pa = scene.initial.q.segment<3>(3 * a),
+                        pb = scene.initial.q.segment<3>(3 * b),
+                        pc = scene.initial.q.segment<3>(3 * c);
+  return shade_triangle(base, pa, pb, pc, (pa + pb + pc) / 3.0 - view.eye(), light, back);
+}
+
+void expect_color_near(const Color& shown, const Color& expected) {
+  EXPECT_NEAR(shown.r, expected.r, 1e-12);
+  EXPECT_NEAR(shown.g, expected.g, 1e-12);
+  EXPECT_NEAR(shown.b, expected.b, 1e-12);
+}
+
+TEST(ComposeDrawing3D, DrawsMembraneTrianglesShadedInThePlainColour) {
+  const Scene scene = membrane_scene();
+  const Drawing d = draw(scene, front_camera());
+  const std::vector<Triangle> triangles = triangles_of(d);
+  ASSERT_EQ(triangles.size(), 2u);  // one per element the forces show
+  std::vector<ForceElement> elements;
+  for (const auto& force : scene.model.forces) force->append_elements(scene.initial.q, elements);
+  EXPECT_EQ(elements.size(), triangles.size());
+  // Equal depths keep the forces' order: the stretched triangle first.
+  EXPECT_NEAR(triangles[0].corners[1].x, 256.0 - 0.5 * 51.2, 1e-9);
+  EXPECT_NEAR(triangles[1].corners[1].x, 256.0 + 2.0 * 51.2, 1e-9);
+  for (int k = 0; k < 2; ++k) {
+    // Light blue, shaded as a mesh face is (seen along the ray to its centre).
+    EXPECT_EQ(triangles[k].color, shaded(scene, front_camera(), 3 * k, 3 * k + 1, 3 * k + 2,
+                                         kPlainTriangleColor, BackSide::kTinted));
+    EXPECT_GT(triangles[k].outline_width, 0.0);  // sides of 77 to 128 pixels: coarse
+  }
+  EXPECT_EQ(d.text.size(), 1u);  // the time only: plain colours need no legend
+}
+
+TEST(ComposeDrawing3D, MembraneParticlesAreDrawnAsSurfaceVertices) {
+  const Scene scene = membrane_scene();
+  const SceneParts3D parts = compute_scene_parts_3d(scene);
+  EXPECT_EQ(parts.particles, (std::vector<int>{6}));  // the loose one only
+  EXPECT_EQ(parts.pins, (std::vector<int>{0}));       // the fixed corner
+  EXPECT_EQ(parts.edges, (std::vector<int>{1}));      // 5-6; 4-5 lies in the membrane
+  EXPECT_EQ(parts.element_forces, (std::vector<int>{0, 1}));
+  const Drawing d = draw(scene, front_camera());
+  int pins = 0, discs = 0, capsules = 0;
+  for (const Shape& shape : d.shapes) {
+    if (const auto* disc = std::get_if<Disc>(&shape)) {
+      (disc->color == d.text_color ? pins : discs) += 1;
+    }
+    capsules += std::holds_alternative<Capsule>(shape);
+  }
+  EXPECT_EQ(pins, 1);
+  EXPECT_EQ(discs, 1);
+  EXPECT_EQ(capsules, 1);
+}
+
+TEST(ComposeDrawing3D, ColoursMembranesByStrainOrEnergyWithTheLegendOf2D) {
+  const Scene scene = membrane_scene();
+  Overlay overlay;
+  overlay.elements.by = ElementColoring::kStrain;
+  const Drawing d = draw(scene, front_camera(), overlay);
+  std::vector<Triangle> triangles = triangles_of(d);
+  ASSERT_EQ(triangles.size(), 2u);
+  // +0.5 and -0.25 are beyond the default scale 0.1: full red and full blue, shaded.
+  expect_color_near(triangles[0].color, shaded(scene, front_camera(), 0, 1, 2,
+                                               strain_color(1.0, 1.0), BackSide::kSame));
+  expect_color_near(triangles[1].color, shaded(scene, front_camera(), 3, 4, 5,
+                                               strain_color(-1.0, 1.0), BackSide::kSame));
+  ASSERT_EQ(d.text.size(), 2u);
+  EXPECT_EQ(d.text[1], "strain: red +0.1, blue -0.1");
+  // At the scale 0.5 the compressed one is half way to blue.
+  overlay.elements.scale = 0.5;
+  triangles = triangles_of(draw(scene, front_camera(), overlay));
+  expect_color_near(triangles[1].color, shaded(scene, front_camera(), 3, 4, 5,
+                                               strain_color(-0.5, 1.0), BackSide::kSame));
+  // By energy, scaled by the largest density, the stretched triangle's E/(2(1 - ν²)) εxx² with
+  // the course's εxx = 1.5² - 1 = 1.25 (no ½): 10/1.82 · 1.25² ≈ 8.585 J/m²; the compressed
+  // one's εxx = 0.75² - 1 = -0.4375 gives (0.4375/1.25)² of it.
+  overlay.elements = {ElementColoring::kEnergy, 0.0};
+  const Drawing energy = draw(scene, front_camera(), overlay);
+  triangles = triangles_of(energy);
+  expect_color_near(triangles[0].color, shaded(scene, front_camera(), 0, 1, 2,
+                                               energy_color(1.0, 1.0), BackSide::kSame));
+  const double ratio = (0.4375 / 1.25) * (0.4375 / 1.25);
+  expect_color_near(triangles[1].color, shaded(scene, front_camera(), 3, 4, 5,
+                                               energy_color(ratio, 1.0), BackSide::kSame));
+  ASSERT_EQ(energy.text.size(), 2u);
+  EXPECT_EQ(energy.text[1], "energy density: dark red 8.59");
+}
+
+TEST(ComposeDrawing3D, ColouredMembranesLookTheSameFromBehindPlainOnesAreTinted) {
+  const Scene scene = membrane_scene();
+  OrbitCamera behind = front_camera();
+  behind.yaw = std::numbers::pi;  // the eye at z = -5, looking along +z
+  Overlay overlay;
+  overlay.elements.by = ElementColoring::kStrain;
+  const Color red = strain_color(1.0, 1.0);
+  // The two triangles are at the same depth: they keep the forces' order.
+  const Color stretched = triangles_of(draw(scene, behind, overlay)).at(0).color;
+  expect_color_near(stretched, shaded(scene, behind, 0, 1, 2, red, BackSide::kSame));
+  EXPECT_NE(stretched, shaded(scene, behind, 0, 1, 2, red, BackSide::kTinted));
+  const Color plain = triangles_of(draw(scene, behind)).at(0).color;
+  expect_color_near(plain, shaded(scene, behind, 0, 1, 2, kPlainTriangleColor, BackSide::kTinted));
+  EXPECT_NE(plain, shaded(scene, behind, 0, 1, 2, kPlainTriangleColor, BackSide::kSame));
+}
+
+TEST(SceneParts3D, AMeshFaceThatIsAMembraneIsDrawnOnceAsTheMembrane) {
+  Scene scene = membrane_scene();
+  scene.appearance.triangles = {{1, 2, 0}, {0, 1, 6}};  // the first is membrane 0-1-2
+  const SceneParts3D parts = compute_scene_parts_3d(scene);
+  EXPECT_EQ(parts.faces, (std::vector<int>{1}));
+  EXPECT_TRUE(parts.particles.empty());  // 6 is on a face now
+  Overlay overlay;
+  overlay.elements.by = ElementColoring::kStrain;
+  EXPECT_EQ(triangles_of(draw(scene, front_camera(), overlay)).size(), 3u);
+}
+
+/// A force that shows one hinge (particles 0, 1, 2) and has no energy: elements of a kind the
+/// 3D forces do not have yet.
+class HingeShowingForce final : public Force {
+ public:
+  void add_energy(const ForceInput&, double&) const override {}
+  void add_gradient(const ForceInput&, Vector&) const override {}
+  void add_hessian_x(const ForceInput&, HessianBuilder&) const override {}
+  void add_hessian_v(const ForceInput&, HessianBuilder&) const override {}
+  bool is_conservative() const override { return true; }
+  std::string label() const override { return "hinge"; }
+  void append_elements(const Vector&, std::vector<ForceElement>& elements) const override {
+    ForceElement hinge;
+    hinge.kind = ForceElement::Kind::kHinge;
+    hinge.particles = {0, 1, 2};
+    hinge.strain = -0.05;
+    elements.push_back(hinge);
+  }
+};
+
+TEST(ComposeDrawing3D, DrawsHingesAsTwoCapsulesAndADiscAmongTheShapes) {
+  testing::TestScene scene = particles_at({{-1, 0, 0}, {0, 0, 0}, {0, 1, 0}});
+  scene.add_force(std::make_unique<HingeShowingForce>());
+  Overlay overlay;
+  overlay.elements.by = ElementColoring::kStrain;
+  const Drawing d = draw(scene, front_camera(), overlay);
+  // The hinge does not stand for its particles: the three discs are drawn too.
+  int capsules = 0, discs = 0;
+  for (const Shape& shape : d.shapes) {
+    if (const auto* capsule = std::get_if<Capsule>(&shape)) {
+      ++capsules;
+      EXPECT_EQ(capsule->color, strain_color(-0.5, 1.0));
+    }
+    discs += std::holds_alternative<Disc>(shape);
+  }
+  EXPECT_EQ(capsules, 2);
+  EXPECT_EQ(discs, 4);
+}
+
+TEST(SceneView, ColoursThreeDimensionalMembranesAsItIsTold) {
+  const Scene scene = membrane_scene();
+  SceneView view(scene, scene.initial, 512, 512);
+  view.set_element_colors({ElementColoring::kStrain, 0.2});
+  const Drawing d = view.compose(scene.initial);
+  const std::vector<Triangle> triangles = triangles_of(d);
+  ASSERT_EQ(triangles.size(), 2u);
+  EXPECT_GT(triangles[0].color.r, 2.0 * triangles[0].color.b);  // stretched: red
+  EXPECT_GT(triangles[1].color.b, 2.0 * triangles[1].color.r);  // compressed: blue
+  EXPECT_EQ(d.text.back(), "strain: red +0.2, blue -0.2");
 }
 
 TEST(SceneView, UsesTheOrbitCameraForThreeDimensionalScenes) {

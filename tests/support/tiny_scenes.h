@@ -66,6 +66,29 @@ inline constexpr const char* kTinyScene3D = R"(<scene dim="3">
   <backgroundcolor r="0.1" g="0.1" b="0.2"/>
 </scene>)";
 
+/// Two membrane triangles (elasticbodycstforce in 3D) in the plane z = 0, facing the front
+/// camera (below; 51.2 pixels per unit there): particles 0-2 stretched to 1.5 times their rest
+/// width along x (strain +0.5), particles 3-5 compressed to 0.75 of it (strain -0.25); both keep
+/// their height. Centroids (-1.5, -1/3, 0) and (1, -1/3, 0): pixels (179.2, 273.07) and
+/// (307.2, 273.07). Particle 0 is fixed; particle 6 is loose, joined by an edge to particle 5,
+/// which an edge also joins to 4.
+inline constexpr const char* kMembraneScene = R"(<scene dim="3">
+  <duration time="0.1"/><integrator type="implicit-euler" dt="0.1"/>
+  <particle m="1" px="-2" py="-1" pz="0" vx="0" vy="0" vz="0" fixed="1"/>
+  <particle m="1" px="-0.5" py="-1" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
+  <particle m="1" px="-2" py="1" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
+  <particle m="1" px="0.5" py="-1" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
+  <particle m="1" px="2" py="-1" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
+  <particle m="1" px="0.5" py="1" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
+  <particle m="1" px="1.5" py="1.5" pz="0" vx="0" vy="0" vz="0" fixed="0"/>
+  <edge i="4" j="5"/>
+  <edge i="5" j="6"/>
+  <elasticbodycstforce i1="0" i2="1" i3="2" youngsmodulus="10" poissonratio="0.3" xb2x="-1"/>
+  <elasticbodycstforce i1="3" i2="4" i3="5" youngsmodulus="10" poissonratio="0.3" xb2x="2.5"/>
+</scene>)";
+
+inline Scene membrane_scene() { return load_scene_text(kMembraneScene, "membranes.xml"); }
+
 /// Looking along -z at the origin from 5 units with a 90° field of view: on 512 × 512 pixels the
 /// focal length is 256 pixels, so (x, y, z) goes to (256 + 256 x / (5 - z), 256 - 256 y / (5 - z)).
 inline OrbitCamera front_camera() {
