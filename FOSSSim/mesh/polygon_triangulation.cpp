@@ -144,9 +144,9 @@ class Triangulation {
   /// Corner i between h and j (positions in the walk) is a strictly convex corner whose
   /// triangle holds no other remaining vertex (on its sides included). Without bridges only
   /// corners that are not strictly convex are tested: only they can lie in an ear (a convex one
-  /// would make a side cross the ear). With bridges every vertex is tested but the other
-  /// appearances of h, i and j: an ear's corner may be a bridge's end, whose other appearance is
-  /// on the ear's corner and, between its two bridges, may be convex in both.
+  /// would make a side cross the ear). That argument is made for simple polygons; a walk with
+  /// bridges is only weakly simple, so there every vertex is tested but the other appearances
+  /// of h, i and j, which sit on the ear's corners (docs/forces.md, 'Polygon triangulation').
   bool is_ear(int h, int i, int j, const std::vector<int>& after) const {
     if (!(orient(at(h), at(i), at(j)) > 0.0)) return false;
     int before = j;

@@ -28,8 +28,9 @@ namespace fosssim {
 ///    ends of each bridge appear twice.
 /// 1. Ear clipping (Meisters 1975): repeatedly cut off the first strictly convex corner whose
 ///    triangle holds no other vertex of the walk, inside or on its sides (without holes only
-///    corners that are not strictly convex are tested, as only those can lie in an ear; with
-///    holes every vertex is, except the other appearances of the triangle's own corners).
+///    corners that are not strictly convex are tested, as only those can lie in an ear of a
+///    simple polygon; with holes every vertex is, except the other appearances of the
+///    triangle's own corners).
 /// 2. Lawson flips: an edge between two triangles is flipped while the far corner of one lies
 ///    inside the other's circumcircle (by more than round-off) and their quadrilateral is
 ///    strictly convex; sides of the outline and of the holes are never flipped (bridges are
