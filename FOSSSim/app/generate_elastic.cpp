@@ -63,8 +63,9 @@ const std::vector<ShapeCommand>& shape_commands() {
         {"innerradius", "Inner radius (m): makes an annulus"},
         {"layers", "Cells across the annulus (default 1)"}}},
       {"polygon",
-       "a simple polygon, triangulated (constrained Delaunay)",
+       "a simple polygon, with holes or not, triangulated (constrained Delaunay)",
        {{"points", "Corners: \"x0 y0 x1 y1 ...\""},
+        {"holes", "Holes' corners, holes separated by ';': \"x0 y0 x1 y1 ...; x0 y0 ...\""},
         {"spacing", "Target side length of the triangles (m); default: corners only"}}},
       {"obj", "the triangles of a 2D OBJ file (z 0 or absent)", {{"file", "The OBJ file"}}},
   };

@@ -128,8 +128,9 @@ void add_limit_options(CLI::App& app, Options& options) {
       ->capture_default_str()
       ->group(group);
   app.add_option("--max-polygon-corners", options.max_polygon_corners,
-                 "Refuse an <elasticbody shape=\"polygon\"> of more corners than this (its\n"
-                 "triangulation takes time quadratic in them)")
+                 "Refuse an <elasticbody shape=\"polygon\"> of more corners than this,\n"
+                 "outline and holes together (its triangulation takes time quadratic\n"
+                 "in them)")
       ->check(CLI::Range(std::int64_t{3}, std::int64_t{1} << 24))
       ->capture_default_str()
       ->group(group);

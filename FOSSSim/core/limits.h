@@ -34,8 +34,9 @@ struct Limits {
   /// this many, with a warning. Each pass tests and logs every pair, so the default is a
   /// hundred times the course's default of 10 (--max-hybrid-passes).
   std::int64_t max_hybrid_passes = 1000;
-  /// Corners of the outline of one <elasticbody shape="polygon">: checking that it is simple and
-  /// clipping its ears take time quadratic in them (--max-polygon-corners).
+  /// Corners of one <elasticbody shape="polygon">, its outline's and its holes' together:
+  /// checking that it is simple with its holes apart, bridging the holes and clipping its ears
+  /// take time quadratic in them (--max-polygon-corners).
   std::int64_t max_polygon_corners = 10'000;
 };
 

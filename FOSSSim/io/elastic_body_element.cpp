@@ -18,7 +18,6 @@ namespace fosssim {
 
 namespace {
 
-
 /// A required integer of at least `minimum`.
 int integer_at_least(ElementReader& r, const char* name, int minimum) {
   const int value = r.integer(name);
@@ -40,23 +39,27 @@ double positive_or(ElementReader& r, const char* name, double fallback) {
   return present(r, name) ? r.positive(name) : fallback;
 }
 
-/// The numbers of a list attribute, separated by blanks or commas.
-std::vector<double> number_list(ElementReader& r, const char* name) {
-  std::string spaced = r.text(name);
+/// The numbers of `text`, separated by blanks or commas; `fail` gets a word that is not one.
+template <typename Fail>
+std::vector<double> numbers_of(std::string spaced, Fail&& fail) {
   std::replace(spaced.begin(), spaced.end(), ',', ' ');
   std::vector<double> values;
   for (std::string_view word : split_line(spaced)) {
     double value = 0.0;
-    if (!parse_finite(word, value)) r.fail(name, "must be numbers, found " + quote(word));
+    if (!parse_finite(word, value)) fail("must be numbers, found " + quote(word));
     values.push_back(value);
   }
   return values;
 }
 
-/// The polygon's corners from points="x0 y0 x1 y1 ...".
-std::vector<Eigen::Vector2d> read_corners(ElementReader& r, std::int64_t max_corners) {
-  // Count the words before converting them, in one pass that allocates nothing.
-  const std::string text = r.text("points");
+/// The numbers of a list attribute, separated by blanks or commas.
+std::vector<double> number_list(ElementReader& r, const char* name) {
+  return numbers_of(r.text(name), [&](const std::string& problem) { r.fail(name, problem); });
+}
+
+/// The words of `text` (separated by blanks or commas), counted in one pass that allocates
+/// nothing.
+std::int64_t count_words(std::string_view text) {
   std::int64_t words = 0;
   bool in_word = false;
   for (const char c : text) {
@@ -64,18 +67,59 @@ std::vector<Eigen::Vector2d> read_corners(ElementReader& r, std::int64_t max_cor
     if (!separator && !in_word) ++words;
     in_word = !separator;
   }
-  if ((words + 1) / 2 > max_corners) {
-    r.fail("points", "holds " + std::to_string((words + 1) / 2) + " corners, " +
-                         over_limit(max_corners, "corners", "--max-polygon-corners"));
-  }
-  const std::vector<double> values = number_list(r, "points");
-  if (values.size() % 2 != 0) {
-    r.fail("points", "must hold x y pairs, found " + std::to_string(values.size()) + " numbers");
-  }
+  return words;
+}
+
+/// x y pairs as points; `fail` gets an odd count.
+template <typename Fail>
+std::vector<Eigen::Vector2d> pairs_of(const std::vector<double>& values, Fail&& fail) {
+  if (values.size() % 2 != 0)
+    fail("must hold x y pairs, found " + std::to_string(values.size()) + " numbers");
   std::vector<Eigen::Vector2d> corners;
   for (std::size_t k = 0; k + 1 < values.size(); k += 2)
     corners.emplace_back(values[k], values[k + 1]);
   return corners;
+}
+
+/// The polygon's corners from points="x0 y0 x1 y1 ...".
+std::vector<Eigen::Vector2d> read_corners(ElementReader& r, std::int64_t max_corners) {
+  // Count the words before converting them.
+  const std::int64_t corners = (count_words(r.text("points")) + 1) / 2;
+  if (corners > max_corners) {
+    r.fail("points", "holds " + std::to_string(corners) + " corners, " +
+                         over_limit(max_corners, "corners", "--max-polygon-corners"));
+  }
+  return pairs_of(number_list(r, "points"),
+                  [&](const std::string& problem) { r.fail("points", problem); });
+}
+
+/// The polygon's holes from holes="x0 y0 x1 y1 ...; x0 y0 ...": one list of corners per hole,
+/// separated by ';'. `outline_corners` counts towards max_corners.
+std::vector<std::vector<Eigen::Vector2d>> read_holes(ElementReader& r, std::size_t outline_corners,
+                                                     std::int64_t max_corners) {
+  const std::string text = r.text("holes");
+  std::vector<std::string_view> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t end = text.find(';', start);
+    parts.push_back(std::string_view(text).substr(start, end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  auto corners = static_cast<std::int64_t>(outline_corners);
+  for (const std::string_view part : parts) corners += (count_words(part) + 1) / 2;
+  if (corners > max_corners) {
+    r.fail("holes", "brings the polygon to " + std::to_string(corners) + " corners, " +
+                        over_limit(max_corners, "corners", "--max-polygon-corners"));
+  }
+  std::vector<std::vector<Eigen::Vector2d>> holes;
+  for (std::size_t h = 0; h < parts.size(); ++h) {
+    const auto fail = [&](const std::string& problem) {
+      r.fail("holes", "(hole " + std::to_string(h) + ") " + problem);
+    };
+    if (count_words(parts[h]) == 0) fail("is empty: holes are lists of x y pairs separated by ';'");
+    holes.push_back(pairs_of(numbers_of(std::string(parts[h]), fail), fail));
+  }
+  return holes;
 }
 
 /// The body's shape from the attributes of its kind.
@@ -111,7 +155,10 @@ ElasticShape read_shape(ElementReader& r, const std::string& shape, const std::s
     if (shape == "polygon") {
       const std::int64_t max_corners = files.limits().max_polygon_corners;
       const auto corners = read_corners(r, max_corners);
-      return make_polygon(corners, positive_or(r, "spacing", 0.0), max_vertices, max_corners);
+      const auto holes = present(r, "holes") ? read_holes(r, corners.size(), max_corners)
+                                             : std::vector<std::vector<Eigen::Vector2d>>{};
+      return make_polygon(corners, holes, positive_or(r, "spacing", 0.0), max_vertices,
+                          max_corners);
     }
     if (shape == "obj") {
       std::filesystem::path path(r.text("file"));

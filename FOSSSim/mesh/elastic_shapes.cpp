@@ -34,25 +34,12 @@ void connect_rod(ElasticShape& shape, bool closed) {
     shape.hinges.push_back({(k + n - 1) % n, k, (k + 1) % n});
 }
 
-/// True when the closed segments [a, b] and [c, d] share a point.
-bool segments_meet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
-                   const Eigen::Vector2d& d) {
-  const double o1 = orientation(a, b, c), o2 = orientation(a, b, d);
-  const double o3 = orientation(c, d, a), o4 = orientation(c, d, b);
-  const auto on = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& x) {
-    return x.x() >= std::min(p.x(), q.x()) && x.x() <= std::max(p.x(), q.x()) &&
-           x.y() >= std::min(p.y(), q.y()) && x.y() <= std::max(p.y(), q.y());
-  };
-  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
-    return true;
-  return (o1 == 0 && on(a, b, c)) || (o2 == 0 && on(a, b, d)) || (o3 == 0 && on(c, d, a)) ||
-         (o4 == 0 && on(c, d, b));
-}
-
 /// Refuses an outline that is not a simple polygon of positive area: fewer than 3 corners, a
 /// corner repeated, sides crossing or touching, a side folding back over the previous one.
-/// Quadratic in the corners (their number is bounded by the caller).
-void check_simple(const std::vector<Eigen::Vector2d>& outline) {
+/// `prefix` goes before each problem ("hole 1: " for a hole). Quadratic in the corners (their
+/// number is bounded by the caller).
+void check_simple(const std::vector<Eigen::Vector2d>& outline, const std::string& prefix = "") {
+  const auto bad = [&](const std::string& problem) { fosssim::bad(prefix + problem); };
   const int n = static_cast<int>(outline.size());
   if (n < 3) bad("a polygon needs at least 3 corners, found " + std::to_string(n));
   for (int i = 0; i < n; ++i) {
@@ -75,7 +62,7 @@ void check_simple(const std::vector<Eigen::Vector2d>& outline) {
     }
     for (int j = i + 2; j < n; ++j) {
       if (i == 0 && j == n - 1) continue;  // neighbours through corner 0
-      if (segments_meet(a, b, outline[j], outline[(j + 1) % n])) {
+      if (closed_segments_meet(a, b, outline[j], outline[(j + 1) % n])) {
         bad("side " + std::to_string(i) + " (corners " + std::to_string(i) + "–" +
             std::to_string((i + 1) % n) + ") and side " + std::to_string(j) + " (corners " +
             std::to_string(j) + "–" + std::to_string((j + 1) % n) +
@@ -85,12 +72,75 @@ void check_simple(const std::vector<Eigen::Vector2d>& outline) {
   }
 }
 
-/// The grid points of `spacing` strictly inside the counter-clockwise outline and at least
-/// spacing/2 from each of its sides, row by row (y increasing), each row by x increasing. The
-/// grid is centred on the outline's bounding box.
-std::vector<Eigen::Vector2d> interior_grid(const std::vector<Eigen::Vector2d>& outline,
+/// "side 2 (corners 2–3)" of a loop of n corners.
+std::string side_name(int k, int n) {
+  return "side " + std::to_string(k) + " (corners " + std::to_string(k) + "–" +
+         std::to_string((k + 1) % n) + ")";
+}
+
+/// The first side of `a` and side of `b` that meet, or {-1, -1}. Quadratic.
+std::pair<int, int> first_meeting_sides(const std::vector<Eigen::Vector2d>& a,
+                                        const std::vector<Eigen::Vector2d>& b) {
+  const int na = static_cast<int>(a.size()), nb = static_cast<int>(b.size());
+  for (int i = 0; i < na; ++i) {
+    for (int j = 0; j < nb; ++j) {
+      if (closed_segments_meet(a[i], a[(i + 1) % na], b[j], b[(j + 1) % nb])) return {i, j};
+    }
+  }
+  return {-1, -1};
+}
+
+/// x strictly inside the closed polygon `loop` (x on no side of it: the caller knows), by the
+/// parity of the sides a ray towards +x crosses.
+bool inside_loop(const std::vector<Eigen::Vector2d>& loop, const Eigen::Vector2d& x) {
+  bool inside = false;
+  const int n = static_cast<int>(loop.size());
+  for (int k = 0; k < n; ++k) {
+    const auto& a = loop[k];
+    const auto& b = loop[(k + 1) % n];
+    if ((a.y() > x.y()) != (b.y() > x.y()) &&
+        x.x() < a.x() + (x.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
+      inside = !inside;
+  }
+  return inside;
+}
+
+/// Refuses holes that are not simple, not strictly inside the outline, or that meet the outline
+/// or each other (crossing, touching, or one inside another). Quadratic in all corners.
+void check_holes(const std::vector<Eigen::Vector2d>& outline,
+                 const std::vector<std::vector<Eigen::Vector2d>>& holes) {
+  for (std::size_t h = 0; h < holes.size(); ++h) {
+    const std::string name = "hole " + std::to_string(h);
+    check_simple(holes[h], name + ": ");
+    const auto [side, outline_side] = first_meeting_sides(holes[h], outline);
+    if (side >= 0) {
+      bad(name + " crosses or touches the outline: its " +
+          side_name(side, static_cast<int>(holes[h].size())) + " and the outline's " +
+          side_name(outline_side, static_cast<int>(outline.size())));
+    }
+    if (!inside_loop(outline, holes[h][0])) bad(name + " is outside the outline");
+  }
+  for (std::size_t h = 0; h < holes.size(); ++h) {
+    for (std::size_t g = 0; g < h; ++g) {
+      const auto [side, other_side] = first_meeting_sides(holes[h], holes[g]);
+      const std::string names = "holes " + std::to_string(g) + " and " + std::to_string(h);
+      if (side >= 0) {
+        bad(names + " cross or touch: " + side_name(other_side, static_cast<int>(holes[g].size())) +
+            " of hole " + std::to_string(g) + " and " +
+            side_name(side, static_cast<int>(holes[h].size())) + " of hole " + std::to_string(h));
+      }
+      if (inside_loop(holes[g], holes[h][0]) || inside_loop(holes[h], holes[g][0]))
+        bad(names + " overlap: one lies inside the other");
+    }
+  }
+}
+
+/// The grid points of `spacing` strictly inside the polygon whose outline is loops[0] (its
+/// holes the later loops) and at least spacing/2 from each side of every loop, row by row
+/// (y increasing), each row by x increasing. The grid is centred on the outline's bounding box.
+std::vector<Eigen::Vector2d> interior_grid(const std::vector<std::vector<Eigen::Vector2d>>& loops,
                                            double spacing) {
-  const int n = static_cast<int>(outline.size());
+  const std::vector<Eigen::Vector2d>& outline = loops[0];
   Eigen::Vector2d low = outline[0], high = outline[0];
   for (const auto& x : outline) {
     low = low.cwiseMin(x);
@@ -103,31 +153,33 @@ std::vector<Eigen::Vector2d> interior_grid(const std::vector<Eigen::Vector2d>& o
       low + 0.5 * (size - spacing * Eigen::Vector2d(columns - 1, rows - 1));
   const double margin = 0.5 * spacing;
   std::vector<Eigen::Vector2d> points;
-  std::vector<int> near;
+  std::vector<std::pair<const Eigen::Vector2d*, const Eigen::Vector2d*>> near;
   std::vector<double> crossings;
   for (int r = 0; r < rows; ++r) {
     const double y = first.y() + r * spacing;
     near.clear();
     crossings.clear();
-    for (int k = 0; k < n; ++k) {
-      const auto& a = outline[k];
-      const auto& b = outline[(k + 1) % n];
-      if (std::min(a.y(), b.y()) <= y + margin && std::max(a.y(), b.y()) >= y - margin)
-        near.push_back(k);
-      if ((a.y() > y) != (b.y() > y))
-        crossings.push_back(a.x() + (y - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
+    for (const auto& loop : loops) {
+      const int n = static_cast<int>(loop.size());
+      for (int k = 0; k < n; ++k) {
+        const auto& a = loop[k];
+        const auto& b = loop[(k + 1) % n];
+        if (std::min(a.y(), b.y()) <= y + margin && std::max(a.y(), b.y()) >= y - margin)
+          near.push_back({&a, &b});
+        if ((a.y() > y) != (b.y() > y))
+          crossings.push_back(a.x() + (y - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
+      }
     }
     std::sort(crossings.begin(), crossings.end());
     for (int c = 0; c < columns; ++c) {
       const Eigen::Vector2d x(first.x() + c * spacing, y);
       const auto left = std::lower_bound(crossings.begin(), crossings.end(), x.x());
-      if ((left - crossings.begin()) % 2 == 0) continue;  // outside
+      if ((left - crossings.begin()) % 2 == 0) continue;  // outside, or in a hole
       bool clear = true;
-      for (const int k : near) {
-        const auto& a = outline[k];
-        const Eigen::Vector2d side = outline[(k + 1) % n] - a;
-        const double t = std::clamp((x - a).dot(side) / side.squaredNorm(), 0.0, 1.0);
-        if ((a + t * side - x).norm() < margin) {
+      for (const auto& [a, b] : near) {
+        const Eigen::Vector2d side = *b - *a;
+        const double t = std::clamp((x - *a).dot(side) / side.squaredNorm(), 0.0, 1.0);
+        if ((*a + t * side - x).norm() < margin) {
           clear = false;
           break;
         }
@@ -136,6 +188,19 @@ std::vector<Eigen::Vector2d> interior_grid(const std::vector<Eigen::Vector2d>& o
     }
   }
   return points;
+}
+
+/// `loop` turned to the orientation `counter_clockwise` from its corner 0 (its corners after
+/// corner 0 reversed when it turns the other way).
+std::vector<Eigen::Vector2d> oriented(std::vector<Eigen::Vector2d> loop, bool counter_clockwise) {
+  double twice_area = 0.0;
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const auto& a = loop[k];
+    const auto& b = loop[(k + 1) % loop.size()];
+    twice_area += a.x() * b.y() - a.y() * b.x();
+  }
+  if ((twice_area < 0.0) == counter_clockwise) std::reverse(loop.begin() + 1, loop.end());
+  return loop;
 }
 
 }  // namespace
@@ -229,55 +294,71 @@ ElasticShape make_annulus(int segments, int layers, double inner_radius, double 
   return shape;
 }
 
-ElasticShape make_polygon(const std::vector<Eigen::Vector2d>& given, double spacing,
+ElasticShape make_polygon(const std::vector<Eigen::Vector2d>& outline, double spacing,
                           std::int64_t max_vertices, std::int64_t max_corners) {
-  const auto corners = static_cast<std::int64_t>(given.size());
+  return make_polygon(outline, {}, spacing, max_vertices, max_corners);
+}
+
+ElasticShape make_polygon(const std::vector<Eigen::Vector2d>& given,
+                          const std::vector<std::vector<Eigen::Vector2d>>& given_holes,
+                          double spacing, std::int64_t max_vertices, std::int64_t max_corners) {
+  auto corners = static_cast<std::int64_t>(given.size());
+  for (const auto& hole : given_holes) corners += static_cast<std::int64_t>(hole.size());
   if (corners > max_corners) {
-    bad("a polygon of " + std::to_string(corners) + " corners, " +
+    bad((given_holes.empty() ? "a polygon of " : "a polygon with holes of ") +
+        std::to_string(corners) + " corners, " +
         over_limit(max_corners, "corners", "--max-polygon-corners"));
   }
-  check_vertex_count(corners, max_vertices, "the polygon's outline");
+  check_vertex_count(corners, max_vertices,
+                     given_holes.empty() ? "the polygon's outline" : "the polygon's outlines");
   check_simple(given);
-  double twice_area = 0.0;
-  for (std::size_t k = 0; k < given.size(); ++k) {
-    const auto& a = given[k];
-    const auto& b = given[(k + 1) % given.size()];
-    twice_area += a.x() * b.y() - a.y() * b.x();
-  }
-  std::vector<Eigen::Vector2d> outline = given;
-  if (twice_area < 0.0) std::reverse(outline.begin() + 1, outline.end());
-  const int n = static_cast<int>(outline.size());
-  std::vector<int> cuts(n, 0);
+  check_holes(given, given_holes);
+  // The outline counter-clockwise, each hole clockwise: the body is on the left of every side.
+  std::vector<std::vector<Eigen::Vector2d>> loops = {oriented(given, true)};
+  for (const auto& hole : given_holes) loops.push_back(oriented(hole, false));
+  std::vector<int> loop_corners;
   ElasticShape shape;
-  shape.vertices = outline;
+  for (const auto& loop : loops) {
+    loop_corners.push_back(static_cast<int>(loop.size()));
+    shape.vertices.insert(shape.vertices.end(), loop.begin(), loop.end());
+  }
+  std::vector<int> cuts(corners, 0);
   if (spacing > 0.0) {
-    // Count first: the cut points exactly, the grid points by the bounding box's grid.
-    Eigen::Vector2d low = outline[0], high = outline[0];
+    // Count first: the cut points exactly, the grid points by the outline's bounding box's grid.
+    Eigen::Vector2d low = loops[0][0], high = loops[0][0];
+    for (const auto& x : loops[0]) {
+      low = low.cwiseMin(x);
+      high = high.cwiseMax(x);
+    }
     double total_cuts = 0.0;
-    for (int k = 0; k < n; ++k) {
-      low = low.cwiseMin(outline[k]);
-      high = high.cwiseMax(outline[k]);
-      total_cuts += std::ceil((outline[(k + 1) % n] - outline[k]).norm() / spacing) - 1.0;
+    for (const auto& loop : loops) {
+      const int n = static_cast<int>(loop.size());
+      for (int k = 0; k < n; ++k)
+        total_cuts += std::ceil((loop[(k + 1) % n] - loop[k]).norm() / spacing) - 1.0;
     }
     const Eigen::Vector2d size = high - low;
     const double grid =
         (std::floor(size.x() / spacing) + 1.0) * (std::floor(size.y() / spacing) + 1.0);
-    const double bound = n + total_cuts + grid;
+    const double bound = static_cast<double>(corners) + total_cuts + grid;
     check_vertex_count(
         bound < 9e18 ? static_cast<std::int64_t>(bound) : std::numeric_limits<std::int64_t>::max(),
         max_vertices,
         "the polygon at spacing " + to_text(spacing) +
             " (its corners, the cuts of its sides and the grid over its box)",
         "may have");
-    for (int k = 0; k < n; ++k) {
-      const Eigen::Vector2d a = outline[k], b = outline[(k + 1) % n];
-      cuts[k] = static_cast<int>(std::ceil((b - a).norm() / spacing)) - 1;
-      for (int s = 1; s <= cuts[k]; ++s)
-        shape.vertices.push_back(a + (b - a) * (static_cast<double>(s) / (cuts[k] + 1)));
+    int side = 0;
+    for (const auto& loop : loops) {
+      const int n = static_cast<int>(loop.size());
+      for (int k = 0; k < n; ++k, ++side) {
+        const Eigen::Vector2d a = loop[k], b = loop[(k + 1) % n];
+        cuts[side] = static_cast<int>(std::ceil((b - a).norm() / spacing)) - 1;
+        for (int s = 1; s <= cuts[side]; ++s)
+          shape.vertices.push_back(a + (b - a) * (static_cast<double>(s) / (cuts[side] + 1)));
+      }
     }
-    for (const auto& x : interior_grid(outline, spacing)) shape.vertices.push_back(x);
+    for (const auto& x : interior_grid(loops, spacing)) shape.vertices.push_back(x);
   }
-  shape.triangles = triangulate_polygon(shape.vertices, n, cuts);
+  shape.triangles = triangulate_polygon(shape.vertices, loop_corners, cuts);
   shape.edges = compute_triangle_edges(shape.triangles, shape.num_vertices());
   return shape;
 }

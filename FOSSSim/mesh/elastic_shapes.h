@@ -72,6 +72,19 @@ ElasticShape make_polygon(const std::vector<Eigen::Vector2d>& outline, double sp
                           std::int64_t max_vertices = Limits{}.max_particles,
                           std::int64_t max_corners = Limits{}.max_polygon_corners);
 
+/// The same with holes: each hole a simple polygon (as the outline: either orientation, at
+/// least 3 corners), strictly inside the outline, meeting neither the outline nor another hole
+/// (no sides crossing or touching, no hole inside another). Messages name the hole (0-based) and
+/// its sides. The vertices are the outline's corners (counter-clockwise from outline[0]), each
+/// hole's corners in turn (clockwise from its corner 0: the body is on the left of every side),
+/// then the cut points of the outline's sides and of each hole's, then the grid points outside
+/// the holes and at least spacing/2 from every side. max_corners bounds the outline's and the
+/// holes' corners together. Without holes it is exactly make_polygon(outline, spacing, ...).
+ElasticShape make_polygon(const std::vector<Eigen::Vector2d>& outline,
+                          const std::vector<std::vector<Eigen::Vector2d>>& holes, double spacing,
+                          std::int64_t max_vertices = Limits{}.max_particles,
+                          std::int64_t max_corners = Limits{}.max_polygon_corners);
+
 /// Triangles over given vertices (an OBJ file's, say): each turned counter-clockwise, edges
 /// derived. Throws Error (kBadInput) naming the 0-based triangle for a triangle of zero area
 /// and the vertex for a vertex on no triangle.

@@ -37,8 +37,12 @@ class Triangulation {
  public:
   explicit Triangulation(const std::vector<Point>& points) : p_(points) {}
 
-  /// Ear clipping of the outline points[0 .. corners).
-  void clip_ears(int corners) {
+  /// Ear clipping of the closed walk of point indices `walk` (the outline, or the outline
+  /// joined to its holes by bridges: `bridged`).
+  void clip_ears(const std::vector<int>& walk, bool bridged) {
+    walk_ = walk;
+    bridged_ = bridged;
+    const int corners = static_cast<int>(walk.size());
     std::vector<int> before(corners), after(corners);
     for (int k = 0; k < corners; ++k) {
       before[k] = (k + corners - 1) % corners;
@@ -47,7 +51,7 @@ class Triangulation {
     int remaining = corners, cursor = 0, tried = 0;
     while (remaining > 3) {
       if (is_ear(before[cursor], cursor, after[cursor], after)) {
-        tri_.push_back({before[cursor], cursor, after[cursor]});
+        tri_.push_back({walk_[before[cursor]], walk_[cursor], walk_[after[cursor]]});
         after[before[cursor]] = after[cursor];
         before[after[cursor]] = before[cursor];
         cursor = before[cursor];  // its corner changed: it may be an ear now
@@ -62,11 +66,11 @@ class Triangulation {
       }
     }
     const int a = cursor, b = after[a], c = after[b];
-    if (!(orient(p_[a], p_[b], p_[c]) > 0.0)) {
+    if (!(orient(at(a), at(b), at(c)) > 0.0)) {
       throw Error(ErrorKind::kBadInput,
                   "the polygon could not be triangulated (its last triangle is flat)");
     }
-    tri_.push_back({a, b, c});
+    tri_.push_back({walk_[a], walk_[b], walk_[c]});
   }
 
   /// Remembers which triangle holds each directed side, for cut_side.
@@ -134,19 +138,29 @@ class Triangulation {
   std::vector<std::array<int, 3>> triangles() && { return std::move(tri_); }
 
  private:
-  /// Corner i between h and j is a strictly convex corner whose triangle holds no other
-  /// remaining outline vertex (on its sides included). Only corners that are not strictly
-  /// convex can lie in an ear (a convex one would make a side cross the ear).
+  /// The point at position k of the walk.
+  const Point& at(int k) const { return p_[walk_[k]]; }
+
+  /// Corner i between h and j (positions in the walk) is a strictly convex corner whose
+  /// triangle holds no other remaining vertex (on its sides included). Without bridges only
+  /// corners that are not strictly convex are tested: only they can lie in an ear (a convex one
+  /// would make a side cross the ear). That argument is made for simple polygons; a walk with
+  /// bridges is only weakly simple, so there every vertex is tested but the other appearances
+  /// of h, i and j, which sit on the ear's corners (docs/forces.md, 'Polygon triangulation').
   bool is_ear(int h, int i, int j, const std::vector<int>& after) const {
-    if (!(orient(p_[h], p_[i], p_[j]) > 0.0)) return false;
+    if (!(orient(at(h), at(i), at(j)) > 0.0)) return false;
     int before = j;
     for (int k = after[j]; k != h; k = after[k]) {
       const int following = after[k];
-      const bool convex = orient(p_[before], p_[k], p_[following]) > 0.0;
+      const bool convex = orient(at(before), at(k), at(following)) > 0.0;
       before = k;
-      if (convex) continue;
-      if (orient(p_[h], p_[i], p_[k]) >= 0.0 && orient(p_[i], p_[j], p_[k]) >= 0.0 &&
-          orient(p_[j], p_[h], p_[k]) >= 0.0)
+      if (bridged_) {
+        if (walk_[k] == walk_[h] || walk_[k] == walk_[i] || walk_[k] == walk_[j]) continue;
+      } else if (convex) {
+        continue;
+      }
+      if (orient(at(h), at(i), at(k)) >= 0.0 && orient(at(i), at(j), at(k)) >= 0.0 &&
+          orient(at(j), at(h), at(k)) >= 0.0)
         return false;
     }
     return true;
@@ -302,25 +316,174 @@ class Triangulation {
   std::vector<std::array<int, 3>> tri_;
   std::vector<std::array<int, 3>> nb_;
   std::map<std::pair<int, int>, int> side_triangle_;  // directed side -> triangle, for cutting
+  std::vector<int> walk_;  // the walk being clipped: point indices, bridge ends twice
+  bool bridged_ = false;
 
   void remember_sides(int t) {
     for (int k = 0; k < 3; ++k) side_triangle_[{tri_[t][k], tri_[t][next(k)]}] = t;
   }
 };
 
+/// Strictly inside the polygon's angle at corner v, whose sides come from `from` and go to `to`
+/// with the polygon on their left: the direction from v to x, off both sides.
+bool inside_polygon_corner(const Point& from, const Point& v, const Point& to, const Point& x) {
+  const double first = orient(from, v, x), second = orient(v, to, x);
+  if (orient(from, v, to) >= 0.0) return first > 0.0 && second > 0.0;  // convex or straight
+  return first > 0.0 || second > 0.0;  // reflex: all but the closed outside wedge
+}
+
+/// A loop of corners: points first .. first + count - 1, in order.
+struct PolygonLoop {
+  int first = 0;
+  int count = 0;
+  int corner(int k) const { return first + (k % count + count) % count; }
+};
+
+/// The outline (loops[0]) joined to the holes (loops[1 ..]) by bridges, as one closed walk of
+/// point indices (polygon_triangulation.h, step 0). Throws Error when a hole has no bridge.
+class HoleBridges {
+ public:
+  HoleBridges(const std::vector<Point>& points, std::vector<PolygonLoop> loops)
+      : p_(points), loops_(std::move(loops)), merged_(loops_.size(), 0) {
+    for (int k = 0; k < loops_[0].count; ++k) walk_.push_back(loops_[0].corner(k));
+    merged_[0] = 1;
+  }
+
+  std::vector<int> join() && {
+    std::vector<int> order;
+    for (int h = 1; h < static_cast<int>(loops_.size()); ++h) order.push_back(h);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return p_[rightmost(a)].x() > p_[rightmost(b)].x(); });
+    for (const int h : order) join_hole(h);
+    return std::move(walk_);
+  }
+
+ private:
+  /// The corner of loop h of largest x (the first of them in the loop's order).
+  int rightmost(int h) const {
+    int best = loops_[h].first;
+    for (int k = 1; k < loops_[h].count; ++k) {
+      if (p_[loops_[h].corner(k)].x() > p_[best].x()) best = loops_[h].corner(k);
+    }
+    return best;
+  }
+
+  /// Splices hole h into the walk through a bridge from its rightmost corner m to the nearest
+  /// point of the walk (ties: the smaller index) that sees it.
+  void join_hole(int h) {
+    const PolygonLoop& hole = loops_[h];
+    const int m = rightmost(h);
+    const int km = m - hole.first;
+    const Point& pm = p_[m];
+    // Candidates nearest first, from a heap: most holes take the first or second.
+    std::vector<std::pair<double, int>> heap;
+    for (const int v : walk_) heap.push_back({(p_[v] - pm).squaredNorm(), v});
+    const auto later = [](const std::pair<double, int>& a, const std::pair<double, int>& b) {
+      return a > b;
+    };
+    std::make_heap(heap.begin(), heap.end(), later);
+    int last = -1;
+    while (!heap.empty()) {
+      std::pop_heap(heap.begin(), heap.end(), later);
+      const int v = heap.back().second;
+      heap.pop_back();
+      if (v == last) continue;  // a bridge's end appears twice
+      last = v;
+      if (!inside_polygon_corner(p_[hole.corner(km - 1)], pm, p_[hole.corner(km + 1)], p_[v]))
+        continue;
+      const int at = seeing_position(v, m);
+      if (at < 0 || !clear(v, m)) continue;
+      std::vector<int> inserted;
+      for (int k = 0; k <= hole.count; ++k) inserted.push_back(hole.corner(km + k));
+      inserted.push_back(v);
+      walk_.insert(walk_.begin() + at + 1, inserted.begin(), inserted.end());
+      merged_[h] = 1;
+      return;
+    }
+    throw Error(ErrorKind::kBadInput,
+                "a hole could not be joined to the outline (no corner sees its corner " +
+                    std::to_string(km) + ")");
+  }
+
+  /// The position in the walk of the appearance of point v whose angle holds the direction to
+  /// point m strictly, or -1.
+  int seeing_position(int v, int m) const {
+    const int n = static_cast<int>(walk_.size());
+    for (int k = 0; k < n; ++k) {
+      if (walk_[k] != v) continue;
+      if (inside_polygon_corner(p_[walk_[(k + n - 1) % n]], p_[v], p_[walk_[(k + 1) % n]], p_[m]))
+        return k;
+    }
+    return -1;
+  }
+
+  /// The segment from v to m meets no side of the walk or of a hole not yet joined, apart from
+  /// the sides that end at v or m (which the corner tests keep off it).
+  bool clear(int v, int m) const {
+    const auto blocks = [&](int a, int b) {
+      if (a == v || a == m || b == v || b == m) return false;
+      return closed_segments_meet(p_[v], p_[m], p_[a], p_[b]);
+    };
+    const int n = static_cast<int>(walk_.size());
+    for (int k = 0; k < n; ++k) {
+      if (blocks(walk_[k], walk_[(k + 1) % n])) return false;
+    }
+    for (std::size_t h = 1; h < loops_.size(); ++h) {
+      if (merged_[h]) continue;
+      for (int k = 0; k < loops_[h].count; ++k) {
+        if (blocks(loops_[h].corner(k), loops_[h].corner(k + 1))) return false;
+      }
+    }
+    return true;
+  }
+
+  const std::vector<Point>& p_;
+  std::vector<PolygonLoop> loops_;
+  std::vector<char> merged_;
+  std::vector<int> walk_;
+};
+
 }  // namespace
 
+bool closed_segments_meet(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                          const Eigen::Vector2d& c, const Eigen::Vector2d& d) {
+  const double o1 = orient(a, b, c), o2 = orient(a, b, d);
+  const double o3 = orient(c, d, a), o4 = orient(c, d, b);
+  const auto on = [](const Point& p, const Point& q, const Point& x) {
+    return x.x() >= std::min(p.x(), q.x()) && x.x() <= std::max(p.x(), q.x()) &&
+           x.y() >= std::min(p.y(), q.y()) && x.y() <= std::max(p.y(), q.y());
+  };
+  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+    return true;
+  return (o1 == 0 && on(a, b, c)) || (o2 == 0 && on(a, b, d)) || (o3 == 0 && on(c, d, a)) ||
+         (o4 == 0 && on(c, d, b));
+}
+
 std::vector<std::array<int, 3>> triangulate_polygon(const std::vector<Eigen::Vector2d>& points,
-                                                    int corners,
+                                                    const std::vector<int>& loop_corners,
                                                     const std::vector<int>& cuts_per_side) {
+  std::vector<PolygonLoop> loops;
+  int corners = 0;
+  for (const int count : loop_corners) {
+    loops.push_back({corners, count});
+    corners += count;
+  }
+  std::vector<int> walk;
+  if (loops.size() == 1) {
+    for (int k = 0; k < corners; ++k) walk.push_back(k);
+  } else {
+    walk = HoleBridges(points, loops).join();
+  }
   Triangulation mesh(points);
-  mesh.clip_ears(corners);
+  mesh.clip_ears(walk, loops.size() > 1);
   mesh.index_sides();
-  int point = corners;
-  for (int side = 0; side < corners; ++side) {
-    std::vector<int> cuts(cuts_per_side[side]);
-    for (int& cut : cuts) cut = point++;
-    mesh.cut_side(side, (side + 1) % corners, cuts);
+  int point = corners, side = 0;
+  for (const PolygonLoop& loop : loops) {
+    for (int k = 0; k < loop.count; ++k, ++side) {
+      std::vector<int> cuts(cuts_per_side[side]);
+      for (int& cut : cuts) cut = point++;
+      mesh.cut_side(loop.corner(k), loop.corner(k + 1), cuts);
+    }
   }
   mesh.link();
   mesh.make_delaunay();

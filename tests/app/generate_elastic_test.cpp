@@ -1,7 +1,7 @@
-// FOSSSim-generate's elastic bodies (sheet, rod, ring, polygon, obj), run as a user would: the
-// XML scene it writes gives the same trajectory bytes as the <elasticbody> element with the
-// same attributes, grades against itself with -i, and bad requests end with a message and
-// status 2 without a file.
+// FOSSSim-generate's elastic bodies (sheet, rod, ring, polygon with or without holes, obj), run as
+// a user would: the XML scene it writes gives the same trajectory bytes as the <elasticbody>
+// element with the same attributes, grades against itself with -i, and bad requests end with a
+// message and status 2 without a file.
 
 #include <gtest/gtest.h>
 
@@ -61,6 +61,11 @@ const Body kBodies[] = {
      "polygon --points '0 0 3 0 3 1 1.5 0.4 0.8 2 0 1' --spacing 0.35 --youngsmodulus 800 "
      "--poissonratio 0.4 --stretch 20 --totalmass 1.5 --fix bottom",
      R"(shape="polygon" points="0 0 3 0 3 1 1.5 0.4 0.8 2 0 1" spacing="0.35" youngsmodulus="800" poissonratio="0.4" stretch="20" totalmass="1.5" fix="bottom")"},
+    {"polygon_with_holes",
+     "polygon --points '0 0 3 0 3 2 0 2' --holes '0.5 0.5 1.2 0.5 1.2 1.5 0.5 1.5; 2 0.6 2.5 1 "
+     "2 1.4 1.6 1' --spacing 0.3 --youngsmodulus 800 --poissonratio 0.3 --totalmass 1.5 --fix "
+     "left",
+     R"(shape="polygon" points="0 0 3 0 3 2 0 2" holes="0.5 0.5 1.2 0.5 1.2 1.5 0.5 1.5; 2 0.6 2.5 1 2 1.4 1.6 1" spacing="0.3" youngsmodulus="800" poissonratio="0.3" totalmass="1.5" fix="left")"},
     {"obj", "obj --file square.obj --youngsmodulus 100 --poissonratio 0 --totalmass 1 --fixed 0",
      R"(shape="obj" file="square.obj" youngsmodulus="100" poissonratio="0" totalmass="1" fixed="0")"},
 };
@@ -132,6 +137,11 @@ TEST_F(GenerateElastic, RefusesBadRequestsWithAMessageAndNoFile) {
   refused("-o " + path("x.xml") + " rod --segments 0 --stretch 1 --m 1",
           "FOSSSim-generate: command line:1: error: <elasticbody>: attribute \"segments\" must "
           "be at least 1, found 0");
+  refused("-o " + path("x.xml") +
+              " polygon --points '0 0 4 0 4 4 0 4' --holes '1 1 2 1 2 2; 2 2 3 2 3 3' "
+              "--youngsmodulus 1 --poissonratio 0 --m 1",
+          "FOSSSim-generate: command line:1: error: <elasticbody>: holes 0 and 1 cross or touch: "
+          "side 1 (corners 1–2) of hole 0 and side 0 (corners 0–1) of hole 1");
   refused("-o " + path("x.obj") + " rod --segments 3 --stretch 1 --m 1",
           "FOSSSim-generate: error: an elastic body is written as an XML scene, but the output "
           "is " +

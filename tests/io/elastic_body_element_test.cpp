@@ -12,6 +12,7 @@
 #include "core/force_set.h"
 #include "io/scene_error.h"
 #include "io/scene_loader.h"
+#include "mesh/elastic_shapes.h"
 #include "support/scratch_folder.h"
 #include "support/thrown.h"
 
@@ -83,6 +84,7 @@ TEST(ElasticBodyElement, EveryShapeStartsAtRestWithZeroElasticForce) {
           R"(<elasticbody shape="ring" segments="17" radius="1.5" stretch="100" bend="3" m="1" rotation="10"/>)",
           R"(<elasticbody shape="ring" segments="17" radius="1.5" innerradius="1" layers="2" youngsmodulus="1e4" poissonratio="0.3" m="1"/>)",
           R"(<elasticbody shape="polygon" points="0 0 4 0 4 1 2 0.5 1 3 0 1" spacing="0.3" youngsmodulus="1e4" poissonratio="0" totalmass="3" rotation="200"/>)",
+          R"(<elasticbody shape="polygon" points="0 0 4 0 4 3 0 3" holes="1 1 2 1 1.5 2; 2.5,0.5, 3.5,0.5, 3.5,2.5" spacing="0.25" youngsmodulus="1e4" poissonratio="0.3" totalmass="3" rotation="30"/>)",
       }) {
     const Scene scene = load_body(element);
     SCOPED_TRACE(element);
@@ -116,6 +118,30 @@ TEST(ElasticBodyElement, ItsForcesSumRightAfterTheScenesOwnOfTheSameKind) {
   EXPECT_EQ(labels[2], "elasticbodyspringforce(2, 3)");
   EXPECT_EQ(labels[3], "elasticbodyspringforce(3, 4)");
   EXPECT_EQ(labels[4].rfind("elasticbodybendingforce", 0), 0u) << labels[4];
+}
+
+TEST(ElasticBodyElement, APolygonWithHolesIsTheMeshGeneratorsBody) {
+  // Holes separated by ';', corners by blanks or commas; a hole of either orientation.
+  const Scene scene = load_body(
+      R"(<elasticbody shape="polygon" points="0 0 4 0 4 3 0 3" holes="1 1 2 1 1.5 2; 2.5,0.5, 3.5,0.5, 3.5,2.5" spacing="0.5" youngsmodulus="1e4" poissonratio="0.3" totalmass="6.2"/>)");
+  const ElasticShape shape =
+      make_polygon({{0, 0}, {4, 0}, {4, 3}, {0, 3}},
+                   {{{1, 1}, {2, 1}, {1.5, 2}}, {{2.5, 0.5}, {3.5, 0.5}, {3.5, 2.5}}}, 0.5);
+  ASSERT_EQ(scene.model.num_particles(), shape.num_vertices());
+  for (int v = 0; v < shape.num_vertices(); ++v)
+    EXPECT_EQ(scene.initial.q.segment<2>(2 * v), shape.vertices[v]) << v;
+  EXPECT_EQ(count_forces(scene, "elasticbodycstforce"), static_cast<int>(shape.triangles.size()));
+  EXPECT_EQ(scene.model.edges.size(), shape.edges.size());
+  EXPECT_NEAR(total_mass(scene), 6.2, 1e-14);
+}
+
+TEST(ElasticBodyElement, HolesAreOnlyAPolygonsAndElsewhereAWarning) {
+  const Scene scene = load_body(
+      R"(<elasticbody shape="sheet" nx="1" ny="1" holes="0.2 0.2 0.4 0.2 0.4 0.4" youngsmodulus="1" poissonratio="0" m="1"/>)");
+  EXPECT_EQ(scene.model.num_particles(), 4);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_NE(scene.warnings[0].find("unknown attribute \"holes\" ignored"), std::string::npos)
+      << scene.warnings[0];
 }
 
 struct Refusal {
@@ -172,6 +198,33 @@ const Refusal kRefusals[] = {
      R"(<elasticbody shape="polygon" points="0 0 1 0 0 1 1 1" youngsmodulus="1" poissonratio="0" m="1"/>)",
      "bad.xml:3: error: <elasticbody> 0: side 1 (corners 1–2) and side 3 (corners 3–0) cross or "
      "touch: the polygon is not simple"},
+    {"HoleOutside",
+     R"(<elasticbody shape="polygon" points="0 0 4 0 4 4 0 4" holes="1 1 2 1 2 2; 5 5 6 5 6 6" youngsmodulus="1" poissonratio="0" m="1"/>)",
+     "bad.xml:3: error: <elasticbody> 0: hole 1 is outside the outline"},
+    {"HoleCrossingTheOutline",
+     R"(<elasticbody shape="polygon" points="0 0 4 0 4 4 0 4" holes="3 1 5 1 5 2 3 2" youngsmodulus="1" poissonratio="0" m="1"/>)",
+     "bad.xml:3: error: <elasticbody> 0: hole 0 crosses or touches the outline: its side 0 "
+     "(corners 0–1) and the outline's side 1 (corners 1–2)"},
+    {"HolesTouching",
+     R"(<elasticbody shape="polygon" points="0 0 4 0 4 4 0 4" holes="1 1 2 1 2 2 1 2; 2 2 3 2 3 3" youngsmodulus="1" poissonratio="0" m="1"/>)",
+     "bad.xml:3: error: <elasticbody> 0: holes 0 and 1 cross or touch: side 1 (corners 1–2) of "
+     "hole 0 and side 0 (corners 0–1) of hole 1"},
+    {"HoleNotSimple",
+     R"(<elasticbody shape="polygon" points="0 0 4 0 4 4 0 4" holes="1 1 2 1 1 2 2 2" youngsmodulus="1" poissonratio="0" m="1"/>)",
+     "bad.xml:3: error: <elasticbody> 0: hole 0: side 1 (corners 1–2) and side 3 (corners 3–0) "
+     "cross or touch: the polygon is not simple"},
+    {"OddHole",
+     R"(<elasticbody shape="polygon" points="0 0 4 0 4 4 0 4" holes="1 1 2 1 2 2; 3 3 3.5 3 3.5" youngsmodulus="1" poissonratio="0" m="1"/>)",
+     "bad.xml:3: error: <elasticbody> 0: attribute \"holes\" (hole 1) must hold x y pairs, found "
+     "5 numbers"},
+    {"EmptyHole",
+     R"(<elasticbody shape="polygon" points="0 0 4 0 4 4 0 4" holes="1 1 2 1 2 2;" youngsmodulus="1" poissonratio="0" m="1"/>)",
+     "bad.xml:3: error: <elasticbody> 0: attribute \"holes\" (hole 1) is empty: holes are lists "
+     "of x y pairs separated by ';'"},
+    {"HoleNotANumber",
+     R"(<elasticbody shape="polygon" points="0 0 4 0 4 4 0 4" holes="1 1 2 1 2 x" youngsmodulus="1" poissonratio="0" m="1"/>)",
+     "bad.xml:3: error: <elasticbody> 0: attribute \"holes\" (hole 0) must be numbers, found "
+     "\"x\""},
     {"FixedOutOfRange", R"(<elasticbody shape="rod" segments="2" stretch="1" m="1" fixed="0 3"/>)",
      "bad.xml:3: error: <elasticbody> 0: attribute \"fixed\" refers to vertex 3, but the body has "
      "3 vertices (0-based)"},
@@ -228,6 +281,22 @@ TEST(ElasticBodyElement, IsRefusedInA3DSceneAndOverTheParticleLimit) {
                        "bad.xml", small),
             "bad.xml:3: error: <elasticbody> 0: a sheet of 9 × 9 cells has 100 vertices, more "
             "than the limit of 10 particles (raise it with --max-particles N)");
+}
+
+TEST(ElasticBodyElement, TheCornerLimitCountsTheOutlineAndTheHolesTogether) {
+  Limits limits;
+  limits.max_polygon_corners = 10;
+  InputFiles files(limits);
+  const auto scene = [](const std::string& holes) {
+    return std::string(kBodyHeader) +
+           "<elasticbody shape=\"polygon\" points=\"0 0 4 0 4 4 0 4\" holes=\"" + holes +
+           "\" youngsmodulus=\"1\" poissonratio=\"0\" m=\"1\"/>\n</scene>\n";
+  };
+  EXPECT_EQ(load_error(scene("1 1 2 1 2 2; 3 3 3.5 3 3.5 3.5"), "ok.xml", files),
+            "(loaded without error)");  // 4 + 3 + 3 corners
+  EXPECT_EQ(load_error(scene("1 1 2 1 2 2; 3 3 3.5 3 3.5 3.5 3.2 3.5"), "bad.xml", files),
+            "bad.xml:3: error: <elasticbody> 0: attribute \"holes\" brings the polygon to 11 "
+            "corners, more than the limit of 10 corners (raise it with --max-polygon-corners N)");
 }
 
 class ElasticBodyObj : public ::testing::Test {

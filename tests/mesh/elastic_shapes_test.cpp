@@ -1,12 +1,14 @@
 // The elastic-body shapes (mesh/elastic_shapes.h) and the polygon triangulator: counts from the
 // closed forms, every triangle counter-clockwise and of positive area, Euler characteristics,
-// hinges at the rod's interior vertices, triangulations that cover the polygon exactly and are
-// (constrained) Delaunay, lumped masses that sum to the total, and the limits.
+// hinges at the rod's interior vertices, triangulations that cover the polygon (less its holes)
+// exactly, keep its sides and are (constrained) Delaunay, lumped masses that sum to the total,
+// and the limits.
 
 #include "mesh/elastic_shapes.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -265,6 +267,278 @@ TEST(ElasticPolygon, RefusesOutlinesThatAreNotSimplePolygons) {
             "the sides from corner 0 to 2 fold back over each other");
   EXPECT_EQ(problem({{0, 0}, {1, 0}, {2, 0}}),
             "the sides from corner 1 to 0 fold back over each other");
+}
+
+// --- Polygons with holes ---
+
+using Holes = std::vector<Points>;
+
+/// x strictly inside the closed polygon `loop` (even-odd rule; x on no side).
+bool strictly_inside(const Points& loop, const Eigen::Vector2d& x) {
+  bool inside = false;
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const auto& a = loop[k];
+    const auto& b = loop[(k + 1) % loop.size()];
+    if ((a.y() > x.y()) != (b.y() > x.y()) &&
+        x.x() < a.x() + (x.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
+      inside = !inside;
+  }
+  return inside;
+}
+
+/// Distance from x to the segment [a, b].
+double distance_to_side(const Eigen::Vector2d& x, const Eigen::Vector2d& a,
+                        const Eigen::Vector2d& b) {
+  const Eigen::Vector2d side = b - a;
+  const double t = std::clamp((x - a).dot(side) / side.squaredNorm(), 0.0, 1.0);
+  return (a + t * side - x).norm();
+}
+
+/// Every side of every loop, split at the vertices that lie on it, is a side of exactly one
+/// triangle, and these pieces are all the sides with one triangle: the triangulation keeps the
+/// outline and the holes (constrained) and has no other boundary. Found from the geometry
+/// alone: the vertices within 1e-12 of the side's size of its segment, sorted along it.
+void expect_sides_kept(const ElasticShape& s, const std::vector<Points>& loops) {
+  std::map<std::pair<int, int>, int> count;  // undirected side -> triangles
+  for (const auto& t : s.triangles) {
+    for (int k = 0; k < 3; ++k)
+      ++count[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
+  }
+  std::size_t pieces = 0;
+  for (const Points& loop : loops) {
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const Eigen::Vector2d a = loop[k], b = loop[(k + 1) % loop.size()];
+      std::vector<std::pair<double, int>> on;
+      for (int v = 0; v < s.num_vertices(); ++v) {
+        if (distance_to_side(s.vertices[v], a, b) <= 1e-12 * (b - a).norm())
+          on.push_back({(s.vertices[v] - a).dot(b - a), v});
+      }
+      std::sort(on.begin(), on.end());
+      ASSERT_GE(on.size(), 2u);
+      for (std::size_t j = 0; j + 1 < on.size(); ++j) {
+        const int u = on[j].second, w = on[j + 1].second;
+        const auto found = count.find({std::min(u, w), std::max(u, w)});
+        EXPECT_TRUE(found != count.end() && found->second == 1)
+            << "side piece " << u << "-" << w << " is not the side of exactly one triangle";
+        ++pieces;
+      }
+    }
+  }
+  std::size_t boundary = 0;
+  for (const auto& [side, n] : count) boundary += n == 1 ? 1 : 0;
+  EXPECT_EQ(boundary, pieces);
+}
+
+/// A polygon with holes triangulated: valid, consistently oriented, Euler characteristic
+/// 1 − holes, covering exactly the outline's area minus the holes', no triangle's centroid in a
+/// hole, no vertex in a hole or nearer than spacing/2 to a side unless on it, the sides kept,
+/// every vertex used, constrained Delaunay.
+ElasticShape expect_good_polygon_with_holes(const Points& outline, const Holes& holes,
+                                            double spacing) {
+  const ElasticShape s = make_polygon(outline, holes, spacing);
+  SCOPED_TRACE(::testing::Message() << s.num_vertices() << " vertices");
+  expect_valid_triangles(s);
+  expect_manifold(s);
+  EXPECT_EQ(euler_characteristic(s), 1 - static_cast<int>(holes.size()));
+  double area = polygon_area(outline);
+  for (const Points& hole : holes) area -= polygon_area(hole);
+  EXPECT_NEAR(total_area(s), area, 1e-12 * polygon_area(outline));
+  for (const auto& t : s.triangles) {
+    const Eigen::Vector2d centroid = (s.vertices[t[0]] + s.vertices[t[1]] + s.vertices[t[2]]) / 3;
+    EXPECT_TRUE(strictly_inside(outline, centroid));
+    for (const Points& hole : holes) EXPECT_FALSE(strictly_inside(hole, centroid));
+  }
+  std::vector<Points> loops = {outline};
+  loops.insert(loops.end(), holes.begin(), holes.end());
+  std::size_t corners = 0, cuts = 0;
+  for (const Points& loop : loops) {
+    corners += loop.size();
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const double length = (loop[(k + 1) % loop.size()] - loop[k]).norm();
+      cuts += spacing > 0.0 ? static_cast<std::size_t>(std::ceil(length / spacing)) - 1 : 0;
+    }
+  }
+  for (int v = static_cast<int>(corners + cuts); v < s.num_vertices(); ++v) {  // grid points
+    for (const Points& hole : holes) EXPECT_FALSE(strictly_inside(hole, s.vertices[v])) << v;
+    for (const Points& loop : loops) {
+      for (std::size_t k = 0; k < loop.size(); ++k)
+        EXPECT_GE(distance_to_side(s.vertices[v], loop[k], loop[(k + 1) % loop.size()]),
+                  0.5 * spacing);
+    }
+  }
+  expect_sides_kept(s, loops);
+  std::vector<char> used(s.num_vertices(), 0);
+  for (const auto& t : s.triangles)
+    for (const int v : t) used[v] = 1;
+  for (int v = 0; v < s.num_vertices(); ++v) EXPECT_TRUE(used[v]) << "vertex " << v;
+  expect_delaunay(s);
+  return s;
+}
+
+/// n corners on the circle of `radius` around `centre`, counter-clockwise from angle `phase`.
+Points circle_loop(const Eigen::Vector2d& centre, double radius, int n, double phase = 0.0) {
+  Points loop;
+  for (int k = 0; k < n; ++k) {
+    const double a = phase + 2.0 * std::numbers::pi * k / n;
+    loop.push_back(centre + radius * Eigen::Vector2d(std::cos(a), std::sin(a)));
+  }
+  return loop;
+}
+
+Points square_loop(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+// A letter A: its outline and its triangular counter.
+const Points kLetterA = {{0, 0}, {1, 0}, {1.3, 1}, {2.7, 1}, {3, 0}, {4, 0}, {2.5, 5}, {1.5, 5}};
+const Points kLetterACounter = {{1.6, 2}, {2.4, 2}, {2, 3.6}};
+
+TEST(ElasticPolygonHoles, TriangulatesPlatesLettersAndWrenchesWithAndWithoutInteriorPoints) {
+  const Points plate = square_loop(0, 0, 4, 4);
+  for (const double spacing : {0.0, 0.5, 0.3, 0.13}) {
+    SCOPED_TRACE(::testing::Message() << "spacing " << spacing);
+    // Corners of the hole on the plate's diagonals: bridges collinear with other corners.
+    expect_good_polygon_with_holes(plate, {square_loop(1, 1, 3, 3)}, spacing);
+    // Two holes of the same largest x, a square and a 24-gon.
+    expect_good_polygon_with_holes(
+        plate, {square_loop(0.5, 0.5, 1.5, 3.5), circle_loop({2.8, 2}, 0.7, 24)}, spacing);
+    expect_good_polygon_with_holes(kLetterA, {kLetterACounter}, spacing);
+    expect_good_polygon_with_holes(kComb, {square_loop(0.3, 0.1, 4.7, 0.4)}, spacing);
+    // A wrench: a bar with a ring at each end, each ring around a hexagonal hole.
+    Points wrench = circle_loop({0, 0}, 1.0, 16, 0.3);
+    std::reverse(wrench.begin(), wrench.end());
+    expect_good_polygon_with_holes(
+        {{-1.2, -0.4},
+         {6.2, -0.4},
+         {6.2, -1},
+         {8, -1},
+         {8, 1},
+         {6.2, 1},
+         {6.2, 0.4},
+         {-1.2, 0.4},
+         {-1.2, 1},
+         {-3, 1},
+         {-3, -1},
+         {-1.2, -1}},
+        {circle_loop({-2.1, 0}, 0.5, 6), circle_loop({7.1, 0}, 0.5, 6, 0.5),
+         circle_loop({2.5, 0}, 0.2, 8)},
+        spacing);
+  }
+}
+
+TEST(ElasticPolygonHoles, TriangulatesAGridOfHolesWhoseCornersLineUp) {
+  // 5 × 4 square holes in rows and columns: many holes of the same largest x, bridges that
+  // would run along other holes' sides.
+  Holes holes;
+  for (int i = 0; i < 5; ++i) {
+    for (int j = 0; j < 4; ++j)
+      holes.push_back(square_loop(1 + 2 * i, 1 + 2 * j, 2 + 2 * i, 2 + 2 * j));
+  }
+  for (const double spacing : {0.0, 0.25, 0.2}) {
+    SCOPED_TRACE(::testing::Message() << "spacing " << spacing);
+    expect_good_polygon_with_holes(square_loop(0, 0, 11, 9), holes, spacing);
+  }
+}
+
+TEST(ElasticPolygonHoles, TriangulatesRandomHolesInRandomStarShapedOutlines) {
+  std::mt19937 random(29);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int tested = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int n = 8 + trial % 30;
+    Points outline;
+    for (int k = 0; k < n; ++k) {
+      const double a = 2.0 * std::numbers::pi * k / n;
+      const double r = 2.0 + unit(random);
+      outline.emplace_back(r * std::cos(a), r * std::sin(a));
+    }
+    // Holes in the disc of radius 1.8 (inside every outline), apart from each other.
+    Holes holes;
+    std::vector<std::pair<Eigen::Vector2d, double>> discs;
+    for (int attempt = 0; attempt < 12; ++attempt) {
+      const double rho = 1.5 * std::sqrt(unit(random)),
+                   angle = 2.0 * std::numbers::pi * unit(random);
+      const Eigen::Vector2d centre(rho * std::cos(angle), rho * std::sin(angle));
+      const double radius = 0.08 + 0.25 * unit(random);
+      if (centre.norm() + radius > 1.8) continue;
+      bool apart = true;
+      for (const auto& [c, r] : discs) apart = apart && (c - centre).norm() > r + radius + 0.01;
+      if (!apart) continue;
+      discs.push_back({centre, radius});
+      Points hole;
+      const int corners = 3 + static_cast<int>(unit(random) * 9);
+      for (int k = 0; k < corners; ++k) {  // star-shaped, either orientation
+        const double a = 2.0 * std::numbers::pi * (k + 0.4 * unit(random)) / corners;
+        hole.push_back(centre + radius * (0.5 + 0.5 * unit(random)) *
+                                    Eigen::Vector2d(std::cos(a), std::sin(a)));
+      }
+      if (attempt % 2 == 1) std::reverse(hole.begin(), hole.end());
+      holes.push_back(hole);
+    }
+    SCOPED_TRACE(::testing::Message() << "trial " << trial << ", " << holes.size() << " holes");
+    expect_good_polygon_with_holes(outline, holes, 0.0);
+    expect_good_polygon_with_holes(outline, holes, 0.08 + 0.004 * trial);
+    tested += static_cast<int>(holes.size());
+  }
+  EXPECT_GT(tested, 200);  // the random holes did not all miss
+}
+
+TEST(ElasticPolygonHoles, NumberTheOutlineThenEachHoleClockwiseThenCutsThenTheGrid) {
+  const Points plate = square_loop(0, 0, 3, 2);
+  Points hole = square_loop(1, 0.5, 2, 1.5);  // counter-clockwise: turned from its corner 0
+  const ElasticShape s = make_polygon(plate, {hole}, 0.5);
+  // Sides 3, 2, 3, 2 cut in 6, 4, 6, 4 pieces; the hole's sides of 1 in 2 pieces each.
+  ASSERT_GE(s.num_vertices(), 8 + 16 + 4);
+  EXPECT_EQ(Points(s.vertices.begin(), s.vertices.begin() + 8),
+            (Points{{0, 0}, {3, 0}, {3, 2}, {0, 2}, {1, 0.5}, {1, 1.5}, {2, 1.5}, {2, 0.5}}));
+  EXPECT_EQ(s.vertices[8], Eigen::Vector2d(0.5, 0));     // first cut of the outline's side 0
+  EXPECT_EQ(s.vertices[24], Eigen::Vector2d(1, 1));      // the cut of the hole's side 0
+  EXPECT_EQ(s.vertices[27], Eigen::Vector2d(1.5, 0.5));  // the cut of its side 3
+  // Either orientation of a hole gives the same body.
+  std::reverse(hole.begin() + 1, hole.end());
+  const ElasticShape same = make_polygon(plate, {hole}, 0.5);
+  EXPECT_EQ(s.vertices, same.vertices);
+  EXPECT_EQ(s.triangles, same.triangles);
+  // No holes: exactly the polygon without them.
+  const ElasticShape plain = make_polygon(kArrow, Holes{}, 0.3);
+  const ElasticShape before = make_polygon(kArrow, 0.3);
+  EXPECT_EQ(plain.vertices, before.vertices);
+  EXPECT_EQ(plain.triangles, before.triangles);
+}
+
+TEST(ElasticPolygonHoles, RefusesHolesOutsideCrossingTouchingOrNotSimple) {
+  const Points plate = square_loop(0, 0, 4, 4);
+  const auto problem = [&](const Holes& holes) {
+    return thrown_message([&] { make_polygon(plate, holes, 0.0); });
+  };
+  EXPECT_EQ(problem({square_loop(5, 5, 6, 6)}), "hole 0 is outside the outline");
+  EXPECT_EQ(problem({square_loop(1, 1, 2, 2), square_loop(3, 1, 5, 2)}),
+            "hole 1 crosses or touches the outline: its side 0 (corners 0–1) and the outline's "
+            "side 1 (corners 1–2)");
+  // A corner on the outline's side: touching.
+  EXPECT_EQ(problem({{{1, 1}, {2, 0}, {2, 1}}}),
+            "hole 0 crosses or touches the outline: its side 0 (corners 0–1) and the outline's "
+            "side 0 (corners 0–1)");
+  // Sharing a corner, sharing part of a side, crossing.
+  EXPECT_EQ(problem({square_loop(1, 1, 2, 2), square_loop(2, 2, 3, 3)}),
+            "holes 0 and 1 cross or touch: side 1 (corners 1–2) of hole 0 and side 0 (corners "
+            "0–1) of hole 1");
+  EXPECT_EQ(problem({square_loop(1, 1, 2, 2), square_loop(2, 1.5, 3, 3)}),
+            "holes 0 and 1 cross or touch: side 1 (corners 1–2) of hole 0 and side 0 (corners "
+            "0–1) of hole 1");
+  EXPECT_EQ(problem({square_loop(1, 1, 2, 2), square_loop(1.5, 1.5, 3, 3)}),
+            "holes 0 and 1 cross or touch: side 1 (corners 1–2) of hole 0 and side 0 (corners "
+            "0–1) of hole 1");
+  EXPECT_EQ(problem({square_loop(1, 1, 3, 3), square_loop(1.5, 1.5, 2, 2)}),
+            "holes 0 and 1 overlap: one lies inside the other");
+  EXPECT_EQ(problem({square_loop(1, 1, 2, 2), {{1, 1}, {2, 1}, {1, 2}, {2, 2}}}),
+            "hole 1: side 1 (corners 1–2) and side 3 (corners 3–0) cross or touch: the polygon "
+            "is not simple");
+  EXPECT_EQ(problem({{{1, 1}, {2, 1}}}), "hole 0: a polygon needs at least 3 corners, found 2");
+  // The corner limit counts the outline's and the holes' corners together.
+  EXPECT_EQ(thrown_message([&] { make_polygon(plate, {square_loop(1, 1, 2, 2)}, 0.0, 1000, 7); }),
+            "a polygon with holes of 8 corners, more than the limit of 7 corners (raise it with "
+            "--max-polygon-corners N)");
 }
 
 TEST(ElasticShapes, AreRefusedBeforeGenerationOverTheParticleLimit) {
