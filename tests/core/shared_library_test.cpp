@@ -16,24 +16,24 @@
 namespace fosssim {
 namespace {
 
+constexpr const char* kNoSuchLibrary = "libFOSSSim-no-such-library.so";
+
 #define FOSSSIM_TEST_LIBC_FUNCTIONS(X) X(strlen) X(atoi)
 
+/// A table as the optional libraries' are declared, from the first file of two that loads.
 struct LibcTable {
+  SharedLibrary library =
+      SharedLibrary::open({kNoSuchLibrary, "libc.so.6"}, "tests need libc", "libc6");
   FOSSSIM_TEST_LIBC_FUNCTIONS(FOSSSIM_LIBRARY_FUNCTION)
 };
 
-constexpr const char* kNoSuchLibrary = "libFOSSSim-no-such-library.so";
-
 TEST(SharedLibrary, OpensTheFirstFileThatLoadsAndFillsATableOfItsFunctions) {
-  const SharedLibrary library =
-      SharedLibrary::open({kNoSuchLibrary, "libc.so.6"}, "tests need libc", "libc6");
-  LibcTable table;
-  FOSSSIM_TEST_LIBC_FUNCTIONS(FOSSSIM_LIBRARY_RESOLVE)
+  const LibcTable table;
   ASSERT_NE(table.strlen, nullptr);
   ASSERT_NE(table.atoi, nullptr);
   EXPECT_EQ(table.strlen("four"), 4u);
   EXPECT_EQ(table.atoi("-273"), -273);
-  EXPECT_EQ(library.find("fosssim_no_such_function"), nullptr);
+  EXPECT_EQ(table.library.find("fosssim_no_such_function"), nullptr);
 }
 
 TEST(SharedLibrary, ALibraryThatDoesNotLoadIsUnavailableWithEveryFileReasonAndThePackage) {
@@ -45,7 +45,8 @@ TEST(SharedLibrary, ALibraryThatDoesNotLoadIsUnavailableWithEveryFileReasonAndTh
   EXPECT_EQ(error.kind(), ErrorKind::kUnavailable);
   const std::string message = error.what();
   // The loader's reason names the file and says why: "<file>: cannot open shared object file".
-  const std::string first_reason = std::string("cannot load ") + kNoSuchLibrary + ": " + kNoSuchLibrary + ": ";
+  const std::string first_reason =
+      std::string("cannot load ") + kNoSuchLibrary + ": " + kNoSuchLibrary + ": ";
   EXPECT_EQ(message.rfind("tests need Foo: " + first_reason, 0), 0u) << message;
   EXPECT_NE(message.find("; cannot load " + second + ": " + second + ": "), std::string::npos)
       << message;
@@ -56,14 +57,12 @@ TEST(SharedLibrary, ALibraryThatDoesNotLoadIsUnavailableWithEveryFileReasonAndTh
 
 TEST(SharedLibrary, AMissingFunctionIsUnavailableNamingTheFileAndTheFunction) {
   const SharedLibrary library = SharedLibrary::open({"libc.so.6"}, "tests need libc", "libc6");
-  int (*function)(void) = nullptr;
-  const Error error = thrown_by([&] { library.resolve("fosssim_no_such_function", function); });
+  const Error error = thrown_by([&] { library.symbol<int (*)()>("fosssim_no_such_function"); });
   EXPECT_EQ(error.kind(), ErrorKind::kUnavailable);
   EXPECT_EQ(std::string(error.what())
                 .rfind("tests need libc: libc.so.6 lacks fosssim_no_such_function (", 0),
             0u)
       << error.what();
-  EXPECT_EQ(function, nullptr);
 }
 
 }  // namespace
