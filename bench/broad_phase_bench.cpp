@@ -6,8 +6,10 @@
 // stay about constant when the cost grows linearly), with all pairs beside it where it takes
 // seconds. Every baseline runs in this process; times are this thread's CPU time, steadier than
 // wall time on a shared machine.
-// Usage: bench_broad_phase [--quick | --balls N] [--stats-json DIR]
-//   --quick stops the scaling at 10^5 balls; --balls N times only the grid on N balls (to profile);
+// Usage: bench_broad_phase [--quick | --smoke | --balls N] [--stats-json DIR]
+//   --quick stops the scaling at 10^5 balls; --smoke runs its first size only, without the
+//   contest scenes (it only shows that the program runs); --balls N times only the grid on N
+//   balls (to profile);
 //   --stats-json DIR writes the run summary of each contest scene's grid run (docs/command-line.md,
 //   'Run summaries') as DIR/<scene>.stats.json
 
@@ -150,7 +152,7 @@ void contest_scenes(const std::string& stats_folder) {
   }
 }
 
-void scaling(bool quick) {
+void scaling(bool quick, bool smoke) {
   std::printf(
       "\nScaling: the balls scene at the contest's density (20 steps; all pairs 2 steps, up to "
       "3e4 balls)\n\n");
@@ -159,7 +161,7 @@ void scaling(bool quick) {
       "pairs ms/step | ratio | largest difference after 2 steps |\n");
   std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const int count : {1000, 3000, 10000, 30000, 100000, 300000, 1000000}) {
-    if (quick && count > 100000) break;
+    if ((quick && count > 100000) || (smoke && count > 1000)) break;
     Scene scene = contest_balls(count, 7);
     const Run grid = run(scene, PairDetection::kContest, 20);
     const double per_ball = grid.ms_per_step * 1e6 / count;
@@ -180,7 +182,17 @@ void scaling(bool quick) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::strcmp(argv[1], "--help") == 0) {
+    std::puts(
+        "Usage: bench_broad_phase [--quick | --smoke | --balls N] [--stats-json DIR]\n"
+        "  The grid broad phase against all pairs on the contest's two scenes, then the balls\n"
+        "  scene from 10^3 to 10^6 balls. --quick: up to 10^5 balls. --smoke: 10^3 balls only,\n"
+        "  no contest scene (to see that it runs). --balls N: the grid alone on N balls (to\n"
+        "  profile). --stats-json DIR: the contest scenes' run summaries there.");
+    return 0;
+  }
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const bool smoke = argc > 1 && std::strcmp(argv[1], "--smoke") == 0;
   std::string stats_folder;
   for (int k = 1; k + 1 < argc; ++k) {
     if (std::strcmp(argv[k], "--stats-json") == 0) stats_folder = argv[k + 1];
@@ -191,7 +203,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   std::printf("Broad phase benchmark (load average %s)\n\n", load_average().c_str());
-  contest_scenes(stats_folder);
-  scaling(quick);
+  if (!smoke) contest_scenes(stats_folder);
+  scaling(quick, smoke);
   return 0;
 }

@@ -375,11 +375,13 @@ int main(int argc, char** argv) {
     } else if (arg == "--cloth-only") {
       options.cloth_only = true;
     } else {
-      std::fprintf(stderr,
-                   "usage: bench_elastic [--quick] [--profile-amg] [--steps N] "
-                   "[--dense-max-unknowns N] [--solvers auto,amg,...] [--cloths N,N,...] "
-                   "[--cloth-only]\n");
-      return 2;
+      const bool help = arg == "--help";
+      std::fputs(
+          "usage: bench_elastic [--quick] [--profile-amg] [--steps N] [--dense-max-unknowns N]\n"
+          "                     [--solvers auto,amg,...] [--cloths N,N,...] [--cloth-only]\n"
+          "  (the quickest run: --quick --steps 1 --dense-max-unknowns 1200)\n",
+          help ? stdout : stderr);
+      return help ? 0 : 2;
     }
   }
   std::printf("bench_elastic: load average %s; one thread (BLAS, OpenMP, Eigen)\n",

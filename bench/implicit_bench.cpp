@@ -4,8 +4,9 @@
 // 81×81 cloth. Every measurement runs in a process of its own (this program, started again
 // with --case), so that each peak memory is its own. Not a test: run it on a quiet machine.
 //
-// Usage: bench_implicit [--quick] [--bunny FILE.mesh] [--table scaling|goals|accuracy]...
+// Usage: bench_implicit [--quick | --smoke] [--bunny FILE.mesh] [--table scaling|goals|accuracy]...
 //   --quick   sizes up to 10⁴ unknowns only, fewer steps
+//   --smoke   the scaling table alone at 10³ unknowns, 2 steps each (only shows that it runs)
 
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -284,7 +285,7 @@ struct Family {
 };
 
 /// Per-step times and peak memory from 10³ to 10⁶ unknowns.
-void scaling_table(bool quick) {
+void scaling_table(bool quick, bool smoke) {
   const std::vector<Family> families = {
       {"3D cloth (Liu et al. 2013's, flat, two corners held), 3 n unknowns",
        "cloth3d",
@@ -307,7 +308,8 @@ void scaling_table(bool quick) {
         {"Eigen SparseLU every step (LIE form)", "sparselu"}}},
   };
   std::vector<double> unknowns = {1e3, 1e4};
-  if (!quick) {
+  if (smoke) unknowns.pop_back();
+  if (!quick && !smoke) {
     unknowns.push_back(1e5);
     unknowns.push_back(1e6);
   }
@@ -336,7 +338,8 @@ void scaling_table(bool quick) {
           continue;
         }
         const Measured m =
-            measure_steps(family.family, sizes[k], method, quick ? 5 : 20, quick ? 5.0 : 20.0);
+            measure_steps(family.family, sizes[k], method, smoke ? 2 : quick ? 5 : 20,
+                          quick || smoke ? 5.0 : 20.0);
         previous_ms = m.ok ? m.step_ms : 1e12;
         std::printf(" %22s", cell(m).c_str());
         std::fflush(stdout);
@@ -454,14 +457,16 @@ int main(int argc, char** argv) {
     return 2;
   }
   setenv("FOSSSIM_BENCH_CHILD", "1", 1);  // the children inherit it
-  bool quick = false;
+  bool quick = false, smoke = false;
   std::string bunny_file;
   std::vector<std::string> tables;
   const char* usage =
-      "Usage: bench_implicit [--quick] [--bunny FILE.mesh] [--table goals|accuracy|scaling]...\n"
+      "Usage: bench_implicit [--quick | --smoke] [--bunny FILE.mesh]\n"
+      "                      [--table goals|accuracy|scaling]...\n"
       "  Prints the tables of docs/solvers.md: the goal ratios, error against time on the\n"
       "  81x81 cloth, and per-step time and peak memory from 10^3 to 10^6 unknowns (all three\n"
       "  by default; about an hour on 2 cores). --quick: small sizes and fewer steps only.\n"
+      "  --smoke: the scaling table alone at 10^3 unknowns, 2 steps each (to see that it runs).\n"
       "  --bunny: also measure the goals' bunny case on this MEDIT mesh (the CSC417 coarse\n"
       "  bunny, which the repository does not hold). Run it on a quiet machine: every\n"
       "  measurement is a process of its own, with one BLAS thread (FOSSSim's default,\n"
@@ -474,6 +479,8 @@ int main(int argc, char** argv) {
     }
     if (argument == "--quick") {
       quick = true;
+    } else if (argument == "--smoke") {
+      smoke = true;
     } else if (argument == "--bunny" && k + 1 < argc) {
       bunny_file = argv[++k];
     } else if (argument == "--table" && k + 1 < argc &&
@@ -486,11 +493,12 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  if (tables.empty()) tables = {"goals", "accuracy", "scaling"};
+  if (tables.empty()) tables = smoke ? std::vector<std::string>{"scaling"}
+                                     : std::vector<std::string>{"goals", "accuracy", "scaling"};
   std::printf("FOSSSim implicit-solver benchmark. Load average at start: %s\n",
               load_average().c_str());
   for (const std::string& table : tables) {
-    if (table == "scaling") scaling_table(quick);
+    if (table == "scaling") scaling_table(quick, smoke);
     if (table == "goals") goals_table(quick, bunny_file);
     if (table == "accuracy") std::fputs(measure({"--accuracy-case"}).output.c_str(), stdout);
   }

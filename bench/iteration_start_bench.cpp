@@ -93,7 +93,16 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const bool quick = argc == 2 && std::strcmp(argv[1], "--quick") == 0;
+  if (argc > 1 && !quick) {
+    const bool help = std::strcmp(argv[1], "--help") == 0;
+    std::fputs(
+        "Usage: bench_iteration_start [--quick]\n"
+        "  How far 10, 50 and 200 local/global iterations from each start are from implicit\n"
+        "  Euler on an 80 x 40 flag (docs/scenes-3d.md). --quick: a 40 x 20 flag.\n",
+        help ? stdout : stderr);
+    return help ? 0 : 2;
+  }
   const int nx = quick ? 40 : 80, ny = quick ? 20 : 40;
   const auto dir = std::filesystem::temp_directory_path() / "fosssim-bench-iteration-start";
   const std::string json = write_flag(nx, ny, dir);

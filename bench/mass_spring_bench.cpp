@@ -4,7 +4,8 @@
 // scratch with Eigen's SimplicialLDLT every step; then the cost of spring forces as one
 // SpringSetForce versus one SpringForce per spring, and of the local/global global solve with
 // our sweeps versus Eigen's and CHOLMOD's. Ratios are against baselines run in the same
-// process. Usage: bench_mass_springs [--quick]   (--quick skips the 10^5-vertex cloth)
+// process. Usage: bench_mass_springs [--quick | --smoke]   (--quick skips the 10^5-vertex cloth;
+// --smoke runs the 32 x 32 cloth alone, to show that the program runs)
 
 #include <Eigen/SparseCholesky>
 #include <chrono>
@@ -252,9 +253,21 @@ void global_solve_table(const std::vector<int>& sizes) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const bool quick = argc == 2 && std::strcmp(argv[1], "--quick") == 0;
+  const bool smoke = argc == 2 && std::strcmp(argv[1], "--smoke") == 0;
+  if (argc > 1 && !quick && !smoke) {
+    const bool help = std::strcmp(argv[1], "--help") == 0;
+    std::fputs(
+        "Usage: bench_mass_springs [--quick | --smoke]\n"
+        "  The 3D mass-spring integrators, spring forces and global solves on cloths of 32^2,\n"
+        "  81^2, 100^2 and 316^2 vertices. --quick: without the 316^2 cloth. --smoke: the 32^2\n"
+        "  cloth alone (to see that it runs).\n",
+        help ? stdout : stderr);
+    return help ? 0 : 2;
+  }
   std::vector<int> sizes = {32, 81, 100};  // 1,024, 6,561 (the paper's cloth), 10,000 vertices
-  if (!quick) sizes.push_back(316);        // 99,856 vertices
+  if (!quick && !smoke) sizes.push_back(316);  // 99,856 vertices
+  if (smoke) sizes = {32};
   std::printf(
       "FOSSSim mass-spring benchmark: flat 1 m cloths of nx x nx vertices held at two\n"
       "corners, 1 kg, structural + shear + bend springs of 1000 N/m, gravity, h = 1/30 s.\n"

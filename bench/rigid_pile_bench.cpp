@@ -219,14 +219,21 @@ int main(int argc, char** argv) {
   std::vector<int> sizes = {100, 1000, 10000};
   int steps = 60, all_pairs_steps = 0;  // 0: 20 steps below 10⁴ bodies, 2 from 10⁴
   std::vector<std::string> only;
-  for (int a = 1; a + 1 < argc; a += 2) {
+  for (int a = 1; a < argc; a += 2) {
+    const bool help = !std::strcmp(argv[a], "--help");
+    if (help || a + 1 == argc) {
+      std::fprintf(help ? stdout : stderr,
+                   "usage: %s [--sizes 100,1000,10000] [--steps S] [--all-pairs-steps K] "
+                   "[--methods NAME]...\n  (the smallest run: --sizes 100 --steps 4)\n",
+                   argv[0]);
+      return help ? 0 : 2;
+    }
     if (!std::strcmp(argv[a], "--sizes")) sizes = parse_sizes(argv[a + 1]);
     else if (!std::strcmp(argv[a], "--steps")) steps = std::atoi(argv[a + 1]);
     else if (!std::strcmp(argv[a], "--all-pairs-steps")) all_pairs_steps = std::atoi(argv[a + 1]);
     else if (!std::strcmp(argv[a], "--methods")) only.push_back(argv[a + 1]);
     else {
-      std::fprintf(stderr, "usage: %s [--sizes 100,1000,10000] [--steps S] [--all-pairs-steps K] "
-                   "[--methods NAME]...\n", argv[0]);
+      std::fprintf(stderr, "%s: unknown option %s (--help lists them)\n", argv[0], argv[a]);
       return 2;
     }
   }

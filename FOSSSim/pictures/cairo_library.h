@@ -10,6 +10,8 @@
 #include <cairo-svg.h>
 #include <cairo.h>
 
+#include "core/shared_library.h"
+
 namespace fosssim {
 
 // The Cairo functions the pictures code calls, without their "cairo_" prefix.
@@ -27,14 +29,18 @@ namespace fosssim {
 
 /// Cairo's functions: `cairo().move_to(cr, x, y)` calls cairo_move_to(cr, x, y).
 struct CairoLibrary {
-#define FOSSSIM_CAIRO_MEMBER(name) decltype(&::cairo_##name) name = nullptr;
+  // Debian's libcairo2, by the soname cairo.h was built against.
+  SharedLibrary library =
+      SharedLibrary::open({"libcairo.so.2"}, "pictures need Cairo", "libcairo2");
+#define FOSSSIM_CAIRO_MEMBER(name) \
+  decltype(&::cairo_##name) name = library.symbol<decltype(&::cairo_##name)>("cairo_" #name);
   FOSSSIM_CAIRO_FUNCTIONS(FOSSSIM_CAIRO_MEMBER)
 #undef FOSSSIM_CAIRO_MEMBER
 };
 
 /// Cairo, loaded on the first call (thread-safe) and kept for the life of the process. Throws
 /// Error (kUnavailable) naming the library and the loader's reason when it cannot be loaded
-/// or lacks one of the functions.
+/// or lacks one of the functions (core/shared_library.h).
 const CairoLibrary& cairo();
 
 }  // namespace fosssim

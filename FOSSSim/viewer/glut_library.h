@@ -9,6 +9,8 @@
 #include <GL/freeglut.h>
 #include <X11/Xlib.h>
 
+#include "core/shared_library.h"
+
 namespace fosssim {
 
 // The functions the window calls, by their own names.
@@ -23,14 +25,16 @@ namespace fosssim {
 
 /// The window's GLUT, OpenGL and Xlib functions: `glut().glutPostRedisplay()`.
 struct GlutLibrary {
-#define FOSSSIM_GLUT_MEMBER(name) decltype(&::name) name = nullptr;
-  FOSSSIM_GLUT_FUNCTIONS(FOSSSIM_GLUT_MEMBER)
-#undef FOSSSIM_GLUT_MEMBER
+  // freeglut's sonames: Debian 12's freeglut 3.4, then the older 3.x. The functions are found in
+  // GLUT and its dependencies, OpenGL and Xlib.
+  SharedLibrary library = SharedLibrary::open({"libglut.so.3.12", "libglut.so.3"},
+                                              "the window needs GLUT", "libglut3.12");
+  FOSSSIM_GLUT_FUNCTIONS(FOSSSIM_LIBRARY_FUNCTION)
 };
 
 /// GLUT with OpenGL and Xlib, loaded on the first call and kept for the life of the process.
 /// Throws Error (kUnavailable) naming the library and the loader's reason when it cannot be
-/// loaded or lacks one of the functions.
+/// loaded or lacks one of the functions (core/shared_library.h).
 const GlutLibrary& glut();
 
 }  // namespace fosssim

@@ -1,7 +1,8 @@
 // What a FOSSSim run loads when it starts (docs/limits-and-failures.md, "Start-up"): Cairo and
 // GLUT with OpenGL and X11 only when the run draws or opens its window, not in a headless run;
 // the sparse solvers' libraries (CHOLMOD, UMFPACK, MUMPS, OpenBLAS) only when it factors.
-// glibc's loader says which shared objects it maps (LD_DEBUG=files, on standard error).
+// glibc's loader says which shared objects it maps (LD_DEBUG=files, on standard error). A picture
+// run on a machine without Cairo fails as unavailable (exit 2), naming it and its package.
 
 #include <gtest/gtest.h>
 
@@ -63,6 +64,19 @@ TEST_F(Startup, APictureRunLoadsCairoWhenItDraws) {
   EXPECT_NE(loaded.find("libcairo.so"), std::string::npos) << loaded;
   EXPECT_EQ(loaded.find("libglut"), std::string::npos) << loaded;
   EXPECT_TRUE(folder_.exists("svgs/frame_00000.svg"));
+}
+
+TEST_F(Startup, APictureRunWithoutCairoIsUnavailableNamingItAndItsPackage) {
+  // An empty libcairo.so.2 first on the loader's path stands for a machine without Cairo.
+  folder_.write("no-cairo/libcairo.so.2", "");
+  const testing::ProgramResult result = testing::run_command(
+      folder_, "LD_LIBRARY_PATH=" + testing::quoted(folder_ / "no-cairo") + " timeout -k 5 60 " +
+                   testing::quoted(testing::fosssim_program()) +
+                   " -s scene.xml -d 0 -q --duration 0 -m svgs");
+  EXPECT_EQ(result.status, 2) << result.output();  // unavailable
+  EXPECT_NE(result.err.find("pictures need Cairo: cannot load libcairo.so.2: "), std::string::npos)
+      << result.err;
+  EXPECT_NE(result.err.find("(install the libcairo2 package)"), std::string::npos) << result.err;
 }
 
 }  // namespace

@@ -20,7 +20,10 @@ struct Box {
   bool overlaps(const Box& other) const {
     // Every comparison, without early exits: the outcome is hard to predict, branches cost more.
     bool all = true;
-    for (int a = 0; a < D; ++a) all &= (lo[a] <= other.hi[a]) & (other.lo[a] <= hi[a]);
+    for (int a = 0; a < D; ++a) {
+      const bool below = lo[a] <= other.hi[a], above = other.lo[a] <= hi[a];
+      all &= below & above;
+    }
     return all;
   }
   bool contains(const Box& other) const {

@@ -9,15 +9,16 @@
 #include <HYPRE.h>
 #include <HYPRE_krylov.h>
 #include <HYPRE_parcsr_ls.h>
-#include <dlfcn.h>
 #include <mpi.h>
 
 #include <cstdio>
 #include <cstdlib>
-#include <mutex>
 #include <numeric>
 #include <string>
 #include <vector>
+
+#include "core/error.h"
+#include "core/shared_library.h"
 
 #ifndef FOSSSIM_HYPRE_LIBRARY
 #error "the build names hypre's shared library (FOSSSim/CMakeLists.txt)"
@@ -27,10 +28,8 @@ namespace fosssim {
 
 namespace {
 
-// Every hypre and MPI function FOSSSim calls, resolved once by name from the opened library.
-// Each pointer's type is decltype of the header's own declaration, so a signature that changes
-// in hypre's headers changes the table with it (and the calls that no longer fit fail to
-// compile). Naming a function in decltype does not reference its symbol: nothing here links.
+// Every hypre and MPI function FOSSSim calls, resolved once by name from the opened library
+// (core/shared_library.h: typed by the headers' declarations, nothing here links).
 #define FOSSSIM_HYPRE_FUNCTIONS(X)                                                          \
   X(HYPRE_Init) X(HYPRE_Finalize) X(HYPRE_ClearAllErrors)                                  \
   X(HYPRE_IJMatrixCreate) X(HYPRE_IJMatrixSetObjectType) X(HYPRE_IJMatrixSetDiagOffdSizes) \
@@ -50,61 +49,54 @@ namespace {
   X(HYPRE_PCGGetConverged) X(HYPRE_PCGGetFinalRelativeResidualNorm)                        \
   X(MPI_Initialized) X(MPI_Init) X(MPI_Finalized) X(MPI_Finalize)
 
+/// How each failure to load begins; said once on standard error.
+constexpr const char* kAmgUnavailable = "algebraic multigrid (solver=\"amg\") is not available";
+
+/// Hypre's file: the build's (Debian's soname, FOSSSim/CMakeLists.txt), or the environment's
+/// FOSSSIM_HYPRE_LIBRARY (another hypre, or a missing one to test the fallback). kGlobal:
+/// OpenMPI opens its components (mca_*.so) with dlopen, and they take libmpi's and
+/// libopen-pal's symbols from the global scope. The library stays open until exit (OpenMPI
+/// cannot be started again once finalised).
+SharedLibrary open_hypre() {
+  const char* chosen = std::getenv("FOSSSIM_HYPRE_LIBRARY");
+  return SharedLibrary::open({chosen && *chosen ? chosen : FOSSSIM_HYPRE_LIBRARY}, kAmgUnavailable,
+                             "libhypre-2.26.0", SharedLibrary::Scope::kGlobal);
+}
+
+// The functions are found on the library's handle, which searches it and its dependencies
+// (libmpi) only. That matters: MUMPS's sequential MPI stubs, which the program links, define
+// MPI_Init and MPI_Finalize too, and a global lookup would find them first. (Hypre itself binds
+// MPI_Comm_rank and MPI_Wtime, which the stubs also define, to the stubs, global scope first: in
+// one process they answer as OpenMPI would, rank 0 and the wall clock.)
 struct HypreApi {
-#define FOSSSIM_DECLARE(name) decltype(&::name) name = nullptr;
-  FOSSSIM_HYPRE_FUNCTIONS(FOSSSIM_DECLARE)
-#undef FOSSSIM_DECLARE
+  SharedLibrary library = open_hypre();
+  FOSSSIM_HYPRE_FUNCTIONS(FOSSSIM_LIBRARY_FUNCTION)
   /// MPI_COMM_SELF: in OpenMPI the address of a library object (ompi_mpi_comm_self), resolved
   /// like the functions; in other MPIs a constant.
-  MPI_Comm comm_self = nullptr;
+#ifdef OPEN_MPI
+  MPI_Comm comm_self = library.symbol<MPI_Comm>("ompi_mpi_comm_self");
+#else
+  MPI_Comm comm_self = MPI_COMM_SELF;
+#endif
 };
-
-/// The library's file name: the build's (Debian's soname, FOSSSim/CMakeLists.txt), or the
-/// environment's FOSSSIM_HYPRE_LIBRARY (another hypre, or a missing one to test the fallback).
-std::string hypre_library_name() {
-  const char* chosen = std::getenv("FOSSSIM_HYPRE_LIBRARY");
-  return chosen && *chosen ? chosen : FOSSSIM_HYPRE_LIBRARY;
-}
 
 const HypreApi* hypre_api();
 
-/// Opens hypre, resolves the table and starts MPI; an error message when any of it fails.
-std::string load(HypreApi& api) {
-  const std::string file = hypre_library_name();
-  // RTLD_GLOBAL: OpenMPI opens its components (mca_*.so) with dlopen, and they take libmpi's
-  // and libopen-pal's symbols from the global scope. The library stays open until exit
-  // (OpenMPI cannot be started again once finalised).
-  void* library = dlopen(file.c_str(), RTLD_NOW | RTLD_GLOBAL);
-  if (!library) return std::string("cannot load ") + file + ": " + dlerror();
-  // dlsym on the library's handle searches it and its dependencies (libmpi) only. That matters:
-  // MUMPS's sequential MPI stubs, which the program links, define MPI_Init and MPI_Finalize too,
-  // and a global lookup would find them first. (Hypre itself binds MPI_Comm_rank and MPI_Wtime,
-  // which the stubs also define, to the stubs, global scope first: in one process they answer
-  // as OpenMPI would, rank 0 and the wall clock.)
-  const auto resolve = [library](const char* symbol, auto& pointer) -> bool {
-    pointer = reinterpret_cast<std::remove_reference_t<decltype(pointer)>>(dlsym(library, symbol));
-    return pointer != nullptr;
-  };
-#define FOSSSIM_RESOLVE(name) \
-  if (!resolve(#name, api.name)) return file + " lacks " + #name;
-  FOSSSIM_HYPRE_FUNCTIONS(FOSSSIM_RESOLVE)
-#undef FOSSSIM_RESOLVE
-#ifdef OPEN_MPI
-  api.comm_self = static_cast<MPI_Comm>(dlsym(library, "ompi_mpi_comm_self"));
-  if (!api.comm_self) return file + " lacks OpenMPI's ompi_mpi_comm_self";
-#else
-  api.comm_self = MPI_COMM_SELF;
-#endif
-  // Hypre as Debian builds it needs MPI started. A single process needs no launcher: OpenMPI's
-  // "singleton" start, kept from spawning its runtime daemon (half the start-up time) unless
-  // the environment says otherwise.
+/// Starts MPI for hypre, which Debian builds with it, and finalises both at exit. A single
+/// process needs no launcher: OpenMPI's "singleton" start, kept from spawning its runtime daemon
+/// (half the start-up time) unless the environment says otherwise.
+void start_mpi(const HypreApi& api) {
   int initialized = 0;
   api.MPI_Initialized(&initialized);
   if (!initialized) {
     setenv("OMPI_MCA_ess_singleton_isolated", "1", /*overwrite=*/0);
-    if (api.MPI_Init(nullptr, nullptr) != MPI_SUCCESS) return "MPI_Init failed (OpenMPI)";
-    api.MPI_Initialized(&initialized);
-    if (!initialized) return "MPI did not start (OpenMPI)";
+    const bool started = api.MPI_Init(nullptr, nullptr) == MPI_SUCCESS;
+    if (started) api.MPI_Initialized(&initialized);
+    if (!initialized) {
+      throw Error(ErrorKind::kUnavailable,
+                  std::string(kAmgUnavailable) +
+                      (started ? ": MPI did not start (OpenMPI)" : ": MPI_Init failed (OpenMPI)"));
+    }
   }
   api.HYPRE_Init();
   std::atexit([] {
@@ -116,22 +108,22 @@ std::string load(HypreApi& api) {
       loaded.MPI_Finalize();
     }
   });
-  return {};
 }
 
 /// The loaded table, or nullptr when hypre cannot be loaded (said once on stderr).
 const HypreApi* hypre_api() {
-  static HypreApi api;
-  static const bool loaded = [] {
-    const std::string error = load(api);
-    if (error.empty()) return true;
-    std::fprintf(stderr,
-                 "FOSSSim: algebraic multigrid (solver=\"amg\") is not available: %s. The sparse "
-                 "direct solvers answer instead (install Debian's libhypre-2.26.0 for multigrid).\n",
-                 error.c_str());
-    return false;
+  static const HypreApi* const api = []() -> const HypreApi* {
+    try {
+      static const HypreApi loaded;
+      start_mpi(loaded);
+      return &loaded;
+    } catch (const Error& error) {
+      std::fprintf(stderr, "FOSSSim: %s. The sparse direct solvers answer instead.\n",
+                   error.what());
+      return nullptr;
+    }
   }();
-  return loaded ? &api : nullptr;
+  return api;
 }
 
 /// The preconditioner's setup inside PCG: none, the hierarchy is built by AmgSolver::setup.

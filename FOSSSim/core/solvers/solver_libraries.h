@@ -12,6 +12,7 @@
 #include <smumps_c.h>
 #include <umfpack.h>
 
+#include "core/shared_library.h"
 #include "core/solvers/solver_library_threads.h"
 
 namespace fosssim {
@@ -24,21 +25,23 @@ namespace fosssim {
   X(umfpack_di_defaults)                                                       \
   X(umfpack_di_free_numeric) X(umfpack_di_free_symbolic) X(umfpack_di_numeric) \
       X(umfpack_di_symbolic) X(umfpack_di_wsolve)
-#define FOSSSIM_DMUMPS_FUNCTIONS(X) X(dmumps_c)
-#define FOSSSIM_SMUMPS_FUNCTIONS(X) X(smumps_c)
 
-/// The functions of one solver library, filled with dlsym.
+/// The functions of one solver library (core/shared_library.h).
 struct CholmodLibrary {
-#define FOSSSIM_SOLVER_MEMBER(name) decltype(&::name) name = nullptr;
-  FOSSSIM_CHOLMOD_FUNCTIONS(FOSSSIM_SOLVER_MEMBER)
+  CholmodLibrary();
+  SharedLibrary library;
+  FOSSSIM_CHOLMOD_FUNCTIONS(FOSSSIM_LIBRARY_FUNCTION)
 };
 struct UmfpackLibrary {
-  FOSSSIM_UMFPACK_FUNCTIONS(FOSSSIM_SOLVER_MEMBER)
+  UmfpackLibrary();
+  SharedLibrary library;
+  FOSSSIM_UMFPACK_FUNCTIONS(FOSSSIM_LIBRARY_FUNCTION)
 };
-struct MumpsLibrary {
-  FOSSSIM_DMUMPS_FUNCTIONS(FOSSSIM_SOLVER_MEMBER)
-  FOSSSIM_SMUMPS_FUNCTIONS(FOSSSIM_SOLVER_MEMBER)
-#undef FOSSSIM_SOLVER_MEMBER
+struct MumpsLibrary {  // double and single precision: two libraries
+  MumpsLibrary();
+  SharedLibrary double_library, single_library;
+  decltype(&::dmumps_c) dmumps_c = double_library.symbol<decltype(&::dmumps_c)>("dmumps_c");
+  decltype(&::smumps_c) smumps_c = single_library.symbol<decltype(&::smumps_c)>("smumps_c");
 };
 
 /// Each library, loaded (with dlopen) the first time it is asked for and kept until the

@@ -102,7 +102,7 @@ void LdltFactor::solve(const double*, double*) const { unavailable("MUMPS (spars
 
 LuFactor::LuFactor() = default;
 LuFactor::~LuFactor() = default;
-void LuFactor::free_numeric() {}
+void LuFactor::free_numeric() { numeric_ = nullptr; }  // there is never one to free
 void LuFactor::analyze(const SparseMatrix&) { unavailable("UMFPACK (sparse LU)"); }
 bool LuFactor::factorize(const SparseMatrix&) { unavailable("UMFPACK (sparse LU)"); }
 void LuFactor::solve(const double*, double*) const { unavailable("UMFPACK (sparse LU)"); }
