@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "core/step/simulation.h"
 #include "io/scene_error.h"
@@ -224,6 +225,51 @@ TEST(ElasticBodyElements, CourseRatiosLoadSilentlyAndSelectTheme4Grading) {
   }
   const Scene theme1 = load_with(R"(<simplegravity fx="0" fy="-1"/>)");
   EXPECT_EQ(theme1.grading_theme, 1);
+}
+
+// The course's order of kinds (SPEC-elastica section 3): after every Theme 1 kind, the elastic
+// springs, then the hinges, then the triangles, each kind in document order, wherever the
+// elements stand in the file.
+TEST(ElasticBodyElements, KindsAreSummedAfterTheTheme1KindsWhateverTheFileOrder) {
+  const Scene scene = load_scene_text(std::string(kElasticHeader) + kThreeParticles +
+                                          R"(<particle m="1" px="0" py="1" vx="0" vy="0" fixed="0"/>
+<elasticbodycstforce i1="1" i2="2" i3="3" youngsmodulus="1" poissonratio="0"/>
+<elasticbodybendingforce i1="1" i2="2" i3="3" alpha="1" theta0="0"/>
+<elasticbodyspringforce i1="2" i2="3" alpha="1" l0="1"/>
+<vortexforce i="0" j="1" kbs="1" kvc="1"/>
+<elasticbodycstforce i1="0" i2="1" i3="2" youngsmodulus="1" poissonratio="0"/>
+<elasticbodyspringforce i1="0" i2="1" alpha="1" l0="1"/>
+<simplegravity fx="0" fy="-1"/>
+<elasticbodybendingforce i1="0" i2="1" i3="2" alpha="1" theta0="0"/>
+</scene>
+)",
+                                      "order.xml");
+  std::vector<std::string> labels;
+  for (const auto& force : scene.model.forces) labels.push_back(force->label());
+  EXPECT_EQ(labels, (std::vector<std::string>{
+                        "simplegravity", "vortexforce(0, 1)", "elasticbodyspringforce(2, 3)",
+                        "elasticbodyspringforce(0, 1)", "elasticbodybendingforce(1, 2, 3)",
+                        "elasticbodybendingforce(0, 1, 2)", "elasticbodycstforce(1, 2, 3)",
+                        "elasticbodycstforce(0, 1, 2)"}));
+}
+
+// SPEC-elastica 1.1 (compat): the course's program reads a number after leading blanks, so
+// " 2.0" is 2.0 and " 1" is particle 1; course scenes may be written that way.
+TEST(ElasticBodyElements, LeadingBlanksInValuesReadAsTheCourseReadsThem) {
+  const auto first_step = [](const std::string& element) {
+    const Scene scene = load_with(element);
+    EXPECT_TRUE(scene.warnings.empty()) << element;
+    Simulation simulation(scene.model, scene.initial);
+    simulation.step();
+    return simulation.state();
+  };
+  const State clean = first_step(
+      R"(<elasticbodycstforce i1="0" i2="1" i3="2" youngsmodulus="3.5" poissonratio="0.3" xb2x="1.2"/>)");
+  const State blanks = first_step(
+      R"(<elasticbodycstforce i1=" 0" i2="  1" i3=" 2" youngsmodulus=" 3.5" poissonratio="  0.3" xb2x=" 1.2"/>)");
+  ASSERT_FALSE(clean.v.isZero(0.0));  // the rest corner moved, so the triangle pushes
+  EXPECT_TRUE(blanks.q == clean.q);
+  EXPECT_TRUE(blanks.v == clean.v);
 }
 
 // ---------------------------------------------------------------------------------------------
