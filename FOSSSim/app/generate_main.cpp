@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
       "(sheet, rod, ring, polygon, obj) as an XML scene (docs/scene-format.md).",
       "FOSSSim-generate"};
   app.require_subcommand(1);
-  app.add_option("-o,--output", o.output, "Mesh file to write (.obj or .mesh)")->required();
+  app.add_option("-o,--output", o.output, "File to write: .obj or .mesh for a mesh, .xml for an elastic body")->required();
   app.add_option("--json", o.json,
                  "Also write a JSON scene (fast mass-springs format) around the OBJ");
   app.add_option("--k", o.k, "Spring stiffness for --json (N/m)")->capture_default_str();

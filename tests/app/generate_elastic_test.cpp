@@ -127,6 +127,15 @@ TEST_F(GenerateElastic, TheSceneIsOneElementPerForceWithRestValuesFromThePositio
             "</scene>\n");
 }
 
+TEST_F(GenerateElastic, HelpSaysAnElasticBodyIsWrittenAsXml) {
+  const ProgramResult r = run(kGenerateProgram + " --help");
+  EXPECT_EQ(r.status, 0) << r.output();
+  EXPECT_NE(r.out.find("-o,--output TEXT REQUIRED   File to write: .obj or .mesh for a mesh, "
+                       ".xml for an elastic body"),
+            std::string::npos)
+      << r.out;
+}
+
 TEST_F(GenerateElastic, RefusesBadRequestsWithAMessageAndNoFile) {
   const auto refused = [this](const std::string& arguments, const std::string& message) {
     const ProgramResult r = run(kGenerateProgram + " " + arguments);

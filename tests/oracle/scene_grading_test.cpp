@@ -117,6 +117,29 @@ TEST(GradeScene, PerturbationBelowTheLimitPasses) {
   EXPECT_LT(r.residuals->max_position, 1e-10);
 }
 
+// A scene with Theme 4 forces is graded with the Theme 4 program's velocity limit, 1e-9
+// (SPEC-elastica section 5), and a Theme 1 scene with Theme 1's, 1e-10: the same velocity
+// change of 5e-10 passes the one and fails the other; 2e-9 fails both, where it was made.
+TEST(GradeScene, ElasticScenesAreGradedWithTheTheme4VelocityLimit) {
+  TemporaryFolder work;
+  const SceneEntry elastic{"elastic/hinge_and_triangle.xml",
+                           testing::kData + "/elastic/hinge_and_triangle.xml", false};
+  const std::string candidate = testing::candidate("perturbing_candidate.sh");
+  testing::use_perturbing_candidate(17, 2, 2, "5e-10");  // frame 17, particle 2, velocity x
+  const SceneResult within = grade_scene(elastic, options_for(candidate, work));
+  EXPECT_EQ(within.verdict, Verdict::kPassed) << within.reason;
+  ASSERT_TRUE(within.residuals);
+  EXPECT_NEAR(within.residuals->max_velocity, 5e-10, 1e-15);
+  const SceneResult theme1 = grade_scene(chain_scene(), options_for(candidate, work));
+  EXPECT_EQ(theme1.verdict, Verdict::kFailed);
+  testing::use_perturbing_candidate(17, 2, 2, "2e-9");
+  const SceneResult over = grade_scene(elastic, options_for(candidate, work));
+  EXPECT_EQ(over.verdict, Verdict::kFailed);
+  ASSERT_TRUE(over.first_divergence);
+  EXPECT_EQ(over.first_divergence->step, 17);
+  EXPECT_EQ(over.first_divergence->particle, 2);
+}
+
 /// Grades the chain scene with file_copying_candidate.sh writing `bytes`.
 SceneResult grade_copied(const std::string& bytes, const TemporaryFolder& work, int exit_status = 0,
                          const std::string& stderr_text = "") {

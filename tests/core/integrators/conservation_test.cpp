@@ -24,14 +24,28 @@
 //   matrix M/h² + AᵀKA has the same column sums, so Σ m p = Σ m y: every method keeps Σ m v
 //   constant to round-off (1e-13 of max m|v|; for local/global, whose velocities are position
 //   differences, plus ε Σ m|q|/h per step).
+// - The same for a free elastic body of Theme 4's forces (elastic springs, constant strain
+//   triangles, and in 2D a bending hinge), every one invariant under translations and rotations:
+//   each force's gradient sums to zero over its particles and its hessX's columns sum to zero
+//   per coordinate, so every method keeps Σ m v (while the forces change the velocities by more
+//   than 0.05, so they are not ignored); and symplectic Euler, whose kick uses F(qⁿ) and
+//   whose drift is along vⁿ⁺¹, keeps the angular momentum Σ m x × v exactly, since a rotation-
+//   invariant energy exerts no torque: Lⁿ⁺¹ - Lⁿ = h Σ xⁿ × F(xⁿ) = 0.
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 
 #include "core/analysis/energy.h"
+#include "core/forces/elastic_body_bending_force.h"
+#include "core/forces/elastic_body_cst_force.h"
+#include "core/forces/elastic_body_spring_force.h"
 #include "core/forces/vortex_force.h"
 #include "support/closed_forms.h"
 #include "support/random.h"
@@ -257,6 +271,108 @@ TYPED_TEST(ConservationTest, PairForcesConserveMomentumWithEveryMethod) {
     EXPECT_LE(drift, bound) << std::string(kind) << ": momentum drift " << drift;
     std::printf("%dD %-26s momentum drift after 300 steps %.2e (max m|v| %.2f)\n", D,
                 std::string(kind).c_str(), drift, scale);
+  }
+}
+
+/// A free elastic body: four particles of unequal masses on a square (tilted out of every
+/// coordinate plane in 3D, and bent out of it a little), two constant strain triangles whose rest
+/// shapes are other than the start, four elastic springs with other rest lengths and, in 2D, a
+/// bending hinge; random velocities (off the plane in 3D).
+template <int D>
+TestScene free_elastic_body(std::string_view kind) {
+  Random random(143);
+  const auto [e1, e2] = plane_axes<D>();
+  TestScene scene(D, kind, 0.002);
+  const double corners[4][2] = {{0, 0}, {1, 0}, {1.1, 0.9}, {-0.1, 1}};
+  for (int p = 0; p < 4; ++p) {
+    Vector x = corners[p][0] * e1 + corners[p][1] * e2;
+    if constexpr (D == 3) x += random.uniform(-0.1, 0.1) * Vector::Ones(3);
+    scene.add_particle(random.uniform(0.5, 2.0), x, random.uniform_vector(D, -0.5, 0.5));
+  }
+  const auto rest = [&](double ax, double ay, double bx, double by, double cx, double cy) {
+    return compute_cst_rest<D>(Vec<D>(ax * e1 + ay * e2), Vec<D>(bx * e1 + by * e2),
+                               Vec<D>(cx * e1 + cy * e2));
+  };
+  scene.add_force(std::make_unique<ElasticBodyCstForce<D>>(std::array<int, 3>{0, 1, 2}, 30.0, 0.3,
+                                                           rest(0, 0, 0.9, 0, 1, 1)));
+  scene.add_force(std::make_unique<ElasticBodyCstForce<D>>(std::array<int, 3>{0, 2, 3}, 20.0, 0.45,
+                                                           rest(0, 0, 1, 1.1, 0, 1)));
+  for (int p = 0; p < 4; ++p) {
+    scene.add_force(std::make_unique<ElasticBodySpringForce<D>>(p, (p + 1) % 4, 8.0, 0.9));
+  }
+  if constexpr (D == 2) {
+    scene.add_force(std::make_unique<ElasticBodyBendingForce>(0, 1, 2, 0.5, 1.2, 2.0));
+  }
+  return scene;
+}
+
+/// Σ m x × v: one number in 2D, a vector in 3D.
+template <int D>
+Vector angular_momentum(const TestScene& scene) {
+  Vector L = Vector::Zero(D == 2 ? 1 : 3);
+  for (int p = 0; p < scene.model.num_particles(); ++p) {
+    const Vector x = scene.initial.q.segment(D * p, D);
+    const Vector mv = scene.model.mass[D * p] * scene.initial.v.segment(D * p, D);
+    if constexpr (D == 2) {
+      L[0] += x[0] * mv[1] - x[1] * mv[0];
+    } else {
+      L += Vec<3>(x).cross(Vec<3>(mv));
+    }
+  }
+  return L;
+}
+
+TYPED_TEST(ConservationTest, ElasticBodyForcesConserveMomentumWithEveryMethod) {
+  constexpr int D = TypeParam::value;
+  for (const IntegratorMethod* method : all_integrators()) {
+    const std::string_view kind = method->name;
+    TestScene scene = free_elastic_body<D>(kind);
+    const Vector start = linear_momentum(scene.model, scene.initial.v);
+    const Vector start_angular = angular_momentum<D>(scene);
+    const double start_potential = compute_energies(scene.model, scene.initial).potential;
+    double scale = 0.0;          // max m|v|: the size of the terms that cancel
+    double angular_scale = 0.0;  // max Σ m|x||v|
+    double potential_change = 0.0;  // the body does deform: its elastic energy moves
+    double velocity_change = 0.0;   // and the forces act: velocities change
+    const Vector start_velocity = scene.initial.v;
+    auto integrator = make_integrator(scene.model);
+    for (int s = 0; s < 300; ++s) {
+      integrator->step(scene.initial);
+      ASSERT_TRUE(scene.initial.q.allFinite() && scene.initial.v.allFinite())
+          << std::string(kind) << ", step " << s;
+      double moment = 0.0;
+      for (int p = 0; p < 4; ++p) {
+        const double mv = scene.model.mass[D * p] * scene.initial.v.segment(D * p, D).norm();
+        scale = std::max(scale, mv);
+        moment += mv * scene.initial.q.segment(D * p, D).norm();
+      }
+      angular_scale = std::max(angular_scale, moment);
+      potential_change = std::max(
+          potential_change,
+          std::abs(compute_energies(scene.model, scene.initial).potential - start_potential));
+      velocity_change =
+          std::max(velocity_change, (scene.initial.v - start_velocity).lpNorm<Eigen::Infinity>());
+    }
+    EXPECT_GT(potential_change, 1e-3) << std::string(kind);
+    EXPECT_GT(velocity_change, 0.05) << std::string(kind);
+    const double drift = (linear_momentum(scene.model, scene.initial.v) - start).norm();
+    double bound = 1e-13 * scale;
+    if (method->properties.velocity_from_positions) {
+      double mq = 0.0;
+      for (int p = 0; p < 4; ++p) {
+        mq += scene.model.mass[D * p] * scene.initial.q.segment(D * p, D).norm();
+      }
+      bound += 300 * std::numeric_limits<double>::epsilon() * mq / scene.model.integrator.dt;
+    }
+    EXPECT_LE(drift, bound) << std::string(kind) << ": momentum drift " << drift;
+    if (kind == "symplectic-euler") {
+      const double turn = (angular_momentum<D>(scene) - start_angular).norm();
+      EXPECT_LE(turn, 300 * 1e-15 * angular_scale) << "angular momentum drift " << turn;
+    }
+    std::printf(
+        "%dD %-26s elastic body: momentum drift after 300 steps %.2e (max m|v| %.2f, max |Δv| "
+        "%.2f)\n",
+        D, std::string(kind).c_str(), drift, scale, velocity_change);
   }
 }
 
