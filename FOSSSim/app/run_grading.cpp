@@ -56,6 +56,12 @@ int run_grading(const Scene& scene, const Options& options) {
     throw Error(error.kind(), options.input + ": " + error.what());
   }
   progress.finish();
+  if (report.frames_after_last_step > 0) {
+    std::cerr << "FOSSSim: note: " << options.input << " holds " << report.frames_after_last_step
+              << " frame" << (report.frames_after_last_step == 1 ? "" : "s")
+              << " after the scene's last step; not graded (the course's Theme 4 program "
+                 "ignores them)\n";
+  }
   return report_grade(scene, options, report);
 }
 

@@ -27,12 +27,16 @@ struct GradingCriteria {
   /// The Theme 4 program's report: a line "Hybrid Collisions Passed: Yes." before the overall
   /// verdict, and a fifth residual-file line "1" (its hybrid-collision flag, always set).
   bool reports_hybrid_collisions = false;
+  /// The Theme 4 program grades a file with frames after the scene's last step, ignoring them
+  /// (SPEC-elastica section 5, docs/command-line.md 'Grading'); the Theme 1 program's file must
+  /// hold exactly steps + 1 frames.
+  bool ignores_frames_after_last_step = false;
 };
 
 /// The Theme 4 (elastic bodies) program's criteria: as Theme 1's, but a single velocity residual
 /// may reach 1e-9 (measured: 1.0e-9 passes, 1.001e-9 fails; SPEC-elastica section 5), and its
-/// report has the hybrid-collision line.
-constexpr GradingCriteria kTheme4Criteria{1e-6, 1e-10, 1e-9, true};
+/// report has the hybrid-collision line, and frames after the last step are not read.
+constexpr GradingCriteria kTheme4Criteria{1e-6, 1e-10, 1e-9, true, true};
 
 /// The criteria of the course program that grades this scene's kind: Theme 4's when the scene
 /// declares one of the Theme 4 elastic forces (Scene::grading_theme), else Theme 1's
@@ -92,6 +96,9 @@ struct GradeReport {
   GradingCriteria criteria;
   std::int64_t steps = 0;         ///< the steps to grade: the scene's num_steps()
   std::int64_t steps_graded = 0;  ///< steps compared so far
+  /// Whole frames the file holds after the scene's last step, not read (only under criteria
+  /// that ignore them; otherwise such a file is refused).
+  std::int64_t frames_after_last_step = 0;
   double accumulated_position = 0.0;
   double accumulated_velocity = 0.0;
   double max_position = 0.0;

@@ -1,5 +1,6 @@
 #include "grading/step_grader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -26,6 +27,7 @@ StepGrader::StepGrader(const Scene& scene, TrajectoryReader& file, const Grading
   pipeline_.set_health_check(false);
   report_.criteria = criteria;
   report_.steps = scene.model.num_steps();
+  report_.frames_after_last_step = std::max<std::int64_t>(0, file.num_frames() - (report_.steps + 1));
   if (file.layout() != TrajectoryLayout::kFrames) report_.collisions.emplace();
   file.read_frame(0, file_state_.q, file_state_.v);
 }
@@ -83,14 +85,16 @@ StepGrader StepGrader::open(const Scene& scene, TrajectoryReader& file,
                             const std::optional<GradingCriteria>& criteria,
                             Cancellation cancellation) {
   const std::int64_t steps = scene.model.num_steps();
-  if (file.num_frames() != steps + 1) {
+  const GradingCriteria chosen = criteria ? *criteria : criteria_for(scene);
+  const bool extra_frames = file.num_frames() > steps + 1 && chosen.ignores_frames_after_last_step;
+  if (file.num_frames() != steps + 1 && !extra_frames) {
     throw Error(ErrorKind::kBadInput, "the trajectory has " + std::to_string(file.num_frames()) +
                                           " frames, but the scene takes " + std::to_string(steps) +
                                           " steps and so needs " + std::to_string(steps + 1) +
                                           " (the initial state and one frame per step)" +
                                           why_frames_differ(scene, file));
   }
-  return StepGrader(scene, file, criteria ? *criteria : criteria_for(scene), cancellation);
+  return StepGrader(scene, file, chosen, cancellation);
 }
 
 bool StepGrader::finished() const {

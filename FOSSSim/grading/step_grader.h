@@ -31,7 +31,9 @@ namespace fosssim {
 class StepGrader {
  public:
   /// Starts grading. `scene` and `file` must outlive the grader. Throws Error (kBadInput) when
-  /// the file does not hold exactly num_steps() + 1 frames (the message does not name the file).
+  /// the file does not hold exactly num_steps() + 1 frames (the message does not name the file),
+  /// or, under criteria that ignore frames after the last step (Theme 4's), fewer; the report
+  /// then counts the frames left unread (GradeReport::frames_after_last_step).
   /// Without `criteria`, grades with those of the scene's course program (criteria_for).
   /// `cancellation` lets the caller end a reference step in progress: grade_next_step() then
   /// throws StepCancelled (core/step/cancellation.h).

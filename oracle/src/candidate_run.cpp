@@ -111,7 +111,8 @@ std::optional<Verdict> classify_ending(const ChildOutcome& outcome,
 
 /// The verdict for a trajectory file of the wrong size, or nothing when it has the right size.
 std::optional<Verdict> classify_file(const std::string& path, std::int64_t expected_bytes,
-                                     bool exact, std::string& reason) {
+                                     TrajectorySize size, std::string& reason) {
+  const bool exact = size == TrajectorySize::kExact;
   std::error_code error;
   if (!fs::exists(path, error)) {
     reason = "the candidate exited with status 0 but wrote no trajectory file";
@@ -133,7 +134,8 @@ std::optional<Verdict> classify_file(const std::string& path, std::int64_t expec
   if (bytes < expected_bytes) {
     reason = "short trajectory: " + std::to_string(bytes) + " bytes, but the scene needs " +
              (exact ? "" : "at least ") + std::to_string(expected_bytes) +
-             (exact ? " (steps + 1 frames)" : " (steps + 1 records without collisions)");
+             (size == TrajectorySize::kAtLeastRecords ? " (steps + 1 records without collisions)"
+                                                      : " (steps + 1 frames)");
     return Verdict::kShort;
   }
   if (exact && bytes > expected_bytes) {
@@ -233,8 +235,8 @@ WorkFolder::~WorkFolder() {
 }
 
 CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_bytes,
-                           const CandidateRunOptions& options, const WorkFolder& work, bool exact,
-                           const std::vector<std::string>& scene_files) {
+                           const CandidateRunOptions& options, const WorkFolder& work,
+                           TrajectorySize size, const std::vector<std::string>& scene_files) {
   CandidateRun run;
   const std::string run_folder = work.path() + "/run";
   run.trajectory_path = run_folder + "/out.bin";
@@ -284,12 +286,12 @@ CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_
   run.stderr_tail = last_lines(printable_text(outcome.stderr_tail), 20);
   run.problem = classify_ending(outcome, options, limit, run.reason);
   if (!run.problem) {
-    run.problem = classify_file(run.trajectory_path, expected_bytes, exact, run.reason);
+    run.problem = classify_file(run.trajectory_path, expected_bytes, size, run.reason);
   } else if (*run.problem == Verdict::kExitStatus || *run.problem == Verdict::kCrashed) {
     // A writer killed by its file-size limit inside a script shows as the script's exit status
     // or crash; the oversized file is the better reason.
     std::string file_reason;
-    if (classify_file(run.trajectory_path, expected_bytes, exact, file_reason) ==
+    if (classify_file(run.trajectory_path, expected_bytes, size, file_reason) ==
         Verdict::kOversized) {
       run.problem = Verdict::kOversized;
       run.reason = file_reason + " (and " + run.reason.substr(std::string("the ").size()) + ")";
@@ -315,6 +317,15 @@ std::int64_t expected_trajectory_bytes(const SceneModel& model) {
 
 bool trajectory_size_is_exact(const SceneModel& model) {
   return trajectory_layout(model) == TrajectoryLayout::kFrames;
+}
+
+TrajectorySize trajectory_size_rule(const SceneModel& model, const GradingCriteria& criteria) {
+  if (!trajectory_size_is_exact(model)) return TrajectorySize::kAtLeastRecords;
+  // Rigid-body trajectories have a layout of their own, always exact.
+  if (criteria.ignores_frames_after_last_step && !model.rigid_bodies) {
+    return TrajectorySize::kAtLeastFrames;
+  }
+  return TrajectorySize::kExact;
 }
 
 }  // namespace fosssim

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/sanitizers.h"
+#include "grading/grader.h"
 #include "scene_result.h"
 
 namespace fosssim {
@@ -80,20 +81,32 @@ struct CandidateRun {
 /// possible size (no collisions, no polynomials), and trajectory_size_is_exact is false.
 std::int64_t expected_trajectory_bytes(const SceneModel& model);
 
+/// How a finished trajectory's size is checked against expected_trajectory_bytes.
+enum class TrajectorySize {
+  kExact,           ///< exactly: frames without collision records
+  kAtLeastFrames,   ///< at least: frames, of which those after the last step are not read
+                    ///< (the Theme 4 program's rule, GradingCriteria::ignores_frames_after_last_step)
+  kAtLeastRecords,  ///< at least: records with collisions, whose sizes vary (the reader checks
+                    ///< their structure)
+};
+
 /// True when every complete trajectory of `model` has exactly expected_trajectory_bytes bytes
 /// (layouts without collision records).
 bool trajectory_size_is_exact(const SceneModel& model);
 
+/// The size rule of `model`'s trajectories as graded under `criteria`.
+TrajectorySize trajectory_size_rule(const SceneModel& model, const GradingCriteria& criteria);
+
 /// Runs `options.candidate -s <scene_path> -d 0 -o <work>/run/out.bin` in `<work>/run`, with the
 /// timeout, the CPU-time limit (the timeout, rounded up), the memory and process limits, a
 /// per-file size limit and a watch on the folder's size (both well above `expected_bytes`, so
-/// a runaway writer is stopped early), then checks the file's size against `expected_bytes`:
-/// exactly, or (`exact` false: layouts with collision records) as a lower bound, leaving the
-/// rest to the reader, which checks the records' structure. Sandboxed, the candidate reads the
+/// a runaway writer is stopped early), then checks the file's size against `expected_bytes` by
+/// `size` (a lower bound leaves the rest to the reader, which checks the records' structure). Sandboxed, the candidate reads the
 /// folders of `scene_files` (the files the scene reads; the scene's folder when empty), its
 /// own folder and `options.readable`, and writes only `<work>/run` and its private /tmp.
 CandidateRun run_candidate(const std::string& scene_path, std::int64_t expected_bytes,
                            const CandidateRunOptions& options, const WorkFolder& work,
-                           bool exact = true, const std::vector<std::string>& scene_files = {});
+                           TrajectorySize size = TrajectorySize::kExact,
+                           const std::vector<std::string>& scene_files = {});
 
 }  // namespace fosssim

@@ -46,7 +46,9 @@ ManifestEntry compute_entry(const SceneEntry& scene, const CandidateRunOptions& 
   try {
     WorkFolder work(work_dir);
     const CandidateRun run =
-        run_candidate(scene.path, expected, options, work, trajectory_size_is_exact(model));
+        run_candidate(scene.path, expected, options, work,
+                      trajectory_size_is_exact(model) ? TrajectorySize::kExact
+                                                      : TrajectorySize::kAtLeastRecords);
     if (run.problem) {
       entry.status = verdict_id(*run.problem);
       if (*run.problem == Verdict::kExitStatus)

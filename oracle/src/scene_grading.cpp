@@ -289,6 +289,11 @@ std::optional<GradeReport> grade_file(const Scene& scene, const std::string& pat
     return std::nullopt;
   }
   take_grade(grader->report(), history, dim, result);
+  if (const std::int64_t extra = grader->report().frames_after_last_step; extra > 0) {
+    result.details += "The trajectory holds " + std::to_string(extra) +
+                      " frames after the scene's last step; they were not read (the course's "
+                      "Theme 4 program ignores them).\n";
+  }
   return grader->report();
 }
 
@@ -399,7 +404,8 @@ SceneResult grade_scene(const SceneEntry& entry, const GradingOptions& options) 
     CandidateRunOptions run_options = options.run;
     if (entry.timeout_seconds) run_options.timeout_seconds = *entry.timeout_seconds;
     const CandidateRun run = run_candidate(entry.path, expected_bytes, run_options, work,
-                                           trajectory_size_is_exact(model), scene_files);
+                                           trajectory_size_rule(model, criteria_for(scene)),
+                                           scene_files);
     result.run_seconds = run.seconds;
     result.stderr_tail = run.stderr_tail;
     if (run.problem) {

@@ -163,5 +163,36 @@ TEST_F(Theme4Criteria, ReportHasTheTheme4ProgramsHybridCollisionLines) {
   EXPECT_EQ(theme1.str().find("Hybrid"), std::string::npos);
 }
 
+// SPEC-elastica section 5: the Theme 4 program grades a file that holds frames after the last
+// step, ignoring them. Three frames of NaN appended pass and are counted; the same frames after a
+// Theme 1 scene's trajectory make it refused; part of a frame is refused under both.
+TEST_F(Theme4Criteria, FramesAfterTheLastStepAreIgnoredAsTheTheme4ProgramIgnoresThem) {
+  const auto append_nan_frames = [this](std::int64_t frames) {
+    const std::int64_t values = frames * 2 * scene_->model.num_dofs();
+    std::ofstream out(file_, std::ios::binary | std::ios::app);
+    const double nan = std::nan("");
+    for (std::int64_t k = 0; k < values; ++k) out.write(reinterpret_cast<const char*>(&nan), 8);
+  };
+  use(kTheme4Scene);
+  append_nan_frames(3);
+  const GradeReport report = grade();
+  EXPECT_TRUE(report.passed());
+  EXPECT_EQ(report.steps_graded, scene_->model.num_steps());
+  EXPECT_EQ(report.frames_after_last_step, 3);
+  EXPECT_EQ(report.max_velocity, 0.0);
+
+  use(kTheme1Scene);
+  append_nan_frames(3);
+  EXPECT_THROW(grade(), Error);
+
+  use(kTheme4Scene);
+  {
+    std::ofstream out(file_, std::ios::binary | std::ios::app);
+    const double zero = 0.0;
+    out.write(reinterpret_cast<const char*>(&zero), 8);  // one value: not a whole frame
+  }
+  EXPECT_THROW(grade(), Error);
+}
+
 }  // namespace
 }  // namespace fosssim

@@ -176,6 +176,27 @@ TEST(GradeScene, OversizedFileFailsWithoutBeingRead) {
   EXPECT_TRUE(text_contains(r.reason, "6656 bytes")) << r.reason;
 }
 
+// The Theme 4 program grades a file with frames after the last step, ignoring them
+// (SPEC-elastica section 5): FOSSSim's trajectory of a Theme 4 scene with two more frames passes
+// and says so in its details; the same for the Theme 1 chain scene is OVERSIZED (above).
+TEST(GradeScene, ElasticScenesPassWithFramesAfterTheLastStep) {
+  TemporaryFolder work;
+  const std::string scene = testing::kData + "/elastic/hinge_and_triangle.xml";
+  const SceneEntry elastic{"elastic/hinge_and_triangle.xml", scene, false};
+  const std::string good = testing::fosssim_trajectory(scene, work);
+  constexpr std::size_t kFrameBytes = 2 * 6 * 8;  // 3 particles in 2D: 6 positions, 6 velocities
+  ASSERT_EQ(good.size(), 31 * kFrameBytes);        // 30 steps
+  const std::string file = work / "prepared.bin";
+  testing::write_bytes(file, good + good.substr(good.size() - 2 * kFrameBytes));
+  testing::set_env("ORACLE_TEST_TRAJECTORY", file);
+  testing::set_env("ORACLE_TEST_EXIT", "0");
+  testing::set_env("ORACLE_TEST_STDERR", "");
+  const SceneResult r =
+      grade_scene(elastic, options_for(testing::candidate("file_copying_candidate.sh"), work));
+  EXPECT_EQ(r.verdict, Verdict::kPassed) << r.reason;
+  EXPECT_TRUE(text_contains(r.details, "holds 2 frames after the scene's last step")) << r.details;
+}
+
 TEST(GradeScene, RunawayWriterIsStoppedAndFailsAsOversized) {
   TemporaryFolder work;
   const SceneResult r = grade_chain_with("runaway_candidate.sh", work);
