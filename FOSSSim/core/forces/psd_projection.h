@@ -1,6 +1,6 @@
 #pragma once
 // Projection of a small symmetric element Hessian onto the positive semi-definite matrices,
-// for forces asked for ForceInput::definite_hessian (docs/forces.md, 'Semi-definite Hessians').
+// for forces asked for ForceInput::definite_hessian (docs/forces.md, 'Semi-definite element Hessians').
 
 #include <Eigen/Eigenvalues>
 
