@@ -27,5 +27,18 @@ Eigen::MatrixXd hessian_x_of(const Force& force, const Vector& q, const Vector& 
                              const Vector& mass);
 Eigen::MatrixXd hessian_v_of(const Force& force, const Vector& q, const Vector& v,
                              const Vector& mass);
+/// The force's hessX with ForceInput::definite_hessian set (each element's block projected onto
+/// the positive semi-definite matrices), assembled densely.
+Eigen::MatrixXd definite_hessian_x_of(const Force& force, const Vector& q, const Vector& v,
+                                      const Vector& mass);
+
+/// Expects `projected` to be the projection of the symmetric `exact` onto the positive
+/// semi-definite matrices, to 1e-12 of exact's largest eigenvalue magnitude: symmetric, its
+/// eigenvalues max(λ, 0) of exact's λ (so none below the tolerance), projected − exact
+/// semi-definite (the projection only adds stiffness), and xᵀ projected x ≥ 0 for 20 random x.
+/// `name` labels the failures. Returns exact's smallest eigenvalue over its largest magnitude,
+/// so that a caller can check that a case tests a projection at all.
+double expect_semidefinite_projection(const Eigen::MatrixXd& exact,
+                                      const Eigen::MatrixXd& projected, const std::string& name);
 
 }  // namespace fosssim::testing

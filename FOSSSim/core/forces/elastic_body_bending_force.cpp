@@ -4,6 +4,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "core/forces/psd_projection.h"
 #include "core/scene_model.h"
 
 namespace fosssim {
@@ -73,12 +74,19 @@ void ElasticBodyBendingForce::add_hessian_x(const ForceInput& in, HessianBuilder
   const std::array<std::array<Mat2, 3>, 3> second = {{{Mat2(-J1), J1, zero},
                                                       {J1, Mat2(J2 - J1), Mat2(-J2)},
                                                       {zero, Mat2(-J2), J2}}};
+  // The 6×6 element block, projected as a whole when asked, added block by block either way.
+  Eigen::Matrix<double, 6, 6> element;
+  for (int a = 0; a < 3; ++a) {
+    for (int b = 0; b < 3; ++b) {
+      element.block<2, 2>(2 * a, 2 * b) =
+          scale * (grad[a] * grad[b].transpose() + deviation * second[a][b]);
+    }
+  }
+  if (in.definite_hessian) element = projected_to_semidefinite<6>(element);
   const std::array<int, 3> particles = {i1_, i2_, i3_};
   for (int a = 0; a < 3; ++a) {
     for (int b = 0; b < 3; ++b) {
-      const Mat2 block =
-          scale * (grad[a] * grad[b].transpose() + deviation * second[a][b]);
-      hessian.add_block<2>(particles[a], particles[b], block);
+      hessian.add_block<2>(particles[a], particles[b], Mat2(element.block<2, 2>(2 * a, 2 * b)));
     }
   }
 }

@@ -21,7 +21,9 @@ namespace fosssim {
 ///   (x1, x2, x3), J(e) = d(R e / |e|²)/de = [[2ab, b² - a²], [b² - a², -2ab]] / |e|⁴ for
 ///   e = (a, b), J1 = J(e1), J2 = J(e2).
 /// The signed angle needs a plane: this force exists in 2D only (a dim="3" scene is refused at
-/// load). hessX is indefinite in general and is never projected.
+/// load). hessX is indefinite in general; with ForceInput::definite_hessian the 6×6 element block
+/// is projected onto the positive semi-definite matrices (its negative eigenvalues set to 0:
+/// core/forces/psd_projection.h).
 class ElasticBodyBendingForce final : public Force {
  public:
   /// i1, i2 (hinge), i3: particle indices; alpha: bending modulus (N·m²), ≥ 0; theta0: rest

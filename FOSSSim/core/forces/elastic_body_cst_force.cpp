@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/forces/make_for_dim.h"
+#include "core/forces/psd_projection.h"
 #include "core/scene_model.h"
 #include "core/text.h"
 
@@ -109,15 +110,24 @@ void ElasticBodyCstForce<D>::add_hessian_x(const ForceInput& in, HessianBuilder&
     grad[p].col(1) = 2.0 * w(p, 1) * F.col(1);
     grad[p].col(2) = w(p, 0) * F.col(1) + w(p, 1) * F.col(0);
   }
+  // The element block, corner by corner; projected as a whole when asked (the 3D×3D matrix of
+  // the three corners), added block by block either way.
+  Eigen::Matrix<double, 3 * D, 3 * D> element;
   for (int p = 0; p < 3; ++p) {
     for (int r = 0; r < 3; ++r) {
       // ∇²ε_s is a multiple of the identity in each corner block (ε is quadratic in F).
       const double curvature = 2.0 * sigma[0] * w(p, 0) * w(r, 0) +
                                2.0 * sigma[1] * w(p, 1) * w(r, 1) +
                                sigma[2] * (w(p, 0) * w(r, 1) + w(p, 1) * w(r, 0));
-      const Mat<D> block = K * (grad[p] * C * grad[r].transpose() +
-                                curvature * Mat<D>::Identity());
-      hessian.add_block<D>(corners_[p], corners_[r], block);
+      element.template block<D, D>(D * p, D * r) =
+          K * (grad[p] * C * grad[r].transpose() + curvature * Mat<D>::Identity());
+    }
+  }
+  if (in.definite_hessian) element = projected_to_semidefinite<3 * D>(element);
+  for (int p = 0; p < 3; ++p) {
+    for (int r = 0; r < 3; ++r) {
+      hessian.add_block<D>(corners_[p], corners_[r],
+                           Mat<D>(element.template block<D, D>(D * p, D * r)));
     }
   }
 }
@@ -195,7 +205,8 @@ std::unique_ptr<Force> make_elastic_body_cst_force(ForceParameters& params,
   if (!(std::abs(nu) < 1.0)) {
     params.fail("poissonratio",
                 "must lie strictly between -1 and 1 (the plane-stress energy divides by "
-                "1 - ν²), found " + to_text(nu));
+                "1 - ν²), found " +
+                    to_text(nu));
   }
   if (nu < 0.0 || nu > 0.5) {
     params.warn("poissonratio " + to_text(nu) +

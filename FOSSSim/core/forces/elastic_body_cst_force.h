@@ -34,7 +34,9 @@ CstRest compute_cst_rest(const Vec<D>& x1, const Vec<D>& x2, const Vec<D>& x3);
 /// In 2D this is the course's element; in 3D the same formulas, with F a 3×2 matrix, make it a
 /// membrane (FOSSSim's own). U depends only on FᵀF: it is invariant under rigid motions and
 /// reflections, and finite for degenerate and inverted current triangles. hessX is indefinite
-/// in general and is never projected.
+/// in general (compressed, squashed, inverted, or in 3D folded triangles); with
+/// ForceInput::definite_hessian the whole 3D×3D element block is projected onto the positive
+/// semi-definite matrices (its negative eigenvalues set to 0: core/forces/psd_projection.h).
 template <int D>
 class ElasticBodyCstForce final : public Force {
  public:

@@ -28,8 +28,9 @@ namespace {
 constexpr std::array<std::string_view, 2> kHessians = {"exact", "projected"};
 constexpr std::array kLinearlyImplicitEulerOptionSpecs = {
     OptionSpec::choice("hessian", kHessians,
-                       "\"projected\" drops compressed springs' negative transverse stiffness, "
-                       "so the step matrix stays positive definite"),
+                       "\"projected\" makes every element's Hessian semi-definite (compressed "
+                       "springs lose their negative transverse stiffness, triangles and hinges "
+                       "their negative eigenvalues), so the step matrix stays positive definite"),
     kSolverOption,
 };
 }  // namespace

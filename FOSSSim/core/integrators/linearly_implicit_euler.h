@@ -22,8 +22,8 @@ namespace fosssim {
 /// position qⁿ + h vⁿ; both are first order and agree to O(h²) per step.
 /// A compressed spring's Hessian is indefinite, so A may be too: the solve is a sparse LDLᵀ
 /// accepted only with a round-off-level residual, else sparse LU (StepSolver). With the option
-/// hessian="projected", spring Hessians are projected onto the positive semi-definite
-/// matrices first, which keeps A positive definite at the price of a less exact linearization
+/// hessian="projected", element Hessians (springs, CST triangles, bending hinges) are projected
+/// onto the positive semi-definite matrices first, which keeps A positive definite at the price of a less exact linearization
 /// under compression.
 class LinearlyImplicitEuler final : public Integrator {
  public:

@@ -175,7 +175,7 @@ constexpr std::array kNewtonOptionSpecs = {
     OptionSpec::choice(
         "hessian", kHessianChoices,
         "step matrix of the iterations when every force has a potential: a blend of the exact "
-        "matrix and the projected one (each spring's Hessian made semi-definite), projected at "
+        "matrix and the projected one (each element's Hessian made semi-definite), projected at "
         "first and exact once the line search takes full steps, for robust and quadratic "
         "convergence on crumpling cloth (adaptive); always the projected one, linear "
         "convergence (projected); or the exact one, projected only where it climbs (exact)"),

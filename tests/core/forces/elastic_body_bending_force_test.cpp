@@ -9,7 +9,11 @@
 // - derivatives by finite differences (gradient against U, hessX against the gradient, hessV = 0)
 //   on random hinges and on nasty ones: straight (θ = 0), folded just inside ±π on each side of
 //   the branch cut, very short and very unequal edges, θ0 far from θ;
-// - the energy's jump across θ = ±π, which the course's program has and FOSSSim keeps.
+// - the energy's jump across θ = ±π, which the course's program has and FOSSSim keeps;
+// - the semi-definite Hessian (ForceInput::definite_hessian): on random hinges and hinges at
+//   θ = 0 and near ±π its eigenvalues are the exact block's with the negative ones set to 0 (so
+//   it is semi-definite, xᵀHx ≥ 0, and differs from an indefinite exact block); at θ = θ0 the
+//   exact block (α/L) ∇θ ∇θᵀ is already semi-definite and is kept.
 
 #include "core/forces/elastic_body_bending_force.h"
 
@@ -152,6 +156,55 @@ TEST(ElasticBodyBendingForceTest, DerivativesOnNastyHinges) {
     check_force_everywhere(bending, 2, q, v, mass,
                            {"elastic-bending", at_rest ? kAtRest : "near-degenerate", c.name});
     EXPECT_TRUE(hessian_x_of(bending, q, v, mass).allFinite()) << c.name;
+  }
+}
+
+TEST(ElasticBodyBendingForceTest, DefiniteHessianIsTheExactBlockWithNegativeEigenvaluesClamped) {
+  struct Case {
+    double a, b, theta, theta0;
+    const char* name;
+  };
+  // Each exact block is indefinite: θ ≠ θ0 gives (θ - θ0) ∇²θ, whose blocks are trace-free.
+  const Case cases[] = {
+      {1.0, 1.0, 0.0, 0.5, "straight, bent at rest"},
+      {1.0, 0.7, 0.0, -1.0, "straight, bent the other way at rest"},
+      {1.0, 1.0, kPi - 1e-3, 0.0, "fold below +pi"},
+      {1.0, 1.0, -kPi + 1e-3, 0.0, "fold above -pi"},
+      {0.8, 1.3, kPi, 0.0, "fold at pi"},
+      {0.8, 1.3, -kPi + 1e-3, 3.0, "fold above -pi, theta0 = 3"},
+      {1e-3, 1.0, 1.0, 0.0, "short first edge"},
+  };
+  for (const Case& c : cases) {
+    const Vector q = hinge_with_angle(c.a, c.b, c.theta);
+    const ElasticBodyBendingForce bending(0, 1, 2, 1.5, c.theta0, 2.0);
+    const Eigen::MatrixXd exact = hessian_x_of(bending, q, Vector::Zero(6), Vector::Ones(6));
+    const Eigen::MatrixXd projected =
+        definite_hessian_x_of(bending, q, Vector::Zero(q.size()), Vector::Ones(q.size()));
+    EXPECT_LT(expect_semidefinite_projection(exact, projected, c.name), -1e-3)
+        << c.name << ": the case should test a projection";
+    EXPECT_GT((projected - exact).norm(), 1e-3 * exact.norm()) << c.name;
+  }
+  for (unsigned seed = 81; seed <= 88; ++seed) {
+    Random random(seed);
+    const Vector q = random.uniform_vector(8, -1.0, 1.0);  // particle 3 is a bystander
+    const ElasticBodyBendingForce bending(2, 0, 3, random.uniform(0.1, 10.0),
+                                          random.uniform(-3.0, 3.0), random.uniform(0.5, 3.0));
+    const Eigen::MatrixXd exact = hessian_x_of(bending, q, Vector::Zero(8), Vector::Ones(8));
+    expect_semidefinite_projection(
+        exact, definite_hessian_x_of(bending, q, Vector::Zero(q.size()), Vector::Ones(q.size())),
+        "random, seed " + std::to_string(seed));
+  }
+}
+
+TEST(ElasticBodyBendingForceTest, DefiniteHessianAtTheRestAngleIsTheExactOne) {
+  for (const double theta : {0.0, 1.0, -2.5}) {
+    const Vector q = hinge_with_angle(1.0, 0.6, theta);
+    const ElasticBodyBendingForce bending(0, 1, 2, 1.5, theta, 2.0);
+    const Eigen::MatrixXd exact = hessian_x_of(bending, q, Vector::Zero(6), Vector::Ones(6));
+    const Eigen::MatrixXd projected =
+        definite_hessian_x_of(bending, q, Vector::Zero(q.size()), Vector::Ones(q.size()));
+    EXPECT_LE((projected - exact).cwiseAbs().maxCoeff(), 1e-12 * exact.norm()) << theta;
+    EXPECT_GT(exact.norm(), 0.0);
   }
 }
 

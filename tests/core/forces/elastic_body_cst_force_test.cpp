@@ -10,12 +10,17 @@
 // - derivatives by finite differences on random triangles and on nasty ones: squashed to zero
 //   area, inverted, nearly coincident corners, ν near 0.5 and negative, a needle-shaped rest
 //   triangle.
+// - the semi-definite Hessian (ForceInput::definite_hessian): on random, compressed, squashed
+//   and inverted triangles its eigenvalues are those of the exact block with the negative ones
+//   set to 0 (so it is semi-definite, xᵀHx ≥ 0, and it differs from an indefinite exact block);
+//   on a stretched triangle, whose exact block is already semi-definite, it is the exact block.
 
 #include "core/forces/elastic_body_cst_force.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <Eigen/Eigenvalues>
 #include <cmath>
 
 #include "core/force_evaluation.h"
@@ -206,6 +211,70 @@ TYPED_TEST(ElasticBodyCstForceTest, DerivativesOnNastyTriangles) {
     EXPECT_TRUE(gradient_of(cst, c.q, v, mass).allFinite()) << c.name;
     EXPECT_TRUE(hessian_x_of(cst, c.q, v, mass).allFinite()) << c.name;
   }
+}
+
+TYPED_TEST(ElasticBodyCstForceTest, DefiniteHessianIsTheExactBlockWithNegativeEigenvaluesClamped) {
+  constexpr int D = TypeParam::value;
+  const CstRest right = rest_of<D>(planar<D>({0, 0, 1, 0, 0, 1}));
+  struct Case {
+    Vector q;
+    const char* name;
+  };
+  // Each exact block has an eigenvalue below -1e-3 of its largest (checked below).
+  const Case cases[] = {
+      {planar<D>({0, 0, 0.6, 0, 0, 0.7}), "compressed"},
+      {planar<D>({0, 0, 0.5, 0.1, -0.1, 1.2}), "compressed in x, stretched in y"},
+      {planar<D>({0, 0, 0.5, 0, 0.25, 0}), "squashed to a short segment"},
+      {planar<D>({0.2, 0.2, 0.2, 0.2, 0.2, 0.2}), "squashed to a point"},
+      {planar<D>({0, 0, 1, 0, 0.3, -0.8}), "inverted"},
+  };
+  for (const Case& c : cases) {
+    const ElasticBodyCstForce<D> cst({0, 1, 2}, 7.0, 0.3, right);
+    const Eigen::MatrixXd exact = hessian_x_of(cst, c.q, Vector::Zero(3 * D), Vector::Ones(3 * D));
+    const Eigen::MatrixXd projected =
+        definite_hessian_x_of(cst, c.q, Vector::Zero(3 * D), Vector::Ones(3 * D));
+    const double relative_min = expect_semidefinite_projection(exact, projected, c.name);
+    EXPECT_LT(relative_min, -1e-3) << c.name << ": the case should test a projection";
+    EXPECT_GT((projected - exact).norm(), 1e-3 * exact.norm()) << c.name;
+  }
+  {
+    // Squashed onto a segment twice the rest legs' length: stretched (ε = (0, 3, 2)), and its
+    // exact block happens to be semi-definite; the projection must keep it.
+    const ElasticBodyCstForce<D> cst({0, 1, 2}, 7.0, 0.3, right);
+    const Vector q = planar<D>({0, 0, 1, 0, 2, 0});
+    const Eigen::MatrixXd exact = hessian_x_of(cst, q, Vector::Zero(3 * D), Vector::Ones(3 * D));
+    EXPECT_GT(expect_semidefinite_projection(
+                  exact, definite_hessian_x_of(cst, q, Vector::Zero(3 * D), Vector::Ones(3 * D)),
+                  "squashed to a long segment"),
+              -1e-12);
+  }
+  for (unsigned seed = 92; seed <= 98; ++seed) {
+    Random random(seed);
+    const Vector rest_q = random.uniform_vector(3 * D, -1.0, 1.0);
+    const Vector q = random.uniform_vector(4 * D, -1.0, 1.0);  // particle 3 is a bystander
+    const ElasticBodyCstForce<D> cst({3, 0, 2}, random.uniform(0.5, 100.0),
+                                     random.uniform(-0.9, 0.9), rest_of<D>(rest_q));
+    const Eigen::MatrixXd exact = hessian_x_of(cst, q, Vector::Zero(4 * D), Vector::Ones(4 * D));
+    expect_semidefinite_projection(
+        exact, definite_hessian_x_of(cst, q, Vector::Zero(q.size()), Vector::Ones(q.size())),
+        "random, seed " + std::to_string(seed));
+  }
+}
+
+TYPED_TEST(ElasticBodyCstForceTest, DefiniteHessianOfAStretchedTriangleIsTheExactOne) {
+  constexpr int D = TypeParam::value;
+  const Vector rest = planar<D>({0, 0, 1, 0, 0, 1});
+  // Stretched by 1.2 in every direction, then turned: ε = 0.44 I, σ ≥ 0 and εxy = 0, so every
+  // term of the exact block is semi-definite.
+  const Vector q = transformed<D>(1.2 * rest, rotation<D>(0.4), Vec<D>::Constant(0.1));
+  const ElasticBodyCstForce<D> cst({0, 1, 2}, 7.0, 0.3, rest_of<D>(rest));
+  const Eigen::MatrixXd exact = hessian_x_of(cst, q, Vector::Zero(3 * D), Vector::Ones(3 * D));
+  const Eigen::VectorXd lambda =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(exact, Eigen::EigenvaluesOnly).eigenvalues();
+  ASSERT_GE(lambda.minCoeff(), -1e-12 * lambda.maxCoeff());
+  const Eigen::MatrixXd projected =
+      definite_hessian_x_of(cst, q, Vector::Zero(q.size()), Vector::Ones(q.size()));
+  EXPECT_LE((projected - exact).cwiseAbs().maxCoeff(), 1e-12 * lambda.maxCoeff());
 }
 
 }  // namespace
