@@ -43,7 +43,8 @@ class StepMatrix {
   const SparseMatrix& matrix() const { return matrix_; }
   /// A at (q, v) with every force's semi-definite hessX (ForceInput::definite_hessian), in a
   /// matrix of its own with the pattern of assemble()'s: a positive definite matrix near A
-  /// when A is not, to precondition with (StepSolver::DefiniteMatrix).
+  /// when A is not (Newton's `hessian="projected"` and `"adaptive"` step with it, alone or
+  /// blended with A: core/integrators/newton.cpp).
   const SparseMatrix& assemble_definite(const Vector& q, const Vector& v, double h);
   /// What assemble() gives, bit for bit, computed the plain way: the forces' values as
   /// triplets, filtered by the fixed-particle rule and summed by Eigen's setFromTriplets. The
