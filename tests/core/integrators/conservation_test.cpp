@@ -281,7 +281,10 @@ TYPED_TEST(ConservationTest, PairForcesConserveMomentumWithEveryMethod) {
 template <int D>
 TestScene free_elastic_body(std::string_view kind) {
   Random random(143);
-  const auto [e1, e2] = plane_axes<D>();
+  // Named copies, not a structured binding: lambdas capture them (clang 14 cannot capture
+  // structured bindings).
+  const auto axes = plane_axes<D>();
+  const Vector e1 = axes.first, e2 = axes.second;
   TestScene scene(D, kind, 0.002);
   const double corners[4][2] = {{0, 0}, {1, 0}, {1.1, 0.9}, {-0.1, 1}};
   for (int p = 0; p < 4; ++p) {
