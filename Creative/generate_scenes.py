@@ -558,6 +558,18 @@ def rigid_planks():
     ])
 
 
+def add_floor_ramp_wall(s, wall_x):
+    """The half-planes of soft_drape and bodies_with_holes: a floor at y = -0.2, a ramp rising
+    to the left from (-1.5, 0.3), a wall on the right at x = wall_x, all in one brown."""
+    planes = ((0, -0.2, 0, 1),                                   # floor
+              (-1.5, 0.3, math.sin(0.5), math.cos(0.5)),         # ramp on the left
+              (wall_x, 0, -1, 0))                                # wall on the right
+    for px, py, nx, ny in planes:
+        s.add(f'<halfplane px="{fmt(px)}" py="{fmt(py)}" nx="{fmt(nx)}" ny="{fmt(ny)}"/>')
+    for h in range(len(planes)):
+        s.add(f'<halfplanecolor i="{h}" r="0.55" g="0.5" b="0.45"/>')
+
+
 def soft_drape():
     """Elastic bodies written as one element each (<elasticbody>, docs/scene-format.md): a soft
     sheet of 20 x 3 cells falls across a peg (a fixed particle) and drapes over it, an annulus
@@ -583,13 +595,7 @@ def soft_drape():
           'totalmass="0.5" particleradius="0.004" edgeradius="0.002"/>')
     s.add('<simplegravity fx="0" fy="-9.81"/>')
     s.add('<dragdamping b="0.002"/>')
-    planes = ((0, -0.2, 0, 1),                                   # floor
-              (-1.5, 0.3, math.sin(0.5), math.cos(0.5)),         # ramp on the left
-              (1.4, 0, -1, 0))                                   # wall on the right
-    for px, py, nx, ny in planes:
-        s.add(f'<halfplane px="{fmt(px)}" py="{fmt(py)}" nx="{fmt(nx)}" ny="{fmt(ny)}"/>')
-    for h in range(len(planes)):
-        s.add(f'<halfplanecolor i="{h}" r="0.55" g="0.5" b="0.45"/>')
+    add_floor_ramp_wall(s, wall_x=1.4)
     s.add('<collision type="penalty" k="3000" thickness="0.01"/>')
     s.save("soft_drape.xml", [
         '<description text="Elastic bodies from one element each: a sheet drapes over a peg, a tyre bounces down a ramp, a star drops (penalty contact, symplectic Euler)"/>',
@@ -690,13 +696,7 @@ def bodies_with_holes():
           'particleradius="0.004" edgeradius="0.002"/>')
     s.add('<simplegravity fx="0" fy="-9.81"/>')
     s.add('<dragdamping b="0.002"/>')
-    planes = ((0, -0.2, 0, 1),                                   # floor
-              (-1.5, 0.3, math.sin(0.5), math.cos(0.5)),         # ramp on the left
-              (1.3, 0, -1, 0))                                   # wall on the right
-    for px, py, nx, ny in planes:
-        s.add(f'<halfplane px="{fmt(px)}" py="{fmt(py)}" nx="{fmt(nx)}" ny="{fmt(ny)}"/>')
-    for h in range(len(planes)):
-        s.add(f'<halfplanecolor i="{h}" r="0.55" g="0.5" b="0.45"/>')
+    add_floor_ramp_wall(s, wall_x=1.3)
     s.add('<collision type="penalty" k="3000" thickness="0.01"/>')
     s.save("bodies_with_holes.xml", [
         '<description text="Polygons with holes: a plate hangs by one of its two holes on a peg and swings; a letter A drops and bounces (penalty contact, symplectic Euler)"/>',

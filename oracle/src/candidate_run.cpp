@@ -321,11 +321,8 @@ bool trajectory_size_is_exact(const SceneModel& model) {
 
 TrajectorySize trajectory_size_rule(const SceneModel& model, const GradingCriteria& criteria) {
   if (!trajectory_size_is_exact(model)) return TrajectorySize::kAtLeastRecords;
-  // Rigid-body trajectories have a layout of their own, always exact.
-  if (criteria.ignores_frames_after_last_step && !model.rigid_bodies) {
-    return TrajectorySize::kAtLeastFrames;
-  }
-  return TrajectorySize::kExact;
+  return criteria.ignores_frames_after_last_step ? TrajectorySize::kAtLeastFrames
+                                                 : TrajectorySize::kExact;
 }
 
 }  // namespace fosssim

@@ -32,6 +32,17 @@ class CommandLine3D : public ::testing::Test {
 const std::string kFosssim = fosssim::testing::fosssim_program();
 const std::string kGenerate = fosssim::testing::fosssim_generate_program();
 
+/// A 50×50 cloth pinned at its corners, falling under gravity with `method` at dt 0.02 for
+/// `duration` seconds: large enough that its implicit steps factor (CHOLMOD) and thread.
+std::string cloth_50_scene(const std::string& method, const std::string& duration) {
+  return R"(<scene dim="3">
+  <duration time=")" + duration + R"("/>
+  <integrator type=")" + method + R"(" dt="0.02"/>
+  <generate type="cloth" nx="50" ny="50" plane="xz" pin="corners" k="200" m="0.001"/>
+  <simplegravity fx="0" fy="-9.8" fz="0"/>
+</scene>)";
+}
+
 TEST_F(CommandLine3D, WritesAndGradesTheTrajectoryOfAMeshScene) {
   const std::string scene = asset("scenes/tet_box.xml");
   const ProgramResult simulate =
@@ -176,13 +187,7 @@ TEST_F(CommandLine3D, SparseSolversGiveTheSameBitsFromRunToRunOnTwoThreads) {
   // sparse method, and the run says how many threads it used.
   for (const std::string method :
        {"linearly-implicit-euler", "newton", "quasi-newton", "accelerated-local-global"}) {
-    write(method + ".xml", R"(<scene dim="3">
-  <duration time="0.1"/>
-  <integrator type=")" + method +
-                               R"(" dt="0.02"/>
-  <generate type="cloth" nx="50" ny="50" plane="xz" pin="corners" k="200" m="0.001"/>
-  <simplegravity fx="0" fy="-9.8" fz="0"/>
-</scene>)");
+    write(method + ".xml", cloth_50_scene(method, "0.1"));
     std::string runs[2];
     for (int r = 0; r < 2; ++r) {
       const std::string out = method + std::to_string(r) + ".bin";
@@ -202,12 +207,7 @@ TEST_F(CommandLine3D, SparseSolversGiveTheSameBitsFromRunToRunOnTwoThreads) {
 // The thread count is --threads alone (default 1): the environment's OPENBLAS_NUM_THREADS and
 // OMP_NUM_THREADS do not change a run's bytes, and a default run says nothing about threads.
 TEST_F(CommandLine3D, TheDefaultOfOneSolverThreadOverridesTheEnvironment) {
-  write("cloth.xml", R"(<scene dim="3">
-  <duration time="0.06"/>
-  <integrator type="linearly-implicit-euler" dt="0.02"/>
-  <generate type="cloth" nx="50" ny="50" plane="xz" pin="corners" k="200" m="0.001"/>
-  <simplegravity fx="0" fy="-9.8" fz="0"/>
-</scene>)");
+  write("cloth.xml", cloth_50_scene("linearly-implicit-euler", "0.06"));
   const ProgramResult by_environment =
       run("OPENBLAS_NUM_THREADS=2 OMP_NUM_THREADS=2 " + kFosssim + " -s " + path("cloth.xml") +
           " -d 0 -q -o " + path("environment.bin"));
@@ -234,12 +234,7 @@ TEST_F(CommandLine3D, TheProcessHasTheThreadsTheCommandLineAsksFor) {
   <integrator type="explicit-euler" dt="0.01"/>
   <particle m="1" px="0" py="0" vx="1" vy="0" fixed="0"/>
 </scene>)");
-  write("cloth.xml", R"(<scene dim="3">
-  <duration time="0.02"/>
-  <integrator type="linearly-implicit-euler" dt="0.02"/>
-  <generate type="cloth" nx="50" ny="50" plane="xz" pin="corners" k="200" m="0.001"/>
-  <simplegravity fx="0" fy="-9.8" fz="0"/>
-</scene>)");
+  write("cloth.xml", cloth_50_scene("linearly-implicit-euler", "0.02"));
   const auto threads_of = [&](const std::string& environment, const std::string& option,
                               const std::string& name, const char* scene = "ball.xml") -> long {
     const ProgramResult result = run(environment + " " + kFosssim + " " + option + " -s " +

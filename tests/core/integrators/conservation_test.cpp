@@ -240,6 +240,23 @@ TestScene pair_forces_only(std::string_view kind) {
   return scene;
 }
 
+/// The momentum drift allowed after `steps` steps of `method` on `scene` (its final state):
+/// round-off of 1e-13 of the largest momentum `scale` (max m|v|), and, where velocities are
+/// position differences, ε Σ m|q| / h more per step.
+template <int D>
+double momentum_drift_bound(const TestScene& scene, const IntegratorMethod& method, double scale,
+                            int steps) {
+  double bound = 1e-13 * scale;
+  if (method.properties.velocity_from_positions) {
+    double mq = 0.0;
+    for (int p = 0; p < scene.model.num_particles(); ++p) {
+      mq += scene.model.mass[D * p] * scene.initial.q.segment(D * p, D).norm();
+    }
+    bound += steps * std::numeric_limits<double>::epsilon() * mq / scene.model.integrator.dt;
+  }
+  return bound;
+}
+
 TYPED_TEST(ConservationTest, PairForcesConserveMomentumWithEveryMethod) {
   constexpr int D = TypeParam::value;
   for (const IntegratorMethod* method : all_integrators()) {
@@ -259,15 +276,7 @@ TYPED_TEST(ConservationTest, PairForcesConserveMomentumWithEveryMethod) {
       }
     }
     const double drift = (linear_momentum(scene.model, scene.initial.v) - start).norm();
-    // Velocities that are position differences carry ε Σ m|q| / h of round-off per step.
-    double bound = 1e-13 * scale;
-    if (method->properties.velocity_from_positions) {
-      double mq = 0.0;
-      for (int p = 0; p < 5; ++p) {
-        mq += scene.model.mass[D * p] * scene.initial.q.segment(D * p, D).norm();
-      }
-      bound += 300 * std::numeric_limits<double>::epsilon() * mq / scene.model.integrator.dt;
-    }
+    const double bound = momentum_drift_bound<D>(scene, *method, scale, 300);
     EXPECT_LE(drift, bound) << std::string(kind) << ": momentum drift " << drift;
     std::printf("%dD %-26s momentum drift after 300 steps %.2e (max m|v| %.2f)\n", D,
                 std::string(kind).c_str(), drift, scale);
@@ -359,14 +368,7 @@ TYPED_TEST(ConservationTest, ElasticBodyForcesConserveMomentumWithEveryMethod) {
     EXPECT_GT(potential_change, 1e-3) << std::string(kind);
     EXPECT_GT(velocity_change, 0.05) << std::string(kind);
     const double drift = (linear_momentum(scene.model, scene.initial.v) - start).norm();
-    double bound = 1e-13 * scale;
-    if (method->properties.velocity_from_positions) {
-      double mq = 0.0;
-      for (int p = 0; p < 4; ++p) {
-        mq += scene.model.mass[D * p] * scene.initial.q.segment(D * p, D).norm();
-      }
-      bound += 300 * std::numeric_limits<double>::epsilon() * mq / scene.model.integrator.dt;
-    }
+    const double bound = momentum_drift_bound<D>(scene, *method, scale, 300);
     EXPECT_LE(drift, bound) << std::string(kind) << ": momentum drift " << drift;
     if (kind == "symplectic-euler") {
       const double turn = (angular_momentum<D>(scene) - start_angular).norm();
